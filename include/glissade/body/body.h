@@ -1,0 +1,170 @@
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/body/boundary_conditions.h>
+#include <glissade/fe/element_space.h>
+#include <glissade/material/material.h>
+#include <glissade/mesh/mesh_factory.h>
+#include <glissade/scene/scene_description.h>
+
+#include <memory>
+#include <string>
+
+namespace glissade
+{
+  /**
+   * One deformable solid in the total Lagrangian setting: its mesh, element
+   * space, material, boundary data, and its own tangent matrix and direct
+   * factorisation. Bodies meet only through contact forces, so the global
+   * system is block-diagonal by body and each block is solved here alone.
+   *
+   * A Newton iteration, seen from the body, is: set_time(t) for the increment,
+   * then assemble() -> factorize() -> solve() -> update() until the
+   * Simulation says it has converged.
+   */
+  class Body
+  {
+  public:
+    Body(const BodyDescription &description, const std::string &source);
+
+    const std::string &
+    name() const
+    {
+      return description.name;
+    }
+
+    /** Target time of the current increment (Dirichlet and Neumann data). */
+    void
+    set_time(const double time);
+
+    /**
+     * Assembles the tangent and the right-hand side F_ext - F_int (with the
+     * Dirichlet constraints of the current time), plus the unconstrained
+     * residual used for reactions. Returns false if the material state is
+     * not admissible (J <= 0 or a NaN), so the caller can cut the step.
+     */
+    bool
+    assemble();
+
+    /** |F_ext - F_int| on the free dofs. */
+    double
+    residual_norm() const;
+
+    /** max(|F_int|, |F_ext|) over all dofs: the force scale of tolerances. */
+    double
+    force_scale() const;
+
+    void
+    factorize();
+
+    /** Solves K du = rhs; constrained dofs get their prescribed increment. */
+    void
+    solve(const Vector<double> &rhs, Vector<double> &increment) const;
+
+    const Vector<double> &
+    right_hand_side() const
+    {
+      return system_rhs;
+    }
+
+    void
+    update(const Vector<double> &increment);
+
+    /** Saves and restores the displacement (for cut-backs). */
+    void
+    store_state();
+    void
+    restore_state();
+
+    /** A length that measures the body (diameter of the reference mesh). */
+    double
+    size() const
+    {
+      return reference_size;
+    }
+
+    /** Displacement at a mesh vertex given as "point(x, y)". */
+    Tensor<1, 2>
+    vertex_displacement(const Point<2> &point) const;
+
+    /** Largest nodal displacement norm over the body. */
+    double
+    max_displacement() const;
+
+    /** Sum of the support forces on a named boundary (F_int - F_ext). */
+    Tensor<1, 2>
+    reaction(const std::string &boundary) const;
+
+    /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
+    std::string
+    write_vtu(const std::string &directory, const unsigned int index) const;
+
+    const DoFHandler<2> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+    const Triangulation<2> &
+    triangulation() const
+    {
+      return mesh;
+    }
+    const ElementSpace &
+    space() const
+    {
+      return *element_space;
+    }
+    const Material &
+    material() const
+    {
+      return body_material;
+    }
+    const Vector<double> &
+    displacement() const
+    {
+      return solution;
+    }
+    unsigned int
+    n_dofs() const
+    {
+      return dofs.n_dofs();
+    }
+
+  private:
+    void
+    assemble_surface_loads(const typename DoFHandler<2>::active_cell_iterator
+                                               &cell,
+                           FullMatrix<double>  &cell_matrix,
+                           Vector<double>      &cell_rhs) const;
+
+    const BodyDescription               description;
+    const std::string                   source;
+    Triangulation<2>                    mesh;
+    BoundaryNames                       boundary_names;
+    std::unique_ptr<ElementSpace>       element_space;
+    DoFHandler<2>                       dofs;
+    Material                            body_material;
+    std::unique_ptr<BoundaryConditions> boundary_conditions;
+    double                              reference_size = 1.;
+    double                              time           = 0.;
+
+    AffineConstraints<double> constraints;
+    SparsityPattern           sparsity;
+    SparseMatrix<double>      tangent;
+    SparseDirectUMFPACK       factorization;
+
+    Vector<double> solution;
+    Vector<double> stored_solution;
+    Vector<double> system_rhs;       // F_ext - F_int, constrained
+    Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
+    double         internal_force_norm = 0.;
+    double         external_force_norm = 0.;
+  };
+} // namespace glissade

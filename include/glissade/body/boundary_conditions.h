@@ -1,0 +1,105 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/mesh/mesh_factory.h>
+#include <glissade/scene/scene_description.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * Where a boundary condition acts: a named boundary of the mesh or one mesh
+   * vertex, given as point(x, y). Resolved once against the mesh, so that a
+   * name the mesh lacks is reported before anything is computed.
+   */
+  struct Location
+  {
+    bool               is_vertex = false;
+    types::boundary_id boundary  = 0;
+    unsigned int       vertex    = 0;
+    Point<2>           point;
+  };
+
+  /**
+   * A body's Dirichlet and Neumann data, compiled from the scene description:
+   * the muParser expressions are parsed once and evaluated at the load
+   * program's time t.
+   */
+  class BoundaryConditions
+  {
+  public:
+    BoundaryConditions(const BodyDescription  &body,
+                       const BoundaryNames    &boundary_names,
+                       const Triangulation<2> &triangulation,
+                       const std::string      &source);
+
+    /**
+     * Fills `constraints` for a Newton correction: each Dirichlet dof gets
+     * the inhomogeneity (target value at time t) - (current value), which is
+     * zero after the first iteration of an increment.
+     */
+    void
+    make_constraints(const DoFHandler<2>       &dof_handler,
+                     const Mapping<2>          &mapping,
+                     const double               time,
+                     const Vector<double>      &current_displacement,
+                     AffineConstraints<double> &constraints) const;
+
+    /** Point loads at time t, as a vector of nodal forces. */
+    void
+    add_point_loads(const DoFHandler<2> &dof_handler,
+                    const double         time,
+                    Vector<double>      &external_forces) const;
+
+    struct SurfaceLoad
+    {
+      types::boundary_id                 boundary;
+      bool                               is_pressure;
+      std::shared_ptr<FunctionParser<2>> function; // time set by the caller
+    };
+
+    const std::vector<SurfaceLoad> &
+    surface_loads() const
+    {
+      return loads_on_boundaries;
+    }
+
+    /** Resolves "left" or "point(x, y)"; `entry` names the .prm entry. */
+    static Location
+    resolve(const std::string      &location,
+            const BoundaryNames    &boundary_names,
+            const Triangulation<2> &triangulation,
+            const std::string      &body_name,
+            const std::string      &entry);
+
+    /** The two global dofs (x, y) at a mesh vertex. */
+    static std::array<types::global_dof_index, 2>
+    vertex_dofs(const DoFHandler<2> &dof_handler, const unsigned int vertex);
+
+  private:
+    struct DirichletItem
+    {
+      Location                          where;
+      ComponentMask                     mask;
+      std::shared_ptr<Function<2>>      displacement; // 2 components
+    };
+    struct PointLoad
+    {
+      Location                           where;
+      std::shared_ptr<FunctionParser<2>> force;
+    };
+
+    std::vector<DirichletItem> dirichlet_items;
+    std::vector<PointLoad>     point_loads;
+    std::vector<SurfaceLoad>   loads_on_boundaries;
+  };
+} // namespace glissade

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <glissade/fe/element_space.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * The list of element spaces a .prm may name. Adding a space is one line
+   * in element_space_registry.cc: its name, a one-sentence description (it
+   * becomes the parameter's documentation) and how to create it.
+   */
+  class ElementSpaceRegistry
+  {
+  public:
+    struct Entry
+    {
+      std::string                                    name;
+      std::string                                    description;
+      std::function<std::unique_ptr<ElementSpace>()> create;
+    };
+
+    static const std::vector<Entry> &
+    entries();
+
+    static std::unique_ptr<ElementSpace>
+    create(const std::string &name);
+
+    /** "q1|q2|..." for Patterns::Selection. */
+    static std::string
+    names_as_pattern();
+
+    /** "q1: ...; q2: ..." for the parameter documentation. */
+    static std::string
+    documentation();
+  };
+} // namespace glissade

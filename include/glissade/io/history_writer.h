@@ -1,0 +1,50 @@
+#pragma once
+
+#include <glissade/body/body.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * history.csv: one row per increment, with the columns the .prm asks for
+   * in Output/History. Each item is checked against the bodies when the
+   * writer is built, so a wrong body or point name stops the run before it
+   * starts. The file is rewritten atomically after each increment.
+   */
+  class HistoryWriter
+  {
+  public:
+    HistoryWriter(const std::vector<std::string>         &items,
+                  const std::vector<std::unique_ptr<Body>> &bodies,
+                  const std::string                       &filename,
+                  const std::string                       &source);
+
+    void
+    record(const unsigned int increment,
+           const double       time,
+           const unsigned int newton_iterations);
+
+    const std::vector<std::string> &
+    column_names() const
+    {
+      return columns;
+    }
+
+    /** The last recorded row (tests and summaries read it). */
+    const std::vector<double> &
+    last_row() const
+    {
+      return rows.back();
+    }
+
+  private:
+    std::string                                     filename;
+    std::vector<std::string>                        columns;
+    std::vector<std::function<void(std::vector<double> &)>> evaluators;
+    std::vector<std::vector<double>>                rows;
+  };
+} // namespace glissade

@@ -1,0 +1,88 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <glissade/material/hyperelastic_law.h>
+
+#include <memory>
+#include <string>
+
+namespace glissade
+{
+  /** The planar hypothesis of a 2D body. */
+  enum class PlaneHypothesis
+  {
+    plane_strain,
+    plane_stress
+  };
+
+  /** What the 2D solver needs at one quadrature point. */
+  struct MaterialPointResponse
+  {
+    /** In-plane second Piola-Kirchhoff stress. */
+    SymmetricTensor<2, 2> stress;
+    /** dS/dE restricted to the plane (statically condensed in plane stress). */
+    SymmetricTensor<4, 2> tangent;
+    /** Out-of-plane stretch: 1 in plane strain, solved for in plane stress. */
+    double out_of_plane_stretch = 1.;
+  };
+
+  /**
+   * The material of one body: a 3D hyperelastic law reduced to the plane.
+   * It takes the displacement gradient H = F - I (not F) so that the strain
+   * is formed without cancellation (see HyperelasticLaw).
+   *
+   * Plane strain fixes E_33 = 0. Plane stress solves S_33(E_33) = 0 by a
+   * local Newton iteration and condenses the tangent,
+   *   D_ab_cd - D_ab_33 D_33_cd / D_33_33,
+   * which is exact for any law (for Saint Venant-Kirchhoff it gives the
+   * textbook plane-stress constants).
+   */
+  class Material
+  {
+  public:
+    Material(std::unique_ptr<HyperelasticLaw> law,
+             const PlaneHypothesis            hypothesis);
+
+    /** Creates the law by name ("neo-Hookean" or "Saint Venant-Kirchhoff"). */
+    static Material
+    create(const std::string    &law_name,
+           const double          young_modulus,
+           const double          poisson_ratio,
+           const PlaneHypothesis hypothesis);
+
+    MaterialPointResponse
+    evaluate(const Tensor<2, 2> &displacement_gradient) const;
+
+    /** Cauchy stress in 3D (sigma_33 is non-zero in plane strain). */
+    SymmetricTensor<2, 3>
+    cauchy_stress(const Tensor<2, 2> &displacement_gradient) const;
+
+    PlaneHypothesis
+    hypothesis() const
+    {
+      return plane_hypothesis;
+    }
+
+    std::string
+    law_name() const
+    {
+      return law->name();
+    }
+
+  private:
+    /** The 3D Green-Lagrange strain for an in-plane H and a given E_33. */
+    static SymmetricTensor<2, 3>
+    strain(const Tensor<2, 2> &H, const double e33);
+
+    /** Solves S_33 = 0 for E_33 (plane stress); returns E_33. */
+    double
+    solve_out_of_plane(const Tensor<2, 2>    &H,
+                       SymmetricTensor<2, 3> &S,
+                       SymmetricTensor<4, 3> &D) const;
+
+    std::shared_ptr<const HyperelasticLaw> law;
+    PlaneHypothesis                        plane_hypothesis;
+  };
+} // namespace glissade

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/grid/tria.h>
+
+#include <glissade/scene/scene_description.h>
+
+#include <map>
+#include <string>
+
+namespace glissade
+{
+  /** Boundary names of a mesh and the deal.II boundary ids they stand for. */
+  using BoundaryNames = std::map<std::string, types::boundary_id>;
+
+  /**
+   * Builds a body's triangulation from its MeshDescription: the paper's
+   * shapes (rectangle/beam, square, half ring, ring) or a Gmsh file.
+   *
+   * Curved shapes get a PolarManifold, so that higher-order mappings and
+   * elements see the exact circle while Q1 keeps the straight chords of the
+   * paper's Q4 meshes. Ring cells are numbered with the radial direction as
+   * the first reference coordinate so that every cell is positively
+   * oriented.
+   */
+  class MeshFactory
+  {
+  public:
+    /** `where` names the .prm subsection, for messages. */
+    static BoundaryNames
+    create(const MeshDescription &description,
+           Triangulation<2>      &triangulation,
+           const std::string     &where);
+
+  private:
+    static BoundaryNames
+    create_rectangle(const Point<2>        &lower_left,
+                     const Point<2>        &upper_right,
+                     const MeshDescription &description,
+                     Triangulation<2>      &triangulation);
+
+    static BoundaryNames
+    create_ring(const MeshDescription &description,
+                const bool             closed,
+                Triangulation<2>      &triangulation);
+
+    static BoundaryNames
+    read_gmsh(const MeshDescription &description,
+              Triangulation<2>      &triangulation,
+              const std::string     &where);
+  };
+} // namespace glissade

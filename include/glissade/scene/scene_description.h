@@ -1,0 +1,125 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  /**
+   * What a body's mesh is made of, as read from its "Mesh" subsection. Only
+   * the entries that the chosen generator uses are looked at.
+   */
+  struct MeshDescription
+  {
+    std::string               type;
+    Point<2>                  corner_1;
+    Point<2>                  corner_2;
+    Point<2>                  center;
+    double                    side         = 1.;
+    double                    inner_radius = 0.5;
+    double                    outer_radius = 1.;
+    double                    start_angle  = 0.;   // degrees
+    double                    end_angle    = 180.; // degrees
+    std::vector<unsigned int> subdivisions;
+    std::string               file;
+    double                    distortion = 0.;
+  };
+
+  /**
+   * One Dirichlet item: where ("left" or "point(x, y)"), which components,
+   * and what. Expressions are muParser strings in x, y (reference position)
+   * and t (the load program's time).
+   */
+  struct DirichletDescription
+  {
+    enum class Kind
+    {
+      fixed,
+      displacement,
+      rotation
+    };
+    Kind                     kind = Kind::fixed;
+    std::string              location;
+    bool                     x_component = true;
+    bool                     y_component = true;
+    std::vector<std::string> expressions; // displacement: one per component
+    Point<2>                 rotation_center;
+    std::string              angle_expression; // rotation, radians
+    std::string              entry; // the .prm entry it came from
+  };
+
+  /** One Neumann item: a point load, a dead traction or a follower pressure. */
+  struct NeumannDescription
+  {
+    enum class Kind
+    {
+      point_load,
+      traction,
+      pressure
+    };
+    Kind                     kind = Kind::point_load;
+    std::string              location;
+    std::vector<std::string> expressions; // 2 for loads, 1 for pressure
+    std::string              entry;
+  };
+
+  struct MaterialDescription
+  {
+    std::string law           = "neo-Hookean";
+    double      young_modulus = 1.;
+    double      poisson_ratio = 0.3;
+    std::string hypothesis    = "plane strain";
+    double      thickness     = 1.;
+  };
+
+  struct BodyDescription
+  {
+    std::string                       name;
+    MeshDescription                   mesh;
+    std::string                       element_space = "q1";
+    MaterialDescription               material;
+    std::vector<DirichletDescription> dirichlet;
+    std::vector<NeumannDescription>   neumann;
+  };
+
+  /**
+   * The load program: a sequence of stages, each ending at a time t_end and
+   * cut into a number of equal increments. Loads and prescribed motions are
+   * functions of t, so "load then hold while rotating" is two stages.
+   */
+  struct LoadProgram
+  {
+    std::vector<double>       stage_end_times = {1.};
+    std::vector<unsigned int> stage_increments = {1};
+    unsigned int              max_cut_back_depth = 6;
+  };
+
+  struct NewtonSettings
+  {
+    unsigned int max_iterations         = 25;
+    double       residual_tolerance     = 1e-9;
+    double       displacement_tolerance = 1e-9;
+  };
+
+  struct OutputSettings
+  {
+    std::string directory     = "output";
+    unsigned int vtu_interval = 1; // 0: final state only
+    std::vector<std::string> history;
+    bool                     progress = true;
+  };
+
+  /** Everything a .prm file describes. */
+  struct SceneDescription
+  {
+    std::string                  source; // file name, for messages
+    std::vector<BodyDescription> bodies;
+    LoadProgram                  load_program;
+    NewtonSettings               newton;
+    OutputSettings               output;
+  };
+} // namespace glissade

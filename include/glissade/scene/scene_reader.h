@@ -1,0 +1,56 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <glissade/scene/scene_description.h>
+
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * Reads a scene from a .prm file.
+   *
+   * The set of bodies is itself an input ("Scene/Bodies = beam, ring"), and a
+   * ParameterHandler only parses entries it knows. So reading is two passes:
+   * the first learns the body names (skipping everything else), the second
+   * declares a "Body <name>" subsection for each and parses the whole file
+   * strictly, so that a misspelt entry is an error, not silently ignored.
+   *
+   * Every mistake is reported as an InputError naming the file and the entry.
+   */
+  class SceneReader
+  {
+  public:
+    /**
+     * Overrides are "Subsection/.../Entry=value" strings applied after the
+     * file (the command line's --set), e.g. "Body beam/Mesh/Subdivisions=60,4".
+     */
+    static SceneDescription
+    read_file(const std::string                    &filename,
+              const std::vector<std::string> &overrides = {});
+
+    /** The same from text in memory (tests); name is used in messages. */
+    static SceneDescription
+    read_string(const std::string              &text,
+                const std::string              &name,
+                const std::vector<std::string> &overrides = {});
+
+    /** Every parameter with its documentation and default, for one body. */
+    static void
+    print_parameters(std::ostream &out);
+
+  private:
+    static void
+    declare_parameters(ParameterHandler               &prm,
+                       const std::vector<std::string> &body_names);
+
+    static SceneDescription
+    parse_parameters(ParameterHandler               &prm,
+                     const std::vector<std::string> &body_names,
+                     const std::string              &source);
+  };
+} // namespace glissade

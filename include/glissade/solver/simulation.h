@@ -1,0 +1,101 @@
+#pragma once
+
+#include <glissade/body/body.h>
+#include <glissade/io/history_writer.h>
+#include <glissade/scene/scene_description.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  /** Counters and timings of a run, for the summary line and benchmarks. */
+  struct RunStatistics
+  {
+    unsigned int increments        = 0;
+    unsigned int newton_iterations = 0;
+    unsigned int cut_backs         = 0;
+    double       assembly_seconds      = 0.;
+    double       factorization_seconds = 0.;
+    double       solve_seconds         = 0.;
+    double       output_seconds        = 0.;
+    double       wall_seconds          = 0.;
+  };
+
+  /**
+   * Runs a scene: the load program, increment by increment, each solved by
+   * Newton-Raphson on the total Lagrangian equilibrium of every body.
+   *
+   * An increment whose Newton iteration does not converge (too many
+   * iterations, a growing or non-finite residual, an inverted element) is
+   * bisected, recursively, up to the load program's cut-back depth; if that
+   * is not enough the run stops with a ConvergenceFailure that names the
+   * increment and gives the residual history of the last attempt. Output
+   * written until then stays valid.
+   */
+  class Simulation
+  {
+  public:
+    explicit Simulation(const SceneDescription &scene);
+
+    /** The whole load program, with output. */
+    void
+    run();
+
+    /**
+     * One step from the current state to time t (with cut-backs); returns
+     * the number of Newton iterations. Throws ConvergenceFailure.
+     */
+    unsigned int
+    advance_to(const double t, const std::string &label);
+
+    Body &
+    body(const std::string &name);
+
+    const std::vector<std::unique_ptr<Body>> &
+    bodies() const
+    {
+      return all_bodies;
+    }
+
+    /** Scaled residuals |R|/scale of the Newton iterations of the last step. */
+    const std::vector<double> &
+    last_residuals() const
+    {
+      return residual_history;
+    }
+
+    const RunStatistics &
+    statistics() const
+    {
+      return stats;
+    }
+
+    /** "N increments, M Newton iterations, ... s wall" */
+    std::string
+    summary() const;
+
+  private:
+    /** One Newton solve from the stored state to t; false if it failed. */
+    bool
+    newton(const double t);
+
+    bool
+    advance(const double       t_start,
+            const double       t_end,
+            const unsigned int depth);
+
+    void
+    write_output(const unsigned int increment, const double t);
+
+    const SceneDescription             scene;
+    std::vector<std::unique_ptr<Body>> all_bodies;
+    std::unique_ptr<HistoryWriter>     history;
+    std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
+    std::vector<double>                residual_history;
+    RunStatistics                      stats;
+    unsigned int                       iterations_of_step = 0;
+    double                             current_time       = 0.;
+  };
+} // namespace glissade

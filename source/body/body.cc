@@ -1,0 +1,420 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/body/body.h>
+#include <glissade/fe/element_space_registry.h>
+
+#include <cmath>
+
+namespace glissade
+{
+  namespace
+  {
+    PlaneHypothesis
+    hypothesis_from_name(const std::string &name)
+    {
+      return name == "plane stress" ? PlaneHypothesis::plane_stress :
+                                      PlaneHypothesis::plane_strain;
+    }
+  } // namespace
+
+
+
+  Body::Body(const BodyDescription &description, const std::string &source)
+    : description(description)
+    , source(source)
+    , body_material(Material::create(description.material.law,
+                                     description.material.young_modulus,
+                                     description.material.poisson_ratio,
+                                     hypothesis_from_name(
+                                       description.material.hypothesis)))
+  {
+    const std::string where = source + ": Body " + description.name;
+    boundary_names = MeshFactory::create(description.mesh, mesh, where);
+    reference_size = GridTools::diameter(mesh);
+
+    element_space = ElementSpaceRegistry::create(description.element_space);
+    dofs.reinit(mesh);
+    dofs.distribute_dofs(element_space->finite_element());
+
+    boundary_conditions =
+      std::make_unique<BoundaryConditions>(description,
+                                           boundary_names,
+                                           mesh,
+                                           source);
+
+    solution.reinit(dofs.n_dofs());
+    stored_solution.reinit(dofs.n_dofs());
+    system_rhs.reinit(dofs.n_dofs());
+    unconstrained_residual.reinit(dofs.n_dofs());
+
+    // The set of constrained dofs never changes during a run (only the
+    // prescribed values do), so the sparsity pattern is built once.
+    boundary_conditions->make_constraints(
+      dofs, element_space->mapping(), 0., solution, constraints);
+    DynamicSparsityPattern dsp(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+    sparsity.copy_from(dsp);
+    tangent.reinit(sparsity);
+  }
+
+
+
+  void
+  Body::set_time(const double new_time)
+  {
+    time = new_time;
+  }
+
+
+
+  bool
+  Body::assemble()
+  {
+    boundary_conditions->make_constraints(
+      dofs, element_space->mapping(), time, solution, constraints);
+
+    tangent                = 0.;
+    system_rhs             = 0.;
+    unconstrained_residual = 0.;
+    Vector<double> internal_forces(dofs.n_dofs());
+
+    const FiniteElement<2> &fe        = element_space->finite_element();
+    const unsigned int      n_local   = fe.n_dofs_per_cell();
+    const double            thickness = description.material.thickness;
+    FEValues<2>             fe_values(element_space->mapping(),
+                          fe,
+                          element_space->cell_quadrature(),
+                          update_gradients | update_JxW_values);
+    const unsigned int      n_q = fe_values.n_quadrature_points;
+
+    FullMatrix<double>                   cell_matrix(n_local, n_local);
+    Vector<double>                       cell_rhs(n_local);
+    Vector<double>                       cell_internal(n_local);
+    std::vector<types::global_dof_index> local_dofs(n_local);
+    std::vector<Tensor<2, 2>>            displacement_gradients(n_q);
+    std::vector<unsigned int>            component(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      component[i] = fe.system_to_component_index(i).first;
+    std::vector<Tensor<1, 2>>          grad(n_local);
+    std::vector<SymmetricTensor<2, 2>> dE(n_local), D_dE(n_local);
+    const FEValuesExtractors::Vector   displacement(0);
+
+    bool admissible = true;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell->get_dof_indices(local_dofs);
+        cell_matrix = 0.;
+        cell_rhs    = 0.;
+        fe_values[displacement].get_function_gradients(solution,
+                                                       displacement_gradients);
+
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const Tensor<2, 2> F =
+              unit_symmetric_tensor<2>() + displacement_gradients[q];
+            const double J = determinant(F);
+            if (!(J > 0.) || !std::isfinite(J))
+              {
+                admissible = false;
+                continue;
+              }
+            const MaterialPointResponse response =
+              body_material.evaluate(displacement_gradients[q]);
+            const Tensor<2, 2>          P  = F * Tensor<2, 2>(response.stress);
+            const double                dV = fe_values.JxW(q) * thickness;
+
+            // With primitive shape functions, Grad N_i has a single non-zero
+            // row (its component c_i), which makes every contraction below
+            // a small dot product.
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                grad[i]             = fe_values.shape_grad(i, q);
+                const unsigned int c = component[i];
+                for (unsigned int a = 0; a < 2; ++a)
+                  for (unsigned int b = a; b < 2; ++b)
+                    dE[i][a][b] =
+                      0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
+                D_dE[i] = response.tangent * dE[i];
+                cell_rhs(i) -= (P[c] * grad[i]) * dV;
+              }
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                const Tensor<1, 2> S_grad_i =
+                  Tensor<2, 2>(response.stress) * grad[i];
+                for (unsigned int j = 0; j <= i; ++j)
+                  {
+                    double k = dE[j] * D_dE[i];
+                    if (component[i] == component[j])
+                      k += S_grad_i * grad[j];
+                    cell_matrix(i, j) += k * dV;
+                  }
+              }
+          }
+        for (unsigned int i = 0; i < n_local; ++i)
+          for (unsigned int j = i + 1; j < n_local; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+
+        for (unsigned int i = 0; i < n_local; ++i)
+          internal_forces(local_dofs[i]) -= cell_rhs(i);
+
+        if (cell->at_boundary())
+          assemble_surface_loads(cell, cell_matrix, cell_rhs);
+
+        for (unsigned int i = 0; i < n_local; ++i)
+          unconstrained_residual(local_dofs[i]) -= cell_rhs(i);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
+      }
+
+    Vector<double> point_loads(dofs.n_dofs());
+    boundary_conditions->add_point_loads(dofs, time, point_loads);
+    unconstrained_residual -= point_loads;
+    {
+      std::vector<types::global_dof_index> index(1);
+      Vector<double>                       value(1);
+      for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
+        if (point_loads(i) != 0.)
+          {
+            index[0] = i;
+            value(0) = point_loads(i);
+            constraints.distribute_local_to_global(value, index, system_rhs);
+          }
+    }
+
+    internal_force_norm = internal_forces.l2_norm();
+    Vector<double> external = internal_forces;
+    external -= unconstrained_residual;
+    external_force_norm = external.l2_norm();
+    return admissible && std::isfinite(unconstrained_residual.l2_norm());
+  }
+
+
+
+  void
+  Body::assemble_surface_loads(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    FullMatrix<double>                                 &cell_matrix,
+    Vector<double>                                     &cell_rhs) const
+  {
+    const auto &loads = boundary_conditions->surface_loads();
+    if (loads.empty())
+      return;
+    const FiniteElement<2> &fe = element_space->finite_element();
+    FEFaceValues<2>         fe_face(element_space->mapping(),
+                            fe,
+                            element_space->face_quadrature(),
+                            update_values | update_gradients |
+                              update_normal_vectors | update_JxW_values |
+                              update_quadrature_points);
+    const FEValuesExtractors::Vector displacement(0);
+    const double thickness = description.material.thickness;
+    std::vector<Tensor<2, 2>> grad_u(fe_face.n_quadrature_points);
+
+    for (const unsigned int f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary())
+          continue;
+        for (const auto &load : loads)
+          {
+            if (load.boundary != cell->face(f)->boundary_id())
+              continue;
+            fe_face.reinit(cell, f);
+            fe_face[displacement].get_function_gradients(solution, grad_u);
+            load.function->set_time(time);
+            for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+              {
+                const Point<2>     &X  = fe_face.quadrature_point(q);
+                const Tensor<1, 2> &N0 = fe_face.normal_vector(q);
+                const double        dA = fe_face.JxW(q) * thickness;
+                if (!load.is_pressure)
+                  {
+                    // Dead traction per unit reference length.
+                    const Tensor<1, 2> t({load.function->value(X, 0),
+                                          load.function->value(X, 1)});
+                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                      {
+                        const unsigned int c =
+                          fe.system_to_component_index(i).first;
+                        cell_rhs(i) += fe_face.shape_value(i, q) * t[c] * dA;
+                      }
+                    continue;
+                  }
+                // Follower pressure: f = -p n da = -p cof(F) N0 dA (Nanson),
+                // with cof(F) linear in F in 2D, hence the simple tangent.
+                const double       p = load.function->value(X);
+                const Tensor<2, 2> F = unit_symmetric_tensor<2>() + grad_u[q];
+                const Tensor<1, 2> cof_F_N0({F[1][1] * N0[0] - F[1][0] * N0[1],
+                                             -F[0][1] * N0[0] +
+                                               F[0][0] * N0[1]});
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  {
+                    const unsigned int ci = fe.system_to_component_index(i).first;
+                    const double       Ni = fe_face.shape_value(i, q);
+                    cell_rhs(i) -= p * Ni * cof_F_N0[ci] * dA;
+                    for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                      {
+                        const unsigned int cj =
+                          fe.system_to_component_index(j).first;
+                        const Tensor<1, 2> g = fe_face.shape_grad(j, q);
+                        double             d = 0.;
+                        if (ci == 1 && cj == 0)
+                          d = -g[1] * N0[0] + g[0] * N0[1];
+                        else if (ci == 0 && cj == 1)
+                          d = g[1] * N0[0] - g[0] * N0[1];
+                        cell_matrix(i, j) += p * Ni * d * dA;
+                      }
+                  }
+              }
+          }
+      }
+  }
+
+
+
+  double
+  Body::residual_norm() const
+  {
+    double sum = 0.;
+    for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
+      if (!constraints.is_constrained(i))
+        sum += unconstrained_residual(i) * unconstrained_residual(i);
+    return std::sqrt(sum);
+  }
+
+
+
+  double
+  Body::force_scale() const
+  {
+    return std::max(internal_force_norm, external_force_norm);
+  }
+
+
+
+  void
+  Body::factorize()
+  {
+    factorization.factorize(tangent);
+  }
+
+
+
+  void
+  Body::solve(const Vector<double> &rhs, Vector<double> &increment) const
+  {
+    increment = rhs;
+    factorization.solve(increment);
+    constraints.distribute(increment);
+  }
+
+
+
+  void
+  Body::update(const Vector<double> &increment)
+  {
+    solution += increment;
+  }
+
+
+
+  void
+  Body::store_state()
+  {
+    stored_solution = solution;
+  }
+
+
+
+  void
+  Body::restore_state()
+  {
+    solution = stored_solution;
+  }
+
+
+
+  Tensor<1, 2>
+  Body::vertex_displacement(const Point<2> &point) const
+  {
+    const Location where =
+      BoundaryConditions::resolve("point(" + std::to_string(point[0]) + "," +
+                                    std::to_string(point[1]) + ")",
+                                  boundary_names,
+                                  mesh,
+                                  description.name,
+                                  "");
+    const auto dof_pair = BoundaryConditions::vertex_dofs(dofs, where.vertex);
+    return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
+  }
+
+
+
+  double
+  Body::max_displacement() const
+  {
+    // Nodal values: pair the x and y dofs that share a support point.
+    const FiniteElement<2> &fe = element_space->finite_element();
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const auto ci = fe.system_to_component_index(i);
+        if (ci.first != 0)
+          continue;
+        for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+          if (fe.system_to_component_index(j) ==
+              std::make_pair(1u, ci.second))
+            pairs.emplace_back(i, j);
+      }
+    std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+    double                               largest = 0.;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        cell->get_dof_indices(local_dofs);
+        for (const auto &p : pairs)
+          largest = std::max(largest,
+                             std::hypot(solution(local_dofs[p.first]),
+                                        solution(local_dofs[p.second])));
+      }
+    return largest;
+  }
+
+
+
+  Tensor<1, 2>
+  Body::reaction(const std::string &boundary) const
+  {
+    const Location where = BoundaryConditions::resolve(
+      boundary, boundary_names, mesh, description.name, "");
+    Tensor<1, 2> sum;
+    if (where.is_vertex)
+      {
+        const auto d = BoundaryConditions::vertex_dofs(dofs, where.vertex);
+        return Tensor<1, 2>(
+          {unconstrained_residual(d[0]), unconstrained_residual(d[1])});
+      }
+    const FiniteElement<2>              &fe = element_space->finite_element();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    std::vector<bool>                    counted(dofs.n_dofs(), false);
+    for (const auto &cell : dofs.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == where.boundary)
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (unsigned int k = 0; k < face_dofs.size(); ++k)
+              if (!counted[face_dofs[k]])
+                {
+                  counted[face_dofs[k]] = true;
+                  const unsigned int c =
+                    fe.face_system_to_component_index(k).first;
+                  sum[c] += unconstrained_residual(face_dofs[k]);
+                }
+          }
+    return sum;
+  }
+} // namespace glissade

@@ -1,0 +1,60 @@
+#include <glissade/base/input_error.h>
+#include <glissade/fe/element_space_registry.h>
+#include <glissade/fe/lagrange_space.h>
+
+namespace glissade
+{
+  const std::vector<ElementSpaceRegistry::Entry> &
+  ElementSpaceRegistry::entries()
+  {
+    // One line per element space.
+    static const std::vector<Entry> list = {
+      {"q1",
+       "bilinear 4-node quadrilateral (the paper's Q4)",
+       [] { return std::make_unique<LagrangeSpace>(1); }},
+      {"q2",
+       "biquadratic 9-node Lagrange quadrilateral",
+       [] { return std::make_unique<LagrangeSpace>(2); }},
+      {"q3",
+       "bicubic 16-node Lagrange quadrilateral",
+       [] { return std::make_unique<LagrangeSpace>(3); }},
+    };
+    return list;
+  }
+
+
+
+  std::unique_ptr<ElementSpace>
+  ElementSpaceRegistry::create(const std::string &name)
+  {
+    for (const auto &entry : entries())
+      if (entry.name == name)
+        return entry.create();
+    throw InputError("Element/Space",
+                     "unknown element space '" + name + "' (known: " +
+                       names_as_pattern() + ")");
+  }
+
+
+
+  std::string
+  ElementSpaceRegistry::names_as_pattern()
+  {
+    std::string names;
+    for (const auto &entry : entries())
+      names += (names.empty() ? "" : "|") + entry.name;
+    return names;
+  }
+
+
+
+  std::string
+  ElementSpaceRegistry::documentation()
+  {
+    std::string text;
+    for (const auto &entry : entries())
+      text += (text.empty() ? "" : "; ") + entry.name + ": " +
+              entry.description;
+    return text + ".";
+  }
+} // namespace glissade

@@ -1,0 +1,133 @@
+#include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
+#include <glissade/io/atomic_file.h>
+#include <glissade/io/history_writer.h>
+
+namespace glissade
+{
+  HistoryWriter::HistoryWriter(
+    const std::vector<std::string>           &items,
+    const std::vector<std::unique_ptr<Body>> &bodies,
+    const std::string                        &filename,
+    const std::string                        &source)
+    : filename(filename)
+  {
+    columns = {"increment", "time", "newton_iterations"};
+    const std::string entry = source + ": Output/History";
+
+    for (const auto &item : items)
+      {
+        const auto open = item.find('(');
+        if (open == std::string::npos || item.back() != ')')
+          throw InputError(entry, "cannot read '" + item + "'");
+        const std::string kind = text::trim(item.substr(0, open));
+        const auto        args =
+          text::split_top_level(item.substr(open + 1, item.size() - open - 2),
+                                ',');
+        if (args.empty())
+          throw InputError(entry, "'" + item + "' names no body");
+        const Body *body = nullptr;
+        for (const auto &b : bodies)
+          if (b->name() == args[0])
+            body = b.get();
+        if (body == nullptr)
+          throw InputError(entry,
+                           "'" + item + "': there is no body '" + args[0] +
+                             "'");
+
+        if (kind == "max_displacement" && args.size() == 1)
+          {
+            columns.push_back(args[0] + ":max|u|");
+            evaluators.emplace_back([body](std::vector<double> &row) {
+              row.push_back(body->max_displacement());
+            });
+          }
+        else if (kind == "displacement" && args.size() == 2)
+          {
+            double x, y;
+            if (!text::parse_point_location(args[1], x, y))
+              throw InputError(entry,
+                               "'" + item + "': expected point(x, y)");
+            const Point<2> p(x, y);
+            try
+              {
+                body->vertex_displacement(p); // checks that p is a vertex
+              }
+            catch (const InputError &e)
+              {
+                throw InputError(entry, e.what());
+              }
+            // No comma in a CSV header: "point(1, 0.2)" becomes "(1 0.2)".
+            const std::string at =
+              "(" + text::trim(args[1].substr(6, args[1].size() - 7)) + ")";
+            std::string label = at;
+            for (char &c : label)
+              if (c == ',')
+                c = ' ';
+            columns.push_back(args[0] + ":ux" + label);
+            columns.push_back(args[0] + ":uy" + label);
+            evaluators.emplace_back([body, p](std::vector<double> &row) {
+              const Tensor<1, 2> u = body->vertex_displacement(p);
+              row.push_back(u[0]);
+              row.push_back(u[1]);
+            });
+          }
+        else if (kind == "reaction" && args.size() == 2)
+          {
+            const std::string where = args[1];
+            try
+              {
+                body->reaction(where);
+              }
+            catch (const InputError &e)
+              {
+                throw InputError(entry, e.what());
+              }
+            std::string label = where;
+            for (char &c : label)
+              if (c == ',')
+                c = ' ';
+            columns.push_back(args[0] + ":Rx(" + label + ")");
+            columns.push_back(args[0] + ":Ry(" + label + ")");
+            evaluators.emplace_back([body, where](std::vector<double> &row) {
+              const Tensor<1, 2> r = body->reaction(where);
+              row.push_back(r[0]);
+              row.push_back(r[1]);
+            });
+          }
+        else
+          throw InputError(entry,
+                           "cannot read '" + item +
+                             "' (known: displacement(body, point(x, y)), "
+                             "max_displacement(body), reaction(body, "
+                             "boundary))");
+      }
+  }
+
+
+
+  void
+  HistoryWriter::record(const unsigned int increment,
+                        const double       time,
+                        const unsigned int newton_iterations)
+  {
+    std::vector<double> row = {double(increment), time,
+                               double(newton_iterations)};
+    for (const auto &evaluate : evaluators)
+      evaluate(row);
+    rows.push_back(row);
+
+    AtomicFile file(filename);
+    auto      &out = file.stream();
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      out << (c ? "," : "") << columns[c];
+    out << '\n';
+    for (const auto &r : rows)
+      {
+        for (unsigned int c = 0; c < r.size(); ++c)
+          out << (c ? "," : "") << r[c];
+        out << '\n';
+      }
+    file.commit();
+  }
+} // namespace glissade

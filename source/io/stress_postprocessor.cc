@@ -1,0 +1,56 @@
+#include <glissade/io/stress_postprocessor.h>
+
+#include <cmath>
+
+namespace glissade
+{
+  StressPostprocessor::StressPostprocessor(const Material &material)
+    : material(material)
+  {}
+
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    return {"sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_Mises"};
+  }
+
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_gradients;
+  }
+
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<2> &inputs,
+    std::vector<Vector<double>>              &computed) const
+  {
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        Tensor<2, 2> H;
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            H[i][j] = inputs.solution_gradients[p][i][j];
+        if (!(determinant(unit_symmetric_tensor<2>() + H) > 0.))
+          {
+            // Inverted material: nothing meaningful to plot, and NaN must
+            // never reach an output file.
+            computed[p] = 0.;
+            continue;
+          }
+        const SymmetricTensor<2, 3> s   = material.cauchy_stress(H);
+        const SymmetricTensor<2, 3> dev = deviator(s);
+        computed[p][0] = s[0][0];
+        computed[p][1] = s[1][1];
+        computed[p][2] = s[0][1];
+        computed[p][3] = s[2][2];
+        computed[p][4] = std::sqrt(1.5 * (dev * dev));
+      }
+  }
+} // namespace glissade

@@ -1,0 +1,132 @@
+#include <glissade/base/input_error.h>
+#include <glissade/material/material.h>
+#include <glissade/material/neo_hookean.h>
+#include <glissade/material/saint_venant_kirchhoff.h>
+
+#include <cmath>
+
+namespace glissade
+{
+  Material::Material(std::unique_ptr<HyperelasticLaw> law,
+                     const PlaneHypothesis            hypothesis)
+    : law(std::move(law))
+    , plane_hypothesis(hypothesis)
+  {}
+
+
+
+  Material
+  Material::create(const std::string    &law_name,
+                   const double          young_modulus,
+                   const double          poisson_ratio,
+                   const PlaneHypothesis hypothesis)
+  {
+    const double E      = young_modulus;
+    const double nu     = poisson_ratio;
+    const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+    const double mu     = E / (2. * (1. + nu));
+    if (law_name == "neo-Hookean")
+      return Material(std::make_unique<NeoHookean>(lambda, mu), hypothesis);
+    if (law_name == "Saint Venant-Kirchhoff")
+      return Material(std::make_unique<SaintVenantKirchhoff>(lambda, mu),
+                      hypothesis);
+    throw InputError("Material/Law",
+                     "unknown law '" + law_name +
+                       "' (known: neo-Hookean, Saint Venant-Kirchhoff)");
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  Material::strain(const Tensor<2, 2> &H, const double e33)
+  {
+    SymmetricTensor<2, 3> E;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        E[i][j] =
+          0.5 * (H[i][j] + H[j][i] + H[0][i] * H[0][j] + H[1][i] * H[1][j]);
+    E[2][2] = e33;
+    return E;
+  }
+
+
+
+  double
+  Material::solve_out_of_plane(const Tensor<2, 2>    &H,
+                               SymmetricTensor<2, 3> &S,
+                               SymmetricTensor<4, 3> &D) const
+  {
+    // Newton on S_33(E_33) = 0 with dS_33/dE_33 = D_3333. Starting from
+    // E_33 = 0 it converges in a few steps for any physically meaningful
+    // deformation; the count is bounded so a bad state cannot hang, and
+    // C_33 = 1 + 2 E_33 is kept positive.
+    double e33 = 0.;
+    for (unsigned int it = 0; it < 50; ++it)
+      {
+        law->evaluate(strain(H, e33), S, D);
+        double next = e33 - S[2][2] / D[2][2][2][2];
+        if (!(1. + 2. * next > 0.))
+          next = 0.5 * (e33 - 0.5); // halfway to C_33 = 0
+        const bool done =
+          std::abs(next - e33) <= 1e-15 * (1. + 2. * std::abs(e33));
+        e33 = next;
+        if (done)
+          break;
+      }
+    law->evaluate(strain(H, e33), S, D);
+    return e33;
+  }
+
+
+
+  MaterialPointResponse
+  Material::evaluate(const Tensor<2, 2> &H) const
+  {
+    SymmetricTensor<2, 3> S;
+    SymmetricTensor<4, 3> D;
+    MaterialPointResponse response;
+
+    if (plane_hypothesis == PlaneHypothesis::plane_strain)
+      law->evaluate(strain(H, 0.), S, D);
+    else
+      response.out_of_plane_stretch =
+        std::sqrt(1. + 2. * solve_out_of_plane(H, S, D));
+
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        {
+          response.stress[i][j] = S[i][j];
+          for (unsigned int k = 0; k < 2; ++k)
+            for (unsigned int l = k; l < 2; ++l)
+              {
+                double value = D[i][j][k][l];
+                if (plane_hypothesis == PlaneHypothesis::plane_stress)
+                  value -= D[i][j][2][2] * D[2][2][k][l] / D[2][2][2][2];
+                response.tangent[i][j][k][l] = value;
+              }
+        }
+    return response;
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  Material::cauchy_stress(const Tensor<2, 2> &H) const
+  {
+    SymmetricTensor<2, 3> S;
+    SymmetricTensor<4, 3> D;
+    double                e33 = 0.;
+    if (plane_hypothesis == PlaneHypothesis::plane_strain)
+      law->evaluate(strain(H, 0.), S, D);
+    else
+      e33 = solve_out_of_plane(H, S, D);
+
+    Tensor<2, 3> F;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        F[i][j] = (i == j ? 1. : 0.) + H[i][j];
+    F[2][2]        = std::sqrt(1. + 2. * e33);
+    const double J = determinant(F);
+    return symmetrize(F * Tensor<2, 3>(S) * transpose(F)) / J;
+  }
+} // namespace glissade

@@ -1,0 +1,22 @@
+#include <glissade/material/saint_venant_kirchhoff.h>
+
+namespace glissade
+{
+  SaintVenantKirchhoff::SaintVenantKirchhoff(const double lambda,
+                                             const double mu)
+    : lambda(lambda)
+    , mu(mu)
+    , elasticity(lambda * outer_product(unit_symmetric_tensor<3>(),
+                                        unit_symmetric_tensor<3>()) +
+                 2. * mu * identity_tensor<3>())
+  {}
+
+  void
+  SaintVenantKirchhoff::evaluate(const SymmetricTensor<2, 3> &E,
+                                 SymmetricTensor<2, 3>       &S,
+                                 SymmetricTensor<4, 3>       &D) const
+  {
+    S = lambda * trace(E) * unit_symmetric_tensor<3>() + 2. * mu * E;
+    D = elasticity;
+  }
+} // namespace glissade

@@ -1,0 +1,211 @@
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/mesh/mesh_factory.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace glissade
+{
+  BoundaryNames
+  MeshFactory::create(const MeshDescription &description,
+                      Triangulation<2>      &triangulation,
+                      const std::string     &where)
+  {
+    BoundaryNames names;
+    if (description.type == "rectangle")
+      names = create_rectangle(description.corner_1,
+                               description.corner_2,
+                               description,
+                               triangulation);
+    else if (description.type == "square")
+      {
+        const Tensor<1, 2> half({description.side / 2, description.side / 2});
+        names = create_rectangle(description.center - half,
+                                 description.center + half,
+                                 description,
+                                 triangulation);
+      }
+    else if (description.type == "half ring")
+      names = create_ring(description, false, triangulation);
+    else if (description.type == "ring")
+      names = create_ring(description, true, triangulation);
+    else if (description.type == "gmsh")
+      names = read_gmsh(description, triangulation, where);
+    else
+      throw InputError(where + "/Mesh/Type",
+                       "unknown mesh type '" + description.type + "'");
+
+    if (description.distortion > 0.)
+      GridTools::distort_random(description.distortion, triangulation, true);
+    return names;
+  }
+
+
+
+  BoundaryNames
+  MeshFactory::create_rectangle(const Point<2>        &lower_left,
+                                const Point<2>        &upper_right,
+                                const MeshDescription &description,
+                                Triangulation<2>      &triangulation)
+  {
+    // colorize = true numbers the sides 0 (x = x0), 1 (x = x1), 2 (y = y0)
+    // and 3 (y = y1).
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              description.subdivisions,
+                                              lower_left,
+                                              upper_right,
+                                              true);
+    return {{"left", 0}, {"right", 1}, {"bottom", 2}, {"top", 3}};
+  }
+
+
+
+  BoundaryNames
+  MeshFactory::create_ring(const MeshDescription &description,
+                           const bool             closed,
+                           Triangulation<2>      &triangulation)
+  {
+    const unsigned int n_around  = description.subdivisions[0];
+    const unsigned int n_through = description.subdivisions[1];
+    const double       r_in      = description.inner_radius;
+    const double       r_out     = description.outer_radius;
+    const double theta_0 = closed ? 0. : description.start_angle * M_PI / 180.;
+    const double theta_1 =
+      closed ? 2. * M_PI : description.end_angle * M_PI / 180.;
+    const unsigned int n_angles = closed ? n_around : n_around + 1;
+
+    std::vector<Point<2>> vertices;
+    for (unsigned int i = 0; i < n_angles; ++i)
+      {
+        const double theta =
+          theta_0 + (theta_1 - theta_0) * double(i) / double(n_around);
+        for (unsigned int j = 0; j <= n_through; ++j)
+          {
+            const double r =
+              r_in + (r_out - r_in) * double(j) / double(n_through);
+            vertices.push_back(description.center +
+                               Tensor<1, 2>({r * std::cos(theta),
+                                             r * std::sin(theta)}));
+          }
+      }
+
+    const auto vertex = [&](const unsigned int i, const unsigned int j) {
+      return (i % n_angles) * (n_through + 1) + j;
+    };
+    std::vector<CellData<2>> cells;
+    for (unsigned int i = 0; i < n_around; ++i)
+      for (unsigned int j = 0; j < n_through; ++j)
+        {
+          // First reference direction radial, second along theta: e_r x
+          // e_theta = +e_z, so the cell is positively oriented.
+          CellData<2> cell;
+          cell.vertices = {vertex(i, j),
+                           vertex(i, j + 1),
+                           vertex(i + 1, j),
+                           vertex(i + 1, j + 1)};
+          cells.push_back(cell);
+        }
+    triangulation.create_triangulation(vertices, cells, SubCellData());
+
+    const double tolerance = 1e-10 * r_out;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const double r0 = (face->vertex(0) - description.center).norm();
+            const double r1 = (face->vertex(1) - description.center).norm();
+            if (std::abs(r0 - r_in) < tolerance &&
+                std::abs(r1 - r_in) < tolerance)
+              face->set_boundary_id(0);
+            else if (std::abs(r0 - r_out) < tolerance &&
+                     std::abs(r1 - r_out) < tolerance)
+              face->set_boundary_id(1);
+            else
+              {
+                // A radial end of a half ring: which one, by its angle.
+                const Tensor<1, 2> d = face->center() - description.center;
+                const Tensor<1, 2> e0({std::cos(theta_0), std::sin(theta_0)});
+                const Tensor<1, 2> e1({std::cos(theta_1), std::sin(theta_1)});
+                const Tensor<1, 2> direction = d / d.norm();
+                face->set_boundary_id((direction - e0).norm() <
+                                          (direction - e1).norm() ?
+                                        2 :
+                                        3);
+              }
+          }
+
+    triangulation.set_all_manifold_ids(0);
+    triangulation.set_manifold(0, PolarManifold<2>(description.center));
+
+    if (closed)
+      return {{"inner", 0}, {"outer", 1}};
+    return {{"inner", 0}, {"outer", 1}, {"start", 2}, {"end", 3}};
+  }
+
+
+
+  BoundaryNames
+  MeshFactory::read_gmsh(const MeshDescription &description,
+                         Triangulation<2>      &triangulation,
+                         const std::string     &where)
+  {
+    std::ifstream in(description.file);
+    if (!in)
+      throw InputError(where + "/Mesh/File",
+                       "cannot open mesh file '" + description.file + "'");
+
+    // deal.II turns the physical tag of each boundary line into its boundary
+    // id; the names are in the $PhysicalNames section, which we read here.
+    BoundaryNames names;
+    {
+      std::string line;
+      while (std::getline(in, line))
+        if (line.rfind("$PhysicalNames", 0) == 0)
+          {
+            std::getline(in, line);
+            const unsigned int n = std::stoi(line);
+            for (unsigned int i = 0; i < n && std::getline(in, line); ++i)
+              {
+                std::istringstream entry(line);
+                int                dimension = -1, tag = -1;
+                std::string        name;
+                entry >> dimension >> tag;
+                std::getline(entry, name);
+                const auto q0 = name.find('"');
+                const auto q1 = name.rfind('"');
+                if (dimension == 1 && q0 != std::string::npos && q1 > q0)
+                  names[name.substr(q0 + 1, q1 - q0 - 1)] =
+                    static_cast<types::boundary_id>(tag);
+              }
+            break;
+          }
+    }
+    in.clear();
+    in.seekg(0);
+
+    try
+      {
+        GridIn<2> grid_in;
+        grid_in.attach_triangulation(triangulation);
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(where + "/Mesh/File",
+                         "cannot read '" + description.file +
+                           "' as a Gmsh mesh of quadrilaterals");
+      }
+    if (!triangulation.all_reference_cells_are_hyper_cube())
+      throw InputError(where + "/Mesh/File",
+                       "'" + description.file +
+                         "' has non-quadrilateral cells; glissade needs "
+                         "quadrilaterals (Recombine in Gmsh)");
+    return names;
+  }
+} // namespace glissade

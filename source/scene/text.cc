@@ -1,0 +1,66 @@
+#include <glissade/base/text.h>
+
+#include <cstdlib>
+
+namespace glissade
+{
+  namespace text
+  {
+    std::string
+    trim(const std::string &s)
+    {
+      const auto begin = s.find_first_not_of(" \t\n\r");
+      if (begin == std::string::npos)
+        return "";
+      const auto end = s.find_last_not_of(" \t\n\r");
+      return s.substr(begin, end - begin + 1);
+    }
+
+
+
+    std::vector<std::string>
+    split_top_level(const std::string &s, const char separator)
+    {
+      std::vector<std::string> parts;
+      std::string              current;
+      int                      depth = 0;
+      for (const char c : s)
+        {
+          if (c == '(')
+            ++depth;
+          else if (c == ')')
+            --depth;
+          if (c == separator && depth == 0)
+            {
+              parts.push_back(trim(current));
+              current.clear();
+            }
+          else
+            current += c;
+        }
+      if (!trim(current).empty() || !parts.empty())
+        parts.push_back(trim(current));
+      return parts;
+    }
+
+
+
+    bool
+    parse_point_location(const std::string &location, double &x, double &y)
+    {
+      const std::string l = trim(location);
+      if (l.rfind("point(", 0) != 0 || l.back() != ')')
+        return false;
+      const auto coordinates =
+        split_top_level(l.substr(6, l.size() - 7), ',');
+      if (coordinates.size() != 2)
+        return false;
+      char *end = nullptr;
+      x         = std::strtod(coordinates[0].c_str(), &end);
+      if (*end != '\0')
+        return false;
+      y = std::strtod(coordinates[1].c_str(), &end);
+      return *end == '\0';
+    }
+  } // namespace text
+} // namespace glissade

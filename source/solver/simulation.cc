@@ -1,0 +1,256 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/timer.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/io/atomic_file.h>
+#include <glissade/solver/simulation.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace glissade
+{
+  Simulation::Simulation(const SceneDescription &scene)
+    : scene(scene)
+  {
+    for (const auto &description : scene.bodies)
+      all_bodies.push_back(std::make_unique<Body>(description, scene.source));
+    pvd_records.resize(all_bodies.size());
+    history = std::make_unique<HistoryWriter>(scene.output.history,
+                                              all_bodies,
+                                              scene.output.directory +
+                                                "/history.csv",
+                                              scene.source);
+  }
+
+
+
+  Body &
+  Simulation::body(const std::string &name)
+  {
+    for (auto &b : all_bodies)
+      if (b->name() == name)
+        return *b;
+    throw InputError(scene.source, "there is no body '" + name + "'");
+  }
+
+
+
+  bool
+  Simulation::newton(const double t)
+  {
+    const NewtonSettings &settings = scene.newton;
+    for (auto &b : all_bodies)
+      b->set_time(t);
+
+    residual_history.clear();
+    double first_residual = 0.;
+    double last_increment = std::numeric_limits<double>::max();
+    double displacement_norm = 0.;
+    double size              = 0.;
+    for (auto &b : all_bodies)
+      size = std::max(size, b->size());
+
+    for (unsigned int iteration = 0; iteration <= settings.max_iterations;
+         ++iteration)
+      {
+        Timer timer;
+        bool  admissible = true;
+        double residual_squared = 0., scale = 0.;
+        for (auto &b : all_bodies)
+          {
+            admissible = b->assemble() && admissible;
+            residual_squared += std::pow(b->residual_norm(), 2);
+            scale = std::max(scale, b->force_scale());
+          }
+        stats.assembly_seconds += timer.wall_time();
+        const double residual = std::sqrt(residual_squared);
+        if (!admissible || !std::isfinite(residual))
+          return false;
+        if (iteration == 0)
+          first_residual = residual;
+        const double scaled =
+          scale > 0. ? residual / scale : residual;
+        residual_history.push_back(scaled);
+
+        // At least one correction per step: at iteration 0 the prescribed
+        // displacements of the new time are not applied yet.
+        if (iteration > 0 &&
+            residual <= settings.residual_tolerance * scale &&
+            last_increment <=
+              settings.displacement_tolerance *
+                std::max(displacement_norm, 1e-12 * size))
+          {
+            iterations_of_step += iteration;
+            stats.newton_iterations += iteration;
+            return true;
+          }
+        if (iteration == settings.max_iterations)
+          break;
+        if (iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300))
+          return false; // diverging
+
+        double increment_squared = 0.;
+        displacement_norm        = 0.;
+        for (auto &b : all_bodies)
+          {
+            Timer factorization_timer;
+            b->factorize();
+            stats.factorization_seconds += factorization_timer.wall_time();
+            Timer          solve_timer;
+            Vector<double> du;
+            b->solve(b->right_hand_side(), du);
+            b->update(du);
+            stats.solve_seconds += solve_timer.wall_time();
+            increment_squared += du.norm_sqr();
+            displacement_norm += b->displacement().norm_sqr();
+          }
+        last_increment    = std::sqrt(increment_squared);
+        displacement_norm = std::sqrt(displacement_norm);
+        if (!std::isfinite(last_increment))
+          return false;
+      }
+    stats.newton_iterations += settings.max_iterations;
+    return false;
+  }
+
+
+
+  bool
+  Simulation::advance(const double       t_start,
+                      const double       t_end,
+                      const unsigned int depth)
+  {
+    for (auto &b : all_bodies)
+      b->store_state();
+    if (newton(t_end))
+      return true;
+    for (auto &b : all_bodies)
+      b->restore_state();
+    if (depth >= scene.load_program.max_cut_back_depth)
+      return false;
+
+    ++stats.cut_backs;
+    if (scene.output.progress)
+      std::cout << "    cut-back: t = " << t_start << " -> " << t_end
+                << " bisected" << std::endl;
+    const double t_mid = 0.5 * (t_start + t_end);
+    return advance(t_start, t_mid, depth + 1) &&
+           advance(t_mid, t_end, depth + 1);
+  }
+
+
+
+  unsigned int
+  Simulation::advance_to(const double t, const std::string &label)
+  {
+    iterations_of_step   = 0;
+    const double t_start = current_time;
+    if (!advance(t_start, t, 0))
+      {
+        std::ostringstream message;
+        message << label << " (t = " << t_start << " -> " << t
+                << ") did not converge after "
+                << scene.load_program.max_cut_back_depth
+                << " cut-backs. Scaled residuals |R|/max(|F_int|, |F_ext|) "
+                   "of the last attempt:";
+        for (const double r : residual_history)
+          message << ' ' << std::setprecision(3) << r;
+        throw ConvergenceFailure(message.str());
+      }
+    current_time = t;
+    return iterations_of_step;
+  }
+
+
+
+  void
+  Simulation::write_output(const unsigned int increment, const double t)
+  {
+    Timer timer;
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      {
+        const std::string vtu =
+          all_bodies[b]->write_vtu(scene.output.directory, increment);
+        pvd_records[b].emplace_back(t, vtu);
+        AtomicFile pvd(scene.output.directory + "/" + all_bodies[b]->name() +
+                       ".pvd");
+        DataOutBase::write_pvd_record(pvd.stream(), pvd_records[b]);
+        pvd.commit();
+      }
+    stats.output_seconds += timer.wall_time();
+  }
+
+
+
+  void
+  Simulation::run()
+  {
+    Timer wall;
+    std::filesystem::create_directories(scene.output.directory);
+
+    const LoadProgram &program = scene.load_program;
+    unsigned int       n_total = 0;
+    for (const unsigned int n : program.stage_increments)
+      n_total += n;
+
+    history->record(0, 0., 0);
+    write_output(0, 0.);
+
+    unsigned int increment = 0;
+    double       t_begin   = 0.;
+    for (unsigned int stage = 0; stage < program.stage_end_times.size();
+         ++stage)
+      {
+        const double       t_end = program.stage_end_times[stage];
+        const unsigned int n     = program.stage_increments[stage];
+        for (unsigned int k = 1; k <= n; ++k)
+          {
+            ++increment;
+            const double t = t_begin + (t_end - t_begin) * double(k) / n;
+            const unsigned int iterations =
+              advance_to(t, "increment " + std::to_string(increment));
+            ++stats.increments;
+            if (scene.output.progress)
+              std::cout << "increment " << std::setw(5) << increment << "/"
+                        << n_total << "  t = " << std::setw(10) << t
+                        << "  Newton iterations " << std::setw(2)
+                        << iterations << "  |R|/F = " << std::scientific
+                        << std::setprecision(2) << residual_history.back()
+                        << std::defaultfloat << std::setprecision(6)
+                        << std::endl;
+            history->record(increment, t, iterations);
+            const bool last = (increment == n_total);
+            if (last || (scene.output.vtu_interval > 0 &&
+                         increment % scene.output.vtu_interval == 0))
+              write_output(increment, t);
+          }
+        t_begin = t_end;
+      }
+    stats.wall_seconds = wall.wall_time();
+
+    AtomicFile summary_file(scene.output.directory + "/summary.txt");
+    summary_file.stream() << summary() << '\n';
+    summary_file.commit();
+  }
+
+
+
+  std::string
+  Simulation::summary() const
+  {
+    unsigned int dofs = 0;
+    for (const auto &b : all_bodies)
+      dofs += b->n_dofs();
+    std::ostringstream s;
+    s << std::setprecision(3) << "glissade: " << stats.increments
+      << " increments, " << stats.newton_iterations << " Newton iterations, "
+      << stats.cut_backs << " cut-backs, " << dofs << " dofs, "
+      << stats.wall_seconds << " s wall (assembly " << stats.assembly_seconds
+      << " s, factorization " << stats.factorization_seconds << " s)";
+    return s.str();
+  }
+} // namespace glissade

@@ -1,0 +1,244 @@
+// Patch tests: a homogeneous deformation X -> F X imposed on the boundary of
+// a distorted mesh must be reproduced inside to round-off, because every
+// element space contains the linear fields and a homogeneous state is in
+// equilibrium. The stress is then checked against the closed-form
+// neo-Hookean Cauchy stress, computed here independently of the code.
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+
+using namespace glissade;
+using namespace glissade_tests;
+
+namespace
+{
+  const double young_modulus = 1000.;
+  const double poisson_ratio = 0.3;
+
+  std::string
+  patch_scene(const std::string  &space,
+              const Tensor<2, 2> &F,
+              const std::string  &law,
+              const std::string  &hypothesis,
+              const unsigned int  increments)
+  {
+    std::ostringstream ux, uy;
+    ux.precision(17);
+    uy.precision(17);
+    ux << "(" << F[0][0] - 1 << "*x + " << F[0][1] << "*y)*t";
+    uy << "(" << F[1][0] << "*x + " << F[1][1] - 1 << "*y)*t";
+    const std::string both = ux.str() + ", " + uy.str();
+    std::ostringstream prm;
+    prm << "subsection Scene\n set Bodies = block\nend\n"
+        << "subsection Body block\n"
+        << " subsection Mesh\n  set Type = rectangle\n"
+        << "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 1\n"
+        << "  set Subdivisions = 4, 4\n  set Distortion = 0.3\n end\n"
+        << " subsection Element\n  set Space = " << space << "\n end\n"
+        << " subsection Material\n  set Law = " << law << "\n"
+        << "  set Young modulus = " << young_modulus << "\n"
+        << "  set Poisson ratio = " << poisson_ratio << "\n"
+        << "  set Hypothesis = " << hypothesis << "\n end\n"
+        << " subsection Boundary conditions\n"
+        << "  set Prescribed displacement = left: xy: " << both
+        << "; right: xy: " << both << "; bottom: xy: " << both
+        << "; top: xy: " << both << "\n end\nend\n"
+        << "subsection Load program\n set Stage increments = " << increments
+        << "\nend\n"
+        << "subsection Newton\n set Residual tolerance = 1e-12\n"
+        << " set Displacement tolerance = 1e-12\nend\n"
+        << "subsection Output\n set Progress = false\nend\n";
+    return prm.str();
+  }
+
+  /** Closed-form neo-Hookean Cauchy stress for a homogeneous F. */
+  SymmetricTensor<2, 3>
+  neo_hookean_cauchy(const Tensor<2, 2> &F2, const bool plane_stress)
+  {
+    const double lambda = young_modulus * poisson_ratio /
+                          ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+    const double mu = young_modulus / (2 * (1 + poisson_ratio));
+    const double J2 = determinant(F2);
+    // Plane stress: the thickness stretch l3 solves
+    // sigma_33 = (mu (l3^2 - 1) + lambda ln(J2 l3)) / J = 0, by bisection.
+    double l3 = 1.;
+    if (plane_stress)
+      {
+        double lo = 1e-3, hi = 1e3;
+        for (int i = 0; i < 200; ++i)
+          {
+            l3 = std::sqrt(lo * hi);
+            const double s = mu * (l3 * l3 - 1) + lambda * std::log(J2 * l3);
+            (s > 0 ? hi : lo) = l3;
+          }
+      }
+    const double          J = J2 * l3;
+    SymmetricTensor<2, 3> sigma;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        sigma[i][j] = mu / J * (F2[i][0] * F2[j][0] + F2[i][1] * F2[j][1]);
+    sigma[2][2] = mu / J * l3 * l3;
+    for (unsigned int i = 0; i < 3; ++i)
+      sigma[i][i] += (-mu + lambda * std::log(J)) / J;
+    return sigma;
+  }
+
+  /** Closed-form plane-stress Saint Venant-Kirchhoff Cauchy stress. */
+  SymmetricTensor<2, 3>
+  svk_plane_stress_cauchy(const Tensor<2, 2> &F)
+  {
+    const double lambda = young_modulus * poisson_ratio /
+                          ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+    const double mu = young_modulus / (2 * (1 + poisson_ratio));
+    const double lambda_plane = 2 * lambda * mu / (lambda + 2 * mu);
+    Tensor<2, 2> E = 0.5 * (transpose(F) * F);
+    E[0][0] -= 0.5;
+    E[1][1] -= 0.5;
+    const double E33 = -lambda / (lambda + 2 * mu) * (E[0][0] + E[1][1]);
+    Tensor<2, 2> S   = 2 * mu * E;
+    S[0][0] += lambda_plane * (E[0][0] + E[1][1]);
+    S[1][1] += lambda_plane * (E[0][0] + E[1][1]);
+    const double       J     = determinant(F) * std::sqrt(1 + 2 * E33);
+    const Tensor<2, 2> sigma = F * S * transpose(F) / J;
+    SymmetricTensor<2, 3> result;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = i; j < 2; ++j)
+        result[i][j] = sigma[i][j];
+    return result;
+  }
+
+  void
+  run_patch(const std::string  &space,
+            const Tensor<2, 2> &F,
+            const std::string  &law,
+            const std::string  &hypothesis,
+            const unsigned int  increments)
+  {
+    const SceneDescription scene = SceneReader::read_string(
+      patch_scene(space, F, law, hypothesis, increments), "patch test");
+    Simulation simulation(scene);
+    for (unsigned int k = 1; k <= increments; ++k)
+      simulation.advance_to(double(k) / increments, "increment");
+    const Body &body = simulation.body("block");
+
+    // Nodal values against u = (F - I) X at every support point.
+    std::vector<Point<2>> support(body.n_dofs());
+    DoFTools::map_dofs_to_support_points(body.space().mapping(),
+                                         body.dof_handler(),
+                                         support);
+    const FiniteElement<2> &fe = body.space().finite_element();
+    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+    double max_error = 0., max_u = 0.;
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          {
+            const unsigned int c     = fe.system_to_component_index(i).first;
+            const Point<2>    &X     = support[local[i]];
+            const double       exact = F[c][0] * X[0] + F[c][1] * X[1] - X[c];
+            max_error = std::max(max_error,
+                                 std::abs(body.displacement()(local[i]) -
+                                          exact));
+            max_u = std::max(max_u, std::abs(exact));
+          }
+      }
+    std::cout << "  space " << space << ", " << law << ", " << hypothesis
+              << ": max nodal error " << max_error << " (max |u| " << max_u
+              << ")" << std::endl;
+    check(max_error <= 1e-10 * max_u, "nodal displacement is not exact");
+
+    // Deformation gradient and Cauchy stress at every quadrature point.
+    const bool plane_stress = (hypothesis == "plane stress");
+    const SymmetricTensor<2, 3> exact_sigma =
+      law == "neo-Hookean" ? neo_hookean_cauchy(F, plane_stress) :
+                             svk_plane_stress_cauchy(F);
+    FEValues<2> fe_values(body.space().mapping(),
+                          fe,
+                          body.space().cell_quadrature(),
+                          update_gradients);
+    std::vector<Tensor<2, 2>>        grad_u(fe_values.n_quadrature_points);
+    const FEValuesExtractors::Vector displacement(0);
+    double max_F_error = 0., max_sigma_error = 0.;
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_gradients(body.displacement(),
+                                                       grad_u);
+        for (const auto &g : grad_u)
+          {
+            const Tensor<2, 2> Fh = unit_symmetric_tensor<2>() + g;
+            max_F_error = std::max(max_F_error, (Fh - F).norm());
+            max_sigma_error =
+              std::max(max_sigma_error,
+                       (body.material().cauchy_stress(g) - exact_sigma)
+                         .norm());
+          }
+      }
+    std::cout << "  max |F_h - F| " << max_F_error
+              << ", max |sigma_h - sigma_exact| / |sigma_exact| "
+              << max_sigma_error / exact_sigma.norm() << std::endl;
+    check(max_F_error <= 1e-10 * F.norm(), "deformation gradient not exact");
+    check(max_sigma_error <= 1e-9 * exact_sigma.norm(),
+          "Cauchy stress differs from the closed form");
+  }
+
+  Tensor<2, 2>
+  small_strain_gradient()
+  {
+    return Tensor<2, 2>({{1 + 2e-5, 1e-5}, {-0.5e-5, 1 - 1e-5}});
+  }
+
+  Tensor<2, 2>
+  large_strain_gradient()
+  {
+    // Stretch, shear and a rotation of about 20 degrees: J = 1.1.
+    return Tensor<2, 2>({{1.35, 0.55}, {-0.25, 0.9}});
+  }
+} // namespace
+
+GLISSADE_TEST(patch_small_strain_q1)
+{
+  run_patch("q1", small_strain_gradient(), "neo-Hookean", "plane strain", 1);
+}
+
+GLISSADE_TEST(patch_small_strain_q2)
+{
+  run_patch("q2", small_strain_gradient(), "neo-Hookean", "plane strain", 1);
+}
+
+GLISSADE_TEST(patch_small_strain_q3)
+{
+  run_patch("q3", small_strain_gradient(), "neo-Hookean", "plane strain", 1);
+}
+
+GLISSADE_TEST(patch_large_strain_q1)
+{
+  run_patch("q1", large_strain_gradient(), "neo-Hookean", "plane strain", 4);
+}
+
+GLISSADE_TEST(patch_large_strain_q2)
+{
+  run_patch("q2", large_strain_gradient(), "neo-Hookean", "plane strain", 4);
+}
+
+GLISSADE_TEST(patch_large_strain_plane_stress_q1)
+{
+  run_patch("q1", large_strain_gradient(), "neo-Hookean", "plane stress", 4);
+}
+
+GLISSADE_TEST(patch_large_strain_svk_q1)
+{
+  run_patch("q1",
+            large_strain_gradient(),
+            "Saint Venant-Kirchhoff",
+            "plane stress",
+            4);
+}

@@ -1,0 +1,67 @@
+#pragma once
+
+// A deliberately small test harness: each test is a function registered by
+// name; ctest runs `glissade_tests <name>`. A failed check throws, the
+// program prints why and exits non-zero. Every test prints the figures it
+// checks, so a ctest log is also a record of what was measured.
+
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace glissade_tests
+{
+  using TestFunction = std::function<void()>;
+
+  std::map<std::string, TestFunction> &
+  registry();
+
+  struct Registration
+  {
+    Registration(const std::string &name, TestFunction f)
+    {
+      registry()[name] = std::move(f);
+    }
+  };
+
+  class CheckFailed : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  inline void
+  check(const bool condition, const std::string &what)
+  {
+    if (!condition)
+      throw CheckFailed(what);
+  }
+
+  /** |measured - expected| <= tolerance * |expected|, printed either way. */
+  inline void
+  check_relative(const double       measured,
+                 const double       expected,
+                 const double       tolerance,
+                 const std::string &what)
+  {
+    const double deviation =
+      std::abs(measured - expected) / std::max(std::abs(expected), 1e-300);
+    std::cout << "  " << what << ": measured " << measured << ", expected "
+              << expected << ", relative deviation " << deviation
+              << " (tolerance " << tolerance << ")" << std::endl;
+    check(deviation <= tolerance, what + " is out of tolerance");
+  }
+
+  /** The path of a file in the source tree (set by CMake). */
+  std::string
+  source_path(const std::string &relative);
+} // namespace glissade_tests
+
+#define GLISSADE_TEST(name)                                             \
+  static void                                 test_##name();            \
+  static glissade_tests::Registration registration_##name(#name,        \
+                                                          test_##name); \
+  static void                                 test_##name()
