@@ -5,6 +5,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+#include <glissade/study/geometric_study.h>
 
 #include <cstring>
 #include <iostream>
@@ -56,6 +57,12 @@ main(int argc, char **argv)
 
   try
     {
+      const std::string study = SceneReader::study_type(argv[1]);
+      if (study == "geometric")
+        {
+          GeometricStudy::run(argv[1], overrides);
+          return 0;
+        }
       const SceneDescription scene =
         SceneReader::read_file(argv[1], overrides);
       Simulation simulation(scene);

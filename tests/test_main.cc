@@ -1,3 +1,5 @@
+#include <glissade/base/config.h>
+
 #include "test_tools.h"
 
 #include <cmath>

@@ -468,6 +468,12 @@ namespace glissade
   SceneReader::declare_parameters(ParameterHandler               &prm,
                                   const std::vector<std::string> &body_names)
   {
+    prm.declare_entry("Study",
+                      "simulation",
+                      Patterns::Selection("simulation|geometric"),
+                      "simulation: run the scene below. geometric: the "
+                      "geometric study of the paper's section 3.3 (see "
+                      "prm/geometric_study.prm; its entries replace these).");
     prm.enter_subsection("Scene");
     prm.declare_entry("Bodies",
                       "body",
@@ -689,6 +695,29 @@ namespace glissade
     std::stringstream buffer;
     buffer << in.rdbuf();
     return read_string(buffer.str(), filename, overrides);
+  }
+
+
+
+  std::string
+  SceneReader::study_type(const std::string &filename)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError(filename, "cannot open the parameter file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    ParameterHandler prm;
+    prm.declare_entry("Study", "simulation", Patterns::Anything());
+    try
+      {
+        prm.parse_input_from_string(buffer.str(), "", true);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(filename, essential_message(e));
+      }
+    return prm.get("Study");
   }
 
 

@@ -39,6 +39,13 @@ namespace glissade
                 const std::string              &name,
                 const std::vector<std::string> &overrides = {});
 
+    /**
+     * The "Study" entry of a file: "simulation" (the default: run the scene)
+     * or the name of a study driver ("geometric").
+     */
+    static std::string
+    study_type(const std::string &filename);
+
     /** Every parameter with its documentation and default, for one body. */
     static void
     print_parameters(std::ostream &out);

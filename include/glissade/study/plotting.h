@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+namespace glissade
+{
+  /**
+   * Draws a study's PNGs from its CSVs with scripts/<script> (matplotlib, run
+   * by Debian's /usr/bin/python3). Pictures are a convenience: if Python or
+   * matplotlib is missing the run still succeeds and says so.
+   */
+  void
+  plot_with_python(const std::string &script, const std::string &directory);
+} // namespace glissade
