@@ -1,5 +1,4 @@
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -39,6 +38,7 @@ namespace glissade
     element_space = ElementSpaceRegistry::create(description.element_space);
     dofs.reinit(mesh);
     dofs.distribute_dofs(element_space->finite_element());
+    element_space->setup(dofs, element_constraints);
 
     boundary_conditions =
       std::make_unique<BoundaryConditions>(description,
@@ -54,7 +54,7 @@ namespace glissade
     // The set of constrained dofs never changes during a run (only the
     // prescribed values do), so the sparsity pattern is built once.
     boundary_conditions->make_constraints(
-      dofs, element_space->mapping(), 0., solution, constraints);
+      dofs, *element_space, 0., solution, element_constraints, constraints);
     DynamicSparsityPattern dsp(dofs.n_dofs());
     DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
     sparsity.copy_from(dsp);
@@ -75,65 +75,58 @@ namespace glissade
   Body::assemble()
   {
     boundary_conditions->make_constraints(
-      dofs, element_space->mapping(), time, solution, constraints);
+      dofs, *element_space, time, solution, element_constraints, constraints);
 
     tangent                = 0.;
     system_rhs             = 0.;
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
 
-    const FiniteElement<2> &fe        = element_space->finite_element();
-    const unsigned int      n_local   = fe.n_dofs_per_cell();
-    const double            thickness = description.material.thickness;
-    FEValues<2>             fe_values(element_space->mapping(),
-                          fe,
-                          element_space->cell_quadrature(),
-                          update_gradients | update_JxW_values);
-    const unsigned int      n_q = fe_values.n_quadrature_points;
+    const double thickness = description.material.thickness;
+    const auto   evaluator = element_space->create_evaluator();
+    const unsigned int n_local = evaluator->dofs_per_cell();
 
     FullMatrix<double>                   cell_matrix(n_local, n_local);
     Vector<double>                       cell_rhs(n_local);
-    Vector<double>                       cell_internal(n_local);
     std::vector<types::global_dof_index> local_dofs(n_local);
-    std::vector<Tensor<2, 2>>            displacement_gradients(n_q);
     std::vector<unsigned int>            component(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
-      component[i] = fe.system_to_component_index(i).first;
+      component[i] = evaluator->displacement_component(i);
     std::vector<Tensor<1, 2>>          grad(n_local);
     std::vector<SymmetricTensor<2, 2>> dE(n_local), D_dE(n_local);
-    const FEValuesExtractors::Vector   displacement(0);
 
     bool admissible = true;
     for (const auto &cell : dofs.active_cell_iterators())
       {
-        fe_values.reinit(cell);
+        evaluator->reinit(cell);
         cell->get_dof_indices(local_dofs);
         cell_matrix = 0.;
         cell_rhs    = 0.;
-        fe_values[displacement].get_function_gradients(solution,
-                                                       displacement_gradients);
 
-        for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
           {
-            const Tensor<2, 2> F =
-              unit_symmetric_tensor<2>() + displacement_gradients[q];
-            const double J = determinant(F);
+            // Every shape function is primitive: Grad N_i has a single
+            // non-zero row (its component c_i), which makes every
+            // contraction below a small dot product.
+            Tensor<2, 2> H; // displacement gradient
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                grad[i] = evaluator->shape_grad(i, q);
+                H[component[i]] += solution(local_dofs[i]) * grad[i];
+              }
+            const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+            const double       J = determinant(F);
             if (!(J > 0.) || !std::isfinite(J))
               {
                 admissible = false;
                 continue;
               }
-            const MaterialPointResponse response =
-              body_material.evaluate(displacement_gradients[q]);
+            const MaterialPointResponse response = body_material.evaluate(H);
             const Tensor<2, 2>          P  = F * Tensor<2, 2>(response.stress);
-            const double                dV = fe_values.JxW(q) * thickness;
+            const double                dV = evaluator->JxW(q) * thickness;
 
-            // With primitive shape functions, Grad N_i has a single non-zero
-            // row (its component c_i), which makes every contraction below
-            // a small dot product.
             for (unsigned int i = 0; i < n_local; ++i)
               {
-                grad[i]             = fe_values.shape_grad(i, q);
                 const unsigned int c = component[i];
                 for (unsigned int a = 0; a < 2; ++a)
                   for (unsigned int b = a; b < 2; ++b)
@@ -163,7 +156,8 @@ namespace glissade
           internal_forces(local_dofs[i]) -= cell_rhs(i);
 
         if (cell->at_boundary())
-          assemble_surface_loads(cell, cell_matrix, cell_rhs);
+          assemble_surface_loads(
+            cell, local_dofs, *evaluator, cell_matrix, cell_rhs);
 
         for (unsigned int i = 0; i < n_local; ++i)
           unconstrained_residual(local_dofs[i]) -= cell_rhs(i);
@@ -172,7 +166,7 @@ namespace glissade
       }
 
     Vector<double> point_loads(dofs.n_dofs());
-    boundary_conditions->add_point_loads(dofs, time, point_loads);
+    boundary_conditions->add_point_loads(dofs, *element_space, time, point_loads);
     unconstrained_residual -= point_loads;
     {
       std::vector<types::global_dof_index> index(1);
@@ -198,22 +192,16 @@ namespace glissade
   void
   Body::assemble_surface_loads(
     const typename DoFHandler<2>::active_cell_iterator &cell,
+    const std::vector<types::global_dof_index>         &local_dofs,
+    CellEvaluator                                      &evaluator,
     FullMatrix<double>                                 &cell_matrix,
     Vector<double>                                     &cell_rhs) const
   {
     const auto &loads = boundary_conditions->surface_loads();
     if (loads.empty())
       return;
-    const FiniteElement<2> &fe = element_space->finite_element();
-    FEFaceValues<2>         fe_face(element_space->mapping(),
-                            fe,
-                            element_space->face_quadrature(),
-                            update_values | update_gradients |
-                              update_normal_vectors | update_JxW_values |
-                              update_quadrature_points);
-    const FEValuesExtractors::Vector displacement(0);
-    const double thickness = description.material.thickness;
-    std::vector<Tensor<2, 2>> grad_u(fe_face.n_quadrature_points);
+    const double       thickness = description.material.thickness;
+    const unsigned int n_local   = evaluator.dofs_per_cell();
 
     for (const unsigned int f : cell->face_indices())
       {
@@ -223,44 +211,44 @@ namespace glissade
           {
             if (load.boundary != cell->face(f)->boundary_id())
               continue;
-            fe_face.reinit(cell, f);
-            fe_face[displacement].get_function_gradients(solution, grad_u);
+            evaluator.reinit(cell, f);
             load.function->set_time(time);
-            for (unsigned int q = 0; q < fe_face.n_quadrature_points; ++q)
+            for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
               {
-                const Point<2>     &X  = fe_face.quadrature_point(q);
-                const Tensor<1, 2> &N0 = fe_face.normal_vector(q);
-                const double        dA = fe_face.JxW(q) * thickness;
+                const Point<2>     X  = evaluator.quadrature_point(q);
+                const Tensor<1, 2> N0 = evaluator.normal_vector(q);
+                const double       dA = evaluator.JxW(q) * thickness;
                 if (!load.is_pressure)
                   {
                     // Dead traction per unit reference length.
                     const Tensor<1, 2> t({load.function->value(X, 0),
                                           load.function->value(X, 1)});
-                    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                      {
-                        const unsigned int c =
-                          fe.system_to_component_index(i).first;
-                        cell_rhs(i) += fe_face.shape_value(i, q) * t[c] * dA;
-                      }
+                    for (unsigned int i = 0; i < n_local; ++i)
+                      cell_rhs(i) += evaluator.shape_value(i, q) *
+                                     t[evaluator.displacement_component(i)] *
+                                     dA;
                     continue;
                   }
                 // Follower pressure: f = -p n da = -p cof(F) N0 dA (Nanson),
                 // with cof(F) linear in F in 2D, hence the simple tangent.
+                Tensor<2, 2> F = unit_symmetric_tensor<2>();
+                for (unsigned int i = 0; i < n_local; ++i)
+                  F[evaluator.displacement_component(i)] +=
+                    solution(local_dofs[i]) * evaluator.shape_grad(i, q);
                 const double       p = load.function->value(X);
-                const Tensor<2, 2> F = unit_symmetric_tensor<2>() + grad_u[q];
                 const Tensor<1, 2> cof_F_N0({F[1][1] * N0[0] - F[1][0] * N0[1],
                                              -F[0][1] * N0[0] +
                                                F[0][0] * N0[1]});
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                for (unsigned int i = 0; i < n_local; ++i)
                   {
-                    const unsigned int ci = fe.system_to_component_index(i).first;
-                    const double       Ni = fe_face.shape_value(i, q);
+                    const unsigned int ci = evaluator.displacement_component(i);
+                    const double       Ni = evaluator.shape_value(i, q);
                     cell_rhs(i) -= p * Ni * cof_F_N0[ci] * dA;
-                    for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+                    for (unsigned int j = 0; j < n_local; ++j)
                       {
                         const unsigned int cj =
-                          fe.system_to_component_index(j).first;
-                        const Tensor<1, 2> g = fe_face.shape_grad(j, q);
+                          evaluator.displacement_component(j);
+                        const Tensor<1, 2> g = evaluator.shape_grad(j, q);
                         double             d = 0.;
                         if (ci == 1 && cj == 0)
                           d = -g[1] * N0[0] + g[0] * N0[1];
@@ -279,11 +267,14 @@ namespace glissade
   double
   Body::residual_norm() const
   {
-    double sum = 0.;
-    for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
-      if (!constraints.is_constrained(i))
-        sum += unconstrained_residual(i) * unconstrained_residual(i);
-    return std::sqrt(sum);
+    // The equilibrium equations of the free dofs are the condensed ones: a
+    // constrained dof a = sum_b w_b u_b + g hands its residual on to the
+    // dofs b (serendipity interiors, Hermite tangential derivatives).
+    Vector<double> condensed = unconstrained_residual;
+    constraints.condense(condensed);
+    for (const auto &line : constraints.get_lines())
+      condensed(line.index) = 0.;
+    return condensed.l2_norm();
   }
 
 
@@ -348,7 +339,8 @@ namespace glissade
                                   mesh,
                                   description.name,
                                   "");
-    const auto dof_pair = BoundaryConditions::vertex_dofs(dofs, where.vertex);
+    const auto dof_pair =
+      BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
     return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
   }
 
@@ -357,8 +349,9 @@ namespace glissade
   double
   Body::max_displacement() const
   {
-    // Nodal values: pair the x and y dofs that share a support point.
-    const FiniteElement<2> &fe = element_space->finite_element();
+    // Nodal values: pair the x and y value dofs that share a node.
+    const FiniteElement<2> &fe      = element_space->finite_element();
+    const unsigned int      per_dim = element_space->components_per_displacement();
     std::vector<std::pair<unsigned int, unsigned int>> pairs;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {
@@ -367,7 +360,7 @@ namespace glissade
           continue;
         for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
           if (fe.system_to_component_index(j) ==
-              std::make_pair(1u, ci.second))
+              std::make_pair(per_dim, ci.second))
             pairs.emplace_back(i, j);
       }
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
@@ -393,7 +386,8 @@ namespace glissade
     Tensor<1, 2> sum;
     if (where.is_vertex)
       {
-        const auto d = BoundaryConditions::vertex_dofs(dofs, where.vertex);
+        const auto d =
+          BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
         return Tensor<1, 2>(
           {unconstrained_residual(d[0]), unconstrained_residual(d[1])});
       }
@@ -410,9 +404,15 @@ namespace glissade
               if (!counted[face_dofs[k]])
                 {
                   counted[face_dofs[k]] = true;
-                  const unsigned int c =
+                  // Only value dofs carry force; derivative dofs carry
+                  // its moments.
+                  const unsigned int per_dim =
+                    element_space->components_per_displacement();
+                  const unsigned int k_component =
                     fe.face_system_to_component_index(k).first;
-                  sum[c] += unconstrained_residual(face_dofs[k]);
+                  if (k_component % per_dim == 0)
+                    sum[k_component / per_dim] +=
+                      unconstrained_residual(face_dofs[k]);
                 }
           }
     return sum;

@@ -1,6 +1,5 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
@@ -117,26 +116,25 @@ namespace glissade
 
   std::array<types::global_dof_index, 2>
   BoundaryConditions::vertex_dofs(const DoFHandler<2> &dof_handler,
+                                  const ElementSpace  &space,
                                   const unsigned int   vertex)
   {
-    const FiniteElement<2> &fe = dof_handler.get_fe();
+    const FiniteElement<2> &fe      = dof_handler.get_fe();
+    const unsigned int      per_dim = space.components_per_displacement();
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex_index(v) == vertex)
           {
-            // The first dof of each component at a vertex is its nodal
-            // value (elements with derivative dofs list those after it).
+            // System component k moves displacement component k / per_dim;
+            // k % per_dim == 0 is the nodal value, the rest derivatives.
             std::array<types::global_dof_index, 2> dofs;
-            std::array<bool, 2>                    found = {{false, false}};
             for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
               {
                 const unsigned int local = v * fe.n_dofs_per_vertex() + k;
-                const unsigned int c = fe.system_to_component_index(local).first;
-                if (!found[c])
-                  {
-                    dofs[c]  = cell->vertex_dof_index(v, k);
-                    found[c] = true;
-                  }
+                const unsigned int component =
+                  fe.system_to_component_index(local).first;
+                if (component % per_dim == 0)
+                  dofs[component / per_dim] = cell->vertex_dof_index(v, k);
               }
             return dofs;
           }
@@ -157,7 +155,8 @@ namespace glissade
         DirichletItem item;
         item.where = resolve(d.location, names, tria, body.name,
                              prefix + d.entry);
-        item.mask  = ComponentMask(std::vector<bool>{d.x_component, d.y_component});
+        item.components      = {{d.x_component, d.y_component}};
+        item.all_derivatives = d.all_derivatives;
         switch (d.kind)
           {
             case DirichletDescription::Kind::fixed:
@@ -200,48 +199,86 @@ namespace glissade
 
   void
   BoundaryConditions::make_constraints(
-    const DoFHandler<2>       &dof_handler,
-    const Mapping<2>          &mapping,
-    const double               time,
-    const Vector<double>      &current_displacement,
-    AffineConstraints<double> &constraints) const
+    const DoFHandler<2>             &dof_handler,
+    const ElementSpace              &space,
+    const double                     time,
+    const Vector<double>            &current_displacement,
+    const AffineConstraints<double> &element_constraints,
+    AffineConstraints<double>       &constraints) const
   {
-    // Collect all targets first: a dof on two items (a corner shared by two
-    // fixed sides) must be constrained once, the later item winning.
-    std::map<types::global_dof_index, double> targets;
+    // Collect all relations first: a dof on two items (a corner shared by
+    // two fixed sides) must be constrained once, the later item winning.
+    std::map<types::global_dof_index, DofRelation> relations;
     for (const auto &item : dirichlet_items)
       {
         item.displacement->set_time(time);
+        std::vector<DofRelation> these;
         if (item.where.is_vertex)
           {
-            const auto dofs = vertex_dofs(dof_handler, item.where.vertex);
+            const auto dofs = vertex_dofs(dof_handler, space, item.where.vertex);
             const Point<2> X =
               dof_handler.get_triangulation().get_vertices()[item.where.vertex];
             for (unsigned int c = 0; c < 2; ++c)
-              if (item.mask[c])
-                targets[dofs[c]] = item.displacement->value(X, c);
+              if (item.components[c])
+                these.push_back({dofs[c], {}, item.displacement->value(X, c)});
           }
         else
-          {
-            std::map<types::global_dof_index, double> values;
-            VectorTools::interpolate_boundary_values(mapping,
-                                                     dof_handler,
-                                                     item.where.boundary,
-                                                     *item.displacement,
-                                                     values,
-                                                     item.mask);
-            for (const auto &v : values)
-              targets[v.first] = v.second;
-          }
+          space.boundary_relations(dof_handler,
+                                   item.where.boundary,
+                                   *item.displacement,
+                                   item.components,
+                                   item.all_derivatives,
+                                   these);
+        for (const auto &r : these)
+          relations[r.dof] = r;
       }
 
+    // Two items may couple the same pair of dofs the opposite way round (a
+    // Hermite node where two fixed boundaries meet: each fixes its own
+    // tangential derivative, a + c_a b = v_a and b + c_b a = v_b). That is
+    // a cycle, which AffineConstraints cannot close: solve the 2 x 2 system
+    // instead, or keep one equation if the two are the same one.
+    for (auto &[a, ra] : relations)
+      if (ra.others.size() == 1)
+        {
+          const auto b  = ra.others[0].first;
+          const auto rb = relations.find(b);
+          if (rb == relations.end() || rb->second.others.size() != 1 ||
+              rb->second.others[0].first != a)
+            continue;
+          const double c_a = ra.others[0].second;
+          const double c_b = rb->second.others[0].second;
+          const double v_a = ra.value, v_b = rb->second.value;
+          const double det = 1. - c_a * c_b;
+          if (std::abs(det) > 1e-10)
+            {
+              ra.value          = (v_a - c_a * v_b) / det;
+              rb->second.value  = v_b - c_b * ra.value;
+              rb->second.others.clear();
+            }
+          else
+            relations.erase(rb);
+          ra.others.clear();
+        }
+
     constraints.clear();
-    for (const auto &t : targets)
+    for (const auto &line : element_constraints.get_lines())
       {
-        constraints.add_line(t.first);
-        constraints.set_inhomogeneity(t.first,
-                                      t.second -
-                                        current_displacement[t.first]);
+        constraints.add_line(line.index);
+        constraints.add_entries(line.index, line.entries);
+      }
+    for (const auto &[dof, r] : relations)
+      {
+        // u_dof + sum c_k u_k = value, as an increment from the current
+        // state: du_dof = -sum c_k du_k + (value - current combination).
+        double current = current_displacement[dof];
+        constraints.add_line(dof);
+        for (const auto &[other, c] : r.others)
+          {
+            constraints.add_entry(dof, other, -c);
+            current += c * current_displacement[other];
+          }
+        constraints.set_inhomogeneity(dof, r.value - current);
       }
     constraints.close();
   }
@@ -250,13 +287,14 @@ namespace glissade
 
   void
   BoundaryConditions::add_point_loads(const DoFHandler<2> &dof_handler,
+                                      const ElementSpace  &space,
                                       const double         time,
                                       Vector<double>      &forces) const
   {
     for (const auto &load : point_loads)
       {
         load.force->set_time(time);
-        const auto dofs = vertex_dofs(dof_handler, load.where.vertex);
+        const auto dofs = vertex_dofs(dof_handler, space, load.where.vertex);
         for (unsigned int c = 0; c < 2; ++c)
           forces[dofs[c]] += load.force->value(load.where.point, c);
       }

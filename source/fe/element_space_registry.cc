@@ -1,6 +1,8 @@
 #include <glissade/base/input_error.h>
 #include <glissade/fe/element_space_registry.h>
+#include <glissade/fe/hermite_space.h>
 #include <glissade/fe/lagrange_space.h>
+#include <glissade/fe/serendipity_space.h>
 
 namespace glissade
 {
@@ -18,6 +20,16 @@ namespace glissade
       {"q3",
        "bicubic 16-node Lagrange quadrilateral",
        [] { return std::make_unique<LagrangeSpace>(3); }},
+      {"q8",
+       "quadratic 8-node serendipity quadrilateral (the paper's Q8)",
+       [] { return std::make_unique<SerendipitySpace>(2); }},
+      {"q12",
+       "cubic 12-node serendipity quadrilateral (the paper's Q12)",
+       [] { return std::make_unique<SerendipitySpace>(3); }},
+      {"hermite",
+       "the paper's C1-edge Hermite quadrilateral: 12-term cubic, value and "
+       "both derivatives per node and component (6 dofs per node)",
+       [] { return std::make_unique<HermiteSpace>(); }},
     };
     return list;
   }

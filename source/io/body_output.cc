@@ -1,4 +1,5 @@
 #include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <glissade/body/body.h>
 #include <glissade/io/atomic_file.h>
@@ -9,22 +10,59 @@
 
 namespace glissade
 {
+  namespace
+  {
+    /**
+     * The displacement vector from the value components of an element with
+     * derivative dofs (Hermite: components 0 and 3 of 6).
+     */
+    class NodalDisplacement : public DataPostprocessorVector<2>
+    {
+    public:
+      explicit NodalDisplacement(const unsigned int per_dim)
+        : DataPostprocessorVector<2>("displacement", update_values)
+        , per_dim(per_dim)
+      {}
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
+                            std::vector<Vector<double>> &computed) const override
+      {
+        for (unsigned int p = 0; p < computed.size(); ++p)
+          for (unsigned int c = 0; c < 2; ++c)
+            computed[p][c] = inputs.solution_values[p][c * per_dim];
+      }
+
+    private:
+      const unsigned int per_dim;
+    };
+  } // namespace
+
   std::string
   Body::write_vtu(const std::string &directory, const unsigned int index) const
   {
-    StressPostprocessor stress(body_material);
+    const unsigned int  per_dim = element_space->components_per_displacement();
+    StressPostprocessor stress(body_material, per_dim);
+    NodalDisplacement   nodal_displacement(per_dim);
     DataOut<2>          data_out;
     data_out.attach_dof_handler(dofs);
-    const std::vector<std::string> names(2, "displacement");
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(2,
-                     DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(solution,
-                             names,
-                             DataOut<2>::type_dof_data,
-                             interpretation);
+    if (per_dim == 1)
+      {
+        const std::vector<std::string> names(2, "displacement");
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          interpretation(
+            2, DataComponentInterpretation::component_is_part_of_vector);
+        data_out.add_data_vector(solution,
+                                 names,
+                                 DataOut<2>::type_dof_data,
+                                 interpretation);
+      }
+    else
+      data_out.add_data_vector(solution, nodal_displacement);
     data_out.add_data_vector(solution, stress);
-    const unsigned int degree = element_space->finite_element().degree;
+    const unsigned int degree =
+      per_dim == 1 ? element_space->finite_element().degree : 1;
     data_out.build_patches(element_space->mapping(),
                            degree,
                            DataOut<2>::curved_inner_cells);

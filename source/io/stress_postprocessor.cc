@@ -4,8 +4,11 @@
 
 namespace glissade
 {
-  StressPostprocessor::StressPostprocessor(const Material &material)
+  StressPostprocessor::StressPostprocessor(
+    const Material    &material,
+    const unsigned int components_per_displacement)
     : material(material)
+    , per_dim(components_per_displacement)
   {}
 
 
@@ -21,7 +24,7 @@ namespace glissade
   UpdateFlags
   StressPostprocessor::get_needed_update_flags() const
   {
-    return update_gradients;
+    return per_dim == 1 ? update_gradients : update_values;
   }
 
 
@@ -31,12 +34,14 @@ namespace glissade
     const DataPostprocessorInputs::Vector<2> &inputs,
     std::vector<Vector<double>>              &computed) const
   {
-    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+    for (unsigned int p = 0; p < computed.size(); ++p)
       {
         Tensor<2, 2> H;
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
-            H[i][j] = inputs.solution_gradients[p][i][j];
+            H[i][j] = per_dim == 1 ?
+                        inputs.solution_gradients[p][i][j] :
+                        inputs.solution_values[p][i * per_dim + 1 + j];
         if (!(determinant(unit_symmetric_tensor<2>() + H) > 0.))
           {
             // Inverted material: nothing meaningful to plot, and NaN must

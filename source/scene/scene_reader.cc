@@ -98,11 +98,13 @@ namespace glissade
                      const std::string    &where)
     {
       const std::string c = text::trim(components);
-      if (c != "x" && c != "y" && c != "xy")
+      if (c != "x" && c != "y" && c != "xy" && c != "all")
         throw InputError(where,
-                         "components must be x, y or xy, not '" + c + "'");
-      item.x_component = (c.find('x') != std::string::npos);
-      item.y_component = (c.find('y') != std::string::npos);
+                         "components must be x, y, xy or all, not '" + c +
+                           "'");
+      item.all_derivatives = (c == "all");
+      item.x_component = item.all_derivatives || (c.find('x') != std::string::npos);
+      item.y_component = item.all_derivatives || (c.find('y') != std::string::npos);
     }
 
     /** Splits "a: b: c; d: e" into items and fields, checking the count. */
@@ -216,7 +218,10 @@ namespace glissade
           Patterns::Anything(),
           "Zero displacement: 'location: components; ...', location a "
           "boundary name or point(x, y) (a mesh vertex), components x, y or "
-          "xy. Example: 'left: xy; point(0, 0): y'.");
+          "xy, or all: xy and every derivative dof of Hermite elements (the "
+          "paper's fully clamped nodes; by default a fixed Hermite boundary "
+          "fixes values and tangential derivatives). Example: 'left: xy; "
+          "point(0, 0): y'.");
         prm.declare_entry(
           "Prescribed displacement",
           "",

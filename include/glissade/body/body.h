@@ -140,9 +140,11 @@ namespace glissade
   private:
     void
     assemble_surface_loads(const typename DoFHandler<2>::active_cell_iterator
-                                               &cell,
-                           FullMatrix<double>  &cell_matrix,
-                           Vector<double>      &cell_rhs) const;
+                                                   &cell,
+                           const std::vector<types::global_dof_index> &local_dofs,
+                           CellEvaluator           &evaluator,
+                           FullMatrix<double>      &cell_matrix,
+                           Vector<double>          &cell_rhs) const;
 
     const BodyDescription               description;
     const std::string                   source;
@@ -155,7 +157,8 @@ namespace glissade
     double                              reference_size = 1.;
     double                              time           = 0.;
 
-    AffineConstraints<double> constraints;
+    AffineConstraints<double> element_constraints; // the space's own
+    AffineConstraints<double> constraints;         // plus Dirichlet data
     SparsityPattern           sparsity;
     SparseMatrix<double>      tangent;
     SparseDirectUMFPACK       factorization;

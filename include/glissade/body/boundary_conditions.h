@@ -7,6 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <glissade/fe/element_space.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/scene_description.h>
 
@@ -43,20 +44,23 @@ namespace glissade
                        const std::string      &source);
 
     /**
-     * Fills `constraints` for a Newton correction: each Dirichlet dof gets
-     * the inhomogeneity (target value at time t) - (current value), which is
-     * zero after the first iteration of an increment.
+     * Fills `constraints` for a Newton correction: the element space's own
+     * constraints, then each Dirichlet relation with the inhomogeneity
+     * (target at time t) - (current value), zero after the first iteration
+     * of an increment.
      */
     void
-    make_constraints(const DoFHandler<2>       &dof_handler,
-                     const Mapping<2>          &mapping,
-                     const double               time,
-                     const Vector<double>      &current_displacement,
-                     AffineConstraints<double> &constraints) const;
+    make_constraints(const DoFHandler<2>             &dof_handler,
+                     const ElementSpace              &space,
+                     const double                     time,
+                     const Vector<double>            &current_displacement,
+                     const AffineConstraints<double> &element_constraints,
+                     AffineConstraints<double>       &constraints) const;
 
     /** Point loads at time t, as a vector of nodal forces. */
     void
     add_point_loads(const DoFHandler<2> &dof_handler,
+                    const ElementSpace  &space,
                     const double         time,
                     Vector<double>      &external_forces) const;
 
@@ -81,15 +85,18 @@ namespace glissade
             const std::string      &body_name,
             const std::string      &entry);
 
-    /** The two global dofs (x, y) at a mesh vertex. */
+    /** The two global value dofs (x, y) at a mesh vertex. */
     static std::array<types::global_dof_index, 2>
-    vertex_dofs(const DoFHandler<2> &dof_handler, const unsigned int vertex);
+    vertex_dofs(const DoFHandler<2> &dof_handler,
+                const ElementSpace  &space,
+                const unsigned int   vertex);
 
   private:
     struct DirichletItem
     {
       Location                          where;
-      ComponentMask                     mask;
+      std::array<bool, 2>               components;
+      bool                              all_derivatives;
       std::shared_ptr<Function<2>>      displacement; // 2 components
     };
     struct PointLoad

@@ -1,23 +1,44 @@
 #pragma once
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 
+#include <glissade/fe/cell_evaluator.h>
+
+#include <array>
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
   using namespace dealii;
 
   /**
+   * One Dirichlet condition on one dof: u_dof + sum_k c_k u_{dof_k} = value.
+   * Plain nodal values have no `others`; the Hermite element's tangential
+   * derivative on a curved boundary couples its two gradient dofs.
+   */
+  struct DofRelation
+  {
+    types::global_dof_index                                    dof;
+    std::vector<std::pair<types::global_dof_index, double>> others;
+    double                                                     value;
+  };
+
+  /**
    * An element space: what a body needs to discretise its displacement.
    *
-   * It bundles the vector-valued finite element (two displacement
-   * components), the geometry mapping (isoparametric for the Lagrange
-   * spaces, so Q1 bodies have straight edges exactly as the paper's Q4), and
-   * the quadrature rules. Bodies only talk to this interface, so a new
-   * element type is one new class plus one line in ElementSpaceRegistry.
+   * It gives the deal.II finite element used to number the dofs, the
+   * geometry mapping (isoparametric: Q1 bodies have straight edges exactly
+   * as the paper's Q4), evaluators of shape functions for assembly, and the
+   * way Dirichlet data constrain its dofs. Bodies only talk to this
+   * interface, so a new element type is one new class plus one line in
+   * ElementSpaceRegistry (doc/adding_an_element_type.md).
    */
   class ElementSpace
   {
@@ -28,16 +49,54 @@ namespace glissade
     virtual std::string
     name() const = 0;
 
+    /** The element whose dofs the DoFHandler distributes. */
     virtual const FiniteElement<2> &
     finite_element() const = 0;
 
+    /**
+     * Called once the body's dofs are distributed, for what depends on the
+     * mesh: a geometry field, constraints among the element's own dofs
+     * (serendipity interiors). The default does nothing.
+     */
+    virtual void
+    setup(const DoFHandler<2> &dof_handler, AffineConstraints<double> &element_constraints);
+
+    /** The geometry, for output and boundary interpolation. */
     virtual const Mapping<2> &
     mapping() const = 0;
 
-    virtual const Quadrature<2> &
-    cell_quadrature() const = 0;
+    /**
+     * How many finite-element components describe one displacement
+     * component: 1 for nodal spaces, 3 for Hermite (value, d/dx, d/dy).
+     * System component k belongs to displacement component k / this.
+     */
+    virtual unsigned int
+    components_per_displacement() const
+    {
+      return 1;
+    }
 
-    virtual const Quadrature<1> &
-    face_quadrature() const = 0;
+    /**
+     * Shape functions at quadrature points: the space's own rule if
+     * points_per_direction is 0, else a Gauss rule with that many points
+     * (error integration uses a richer one).
+     */
+    virtual std::unique_ptr<CellEvaluator>
+    create_evaluator(const unsigned int points_per_direction = 0) const = 0;
+
+    /**
+     * The relations that prescribe the displacement g (a 2-component
+     * function) on the faces with the given boundary id, for the components
+     * in `components`. `all_derivatives` additionally fixes every derivative
+     * dof there (the paper's fully clamped Hermite nodes; nodal spaces have
+     * none). The default interpolates g at the support points.
+     */
+    virtual void
+    boundary_relations(const DoFHandler<2>       &dof_handler,
+                       const types::boundary_id   boundary,
+                       const Function<2>         &g,
+                       const std::array<bool, 2> &components,
+                       const bool                 all_derivatives,
+                       std::vector<DofRelation>  &relations) const;
   };
 } // namespace glissade

@@ -34,23 +34,12 @@ namespace glissade
       return geometry;
     }
 
-    const Quadrature<2> &
-    cell_quadrature() const override
-    {
-      return cell_rule;
-    }
-
-    const Quadrature<1> &
-    face_quadrature() const override
-    {
-      return face_rule;
-    }
+    std::unique_ptr<CellEvaluator>
+    create_evaluator(const unsigned int points_per_direction) const override;
 
   private:
     const unsigned int degree;
     FESystem<2>        fe;
     MappingQ<2>        geometry;
-    QGauss<2>          cell_rule;
-    QGauss<1>          face_rule;
   };
 } // namespace glissade

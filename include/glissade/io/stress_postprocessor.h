@@ -11,11 +11,16 @@ namespace glissade
    * output points: computed from the material law where it is plotted, so
    * the picture shows the stress of the discrete solution without a
    * projection step.
+   *
+   * For Hermite elements (3 components per displacement component) the
+   * gradient is read from the derivative dofs, interpolated bilinearly
+   * between the nodes where it is exact.
    */
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:
-    explicit StressPostprocessor(const Material &material);
+    StressPostprocessor(const Material    &material,
+                        const unsigned int components_per_displacement);
 
     void
     evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
@@ -28,6 +33,7 @@ namespace glissade
     get_needed_update_flags() const override;
 
   private:
-    const Material &material;
+    const Material    &material;
+    const unsigned int per_dim;
   };
 } // namespace glissade

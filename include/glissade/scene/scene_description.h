@@ -46,6 +46,8 @@ namespace glissade
     std::string              location;
     bool                     x_component = true;
     bool                     y_component = true;
+    /** "all": also every derivative dof (Hermite), as in the paper's fig 11. */
+    bool                     all_derivatives = false;
     std::vector<std::string> expressions; // displacement: one per component
     Point<2>                 rotation_center;
     std::string              angle_expression; // rotation, radians

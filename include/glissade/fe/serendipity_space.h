@@ -1,0 +1,73 @@
+#pragma once
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_fe_field.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/fe/element_space.h>
+
+#include <memory>
+
+namespace glissade
+{
+  /**
+   * The serendipity quadrilaterals Q8 (degree 2) and Q12 (degree 3), which
+   * deal.II does not ship, built on its tensor-product FE_Q.
+   *
+   * The serendipity space is the tensor-product space Q_p minus the monomials
+   * whose degree exceeds p in one variable while being at least 2 in the
+   * other: x^2 y^2 for Q8; x^2 y^2, x^3 y^2, x^2 y^3, x^3 y^3 for Q12. That is
+   * exactly as many conditions as Q_p has interior nodes (1 and 4), so a
+   * serendipity function is an FE_Q(p) function whose interior nodal values
+   * are fixed, cell by cell, by its boundary ones. We number dofs with
+   * FE_Q(p), impose those cell-local relations as constraints, and get every
+   * deal.II facility (FEValues, interpolation, output) for free. For Q8 the
+   * relation is the classical u_centre = -1/4 sum(corners) + 1/2
+   * sum(mid-sides).
+   *
+   * The geometry is isoparametric in the same space: a MappingFEField whose
+   * Euler vector holds the exact positions (from the mesh's manifold) of the
+   * boundary nodes and the serendipity-constrained interior ones.
+   */
+  class SerendipitySpace : public ElementSpace
+  {
+  public:
+    explicit SerendipitySpace(const unsigned int degree);
+
+    std::string
+    name() const override;
+
+    const FiniteElement<2> &
+    finite_element() const override
+    {
+      return fe;
+    }
+
+    void
+    setup(const DoFHandler<2>       &dof_handler,
+          AffineConstraints<double> &element_constraints) override;
+
+    const Mapping<2> &
+    mapping() const override;
+
+    std::unique_ptr<CellEvaluator>
+    create_evaluator(const unsigned int points_per_direction) const override;
+
+    /**
+     * For each interior node of FE_Q(p) (in deal.II's base numbering), the
+     * coefficients on the boundary nodes: u_interior = sum c_j u_j.
+     */
+    const std::vector<std::vector<std::pair<unsigned int, double>>> &
+    interior_relations() const
+    {
+      return relations;
+    }
+
+  private:
+    const unsigned int degree;
+    FESystem<2>        fe;
+    std::vector<std::vector<std::pair<unsigned int, double>>> relations;
+    Vector<double>                                        euler_vector;
+    std::unique_ptr<MappingFEField<2, 2, Vector<double>>> geometry;
+  };
+} // namespace glissade
