@@ -59,7 +59,8 @@ namespace glissade
                               const BoundaryNames    &boundary_names,
                               const Triangulation<2> &triangulation,
                               const std::string      &body_name,
-                              const std::string      &entry)
+                              const std::string      &entry,
+                              const bool              allow_face_point)
   {
     Location result;
     double   x, y;
@@ -78,12 +79,36 @@ namespace glissade
               best_v = v;
             }
         const double size = GridTools::diameter(triangulation);
+        if (best > 1e-8 * size && allow_face_point)
+          for (const auto &cell : triangulation.active_cell_iterators())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                {
+                  const Point<2>     a = cell->face(f)->vertex(0);
+                  const Tensor<1, 2> d = cell->face(f)->vertex(1) - a;
+                  const double fraction = (result.point - a) * d / d.norm_square();
+                  const double distance =
+                    (result.point - (a + fraction * d)).norm();
+                  if (fraction >= 0. && fraction <= 1. &&
+                      distance <= 1e-8 * size)
+                    {
+                      result.is_vertex  = false;
+                      result.on_face    = true;
+                      result.cell_index = cell->active_cell_index();
+                      result.face       = f;
+                      result.fraction   = fraction;
+                      return result;
+                    }
+                }
         if (best > 1e-8 * size)
           {
             std::ostringstream message;
             message << "point(" << x << ", " << y
                     << ") is not a vertex of the mesh of body '" << body_name
-                    << "' (the nearest vertex is at " << vertices[best_v]
+                    << "'"
+                    << (allow_face_point ? " nor on a straight boundary face" :
+                                           "")
+                    << " (the nearest vertex is at " << vertices[best_v]
                     << ")";
             throw InputError(entry, message.str());
           }
@@ -184,7 +209,12 @@ namespace glissade
     for (const auto &n : body.neumann)
       {
         const Location where =
-          resolve(n.location, names, tria, body.name, prefix + n.entry);
+          resolve(n.location,
+                  names,
+                  tria,
+                  body.name,
+                  prefix + n.entry,
+                  n.kind == NeumannDescription::Kind::point_load);
         if (n.kind == NeumannDescription::Kind::point_load)
           point_loads.push_back({where, make_parser(n.expressions)});
         else
@@ -294,9 +324,30 @@ namespace glissade
     for (const auto &load : point_loads)
       {
         load.force->set_time(time);
-        const auto dofs = vertex_dofs(dof_handler, space, load.where.vertex);
-        for (unsigned int c = 0; c < 2; ++c)
-          forces[dofs[c]] += load.force->value(load.where.point, c);
+        const Tensor<1, 2> f({load.force->value(load.where.point, 0),
+                              load.force->value(load.where.point, 1)});
+        if (load.where.is_vertex)
+          {
+            const auto dofs =
+              vertex_dofs(dof_handler, space, load.where.vertex);
+            for (unsigned int c = 0; c < 2; ++c)
+              forces[dofs[c]] += f[c];
+            continue;
+          }
+        // A point of a face: the element's shape functions there hand the
+        // force to its dofs (eq. 29), derivative dofs included.
+        const auto evaluator = space.create_evaluator();
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->active_cell_index() == load.where.cell_index)
+            {
+              evaluator->reinit_at(cell, load.where.face, load.where.fraction);
+              std::vector<types::global_dof_index> local(
+                evaluator->dofs_per_cell());
+              cell->get_dof_indices(local);
+              for (unsigned int i = 0; i < local.size(); ++i)
+                forces[local[i]] += evaluator->shape_value(i, 0) *
+                                    f[evaluator->displacement_component(i)];
+            }
       }
   }
 } // namespace glissade

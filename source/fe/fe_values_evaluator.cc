@@ -6,7 +6,9 @@ namespace glissade
                                        const FiniteElement<2> &fe,
                                        const Quadrature<2>    &cell_quadrature,
                                        const Quadrature<1>    &face_quadrature)
-    : cell_values(mapping,
+    : mapping(mapping)
+    , fe(fe)
+    , cell_values(mapping,
                   fe,
                   cell_quadrature,
                   update_values | update_gradients | update_JxW_values |
@@ -28,7 +30,7 @@ namespace glissade
   FEValuesEvaluator::reinit(const CellIterator &cell)
   {
     cell_values.reinit(cell);
-    on_face = false;
+    where = Where::cell;
   }
 
 
@@ -37,7 +39,25 @@ namespace glissade
   FEValuesEvaluator::reinit(const CellIterator &cell, const unsigned int face)
   {
     face_values.reinit(cell, face);
-    on_face = true;
+    where = Where::face;
+  }
+
+
+
+  void
+  FEValuesEvaluator::reinit_at(const CellIterator &cell,
+                               const unsigned int  face,
+                               const double        fraction)
+  {
+    point_values = std::make_unique<FEFaceValues<2>>(
+      mapping,
+      fe,
+      Quadrature<1>(std::vector<Point<1>>{Point<1>(fraction)},
+                    std::vector<double>{1.}),
+      update_values | update_gradients | update_quadrature_points |
+        update_normal_vectors | update_JxW_values);
+    point_values->reinit(cell, face);
+    where = Where::point;
   }
 
 
@@ -45,8 +65,15 @@ namespace glissade
   const FEValuesBase<2> &
   FEValuesEvaluator::current() const
   {
-    return on_face ? static_cast<const FEValuesBase<2> &>(face_values) :
-                     static_cast<const FEValuesBase<2> &>(cell_values);
+    switch (where)
+      {
+        case Where::face:
+          return face_values;
+        case Where::point:
+          return *point_values;
+        default:
+          return cell_values;
+      }
   }
 
 
@@ -96,7 +123,7 @@ namespace glissade
   double
   FEValuesEvaluator::JxW(const unsigned int q) const
   {
-    return current().JxW(q);
+    return where == Where::point ? 1. : current().JxW(q);
   }
 
 
@@ -112,6 +139,7 @@ namespace glissade
   Tensor<1, 2>
   FEValuesEvaluator::normal_vector(const unsigned int q) const
   {
-    return face_values.normal_vector(q);
+    return where == Where::point ? point_values->normal_vector(q) :
+                                   face_values.normal_vector(q);
   }
 } // namespace glissade

@@ -49,20 +49,31 @@ namespace glissade
       void
       reinit(const CellIterator &cell, const unsigned int face) override
       {
+        evaluate_on_edge(cell,
+                         HermiteQuadrilateral::edge_from_dealii_face(face).edge,
+                         line_rule.points,
+                         line_rule.weights);
+      }
+
+      /** Values, weights |dX/ds| w and outward normals at points s_q. */
+      void
+      evaluate_on_edge(const CellIterator        &cell,
+                       const unsigned int         edge,
+                       const std::vector<double> &points,
+                       const std::vector<double> &point_weights)
+      {
         const HermiteQuadrilateral &element =
           space.element(cell->active_cell_index());
-        const unsigned int edge =
-          HermiteQuadrilateral::edge_from_dealii_face(face).edge;
         const Vector2 direction =
           HermiteQuadrilateral::edge_reference_direction(edge);
-        const unsigned int n = line_rule.points.size();
+        const unsigned int n = points.size();
         values.resize(n);
         weights.resize(n);
         normals.resize(n);
         for (unsigned int q = 0; q < n; ++q)
           {
-            const Vector2 ref = HermiteQuadrilateral::edge_reference_point(
-              edge, line_rule.points[q]);
+            const Vector2 ref =
+              HermiteQuadrilateral::edge_reference_point(edge, points[q]);
             values[q] = element.evaluate(ref[0], ref[1]);
             const auto  &J = values[q].jacobian;
             const double tx =
@@ -70,11 +81,23 @@ namespace glissade
             const double ty =
               J[1][0] * direction[0] + J[1][1] * direction[1];
             const double length = std::hypot(tx, ty);
-            weights[q]          = length * line_rule.weights[q];
+            weights[q]          = length * point_weights[q];
             // Edges run counterclockwise: the outward normal is the tangent
             // turned clockwise.
             normals[q] = Tensor<1, 2>({ty / length, -tx / length});
           }
+      }
+
+      void
+      reinit_at(const CellIterator &cell,
+                const unsigned int  face,
+                const double        fraction) override
+      {
+        const auto edge_of_face = HermiteQuadrilateral::edge_from_dealii_face(face);
+        const double s =
+          edge_of_face.reversed ? 1. - 2. * fraction : 2. * fraction - 1.;
+        evaluate_on_edge(cell, edge_of_face.edge, {s}, {1.});
+        weights[0] = 1.;
       }
 
       unsigned int

@@ -44,7 +44,9 @@ namespace glissade
 
   SerendipitySpace::SerendipitySpace(const unsigned int degree)
     : degree(degree)
-    , fe(FE_Q<2>(degree), 2)
+    // Equidistant nodes (deal.II's FE_Q defaults to Gauss-Lobatto points
+    // from degree 3 on): the classical Q12 has its edge nodes at thirds.
+    , fe(FE_Q<2>(QIterated<1>(QTrapezoid<1>(), degree)), 2)
   {
     if (degree != 2 && degree != 3)
       throw std::invalid_argument("serendipity elements of degree 2 or 3");

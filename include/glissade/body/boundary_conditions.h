@@ -28,6 +28,11 @@ namespace glissade
     types::boundary_id boundary  = 0;
     unsigned int       vertex    = 0;
     Point<2>           point;
+    /** A point inside a straight boundary face (point loads only). */
+    bool         on_face     = false;
+    unsigned int cell_index  = 0; // active cell index
+    unsigned int face        = 0;
+    double       fraction    = 0.; // from the face's vertex 0 to vertex 1
   };
 
   /**
@@ -77,13 +82,18 @@ namespace glissade
       return loads_on_boundaries;
     }
 
-    /** Resolves "left" or "point(x, y)"; `entry` names the .prm entry. */
+    /**
+     * Resolves "left" or "point(x, y)"; `entry` names the .prm entry. A point
+     * must be a mesh vertex, or, if `allow_face_point`, lie on a straight
+     * boundary face.
+     */
     static Location
     resolve(const std::string      &location,
             const BoundaryNames    &boundary_names,
             const Triangulation<2> &triangulation,
             const std::string      &body_name,
-            const std::string      &entry);
+            const std::string      &entry,
+            const bool              allow_face_point = false);
 
     /** The two global value dofs (x, y) at a mesh vertex. */
     static std::array<types::global_dof_index, 2>

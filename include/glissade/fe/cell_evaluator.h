@@ -32,6 +32,16 @@ namespace glissade
     virtual void
     reinit(const CellIterator &cell, const unsigned int face) = 0;
 
+    /**
+     * Switches to one point of face f: the one at `fraction` (in [0, 1]) of
+     * the way from the face's vertex 0 to its vertex 1 in the reference
+     * configuration. For point loads and edge slopes; JxW is 1 there.
+     */
+    virtual void
+    reinit_at(const CellIterator &cell,
+              const unsigned int  face,
+              const double        fraction) = 0;
+
     virtual unsigned int
     n_quadrature_points() const = 0;
 

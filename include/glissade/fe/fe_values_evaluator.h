@@ -4,6 +4,7 @@
 
 #include <glissade/fe/cell_evaluator.h>
 
+#include <memory>
 #include <vector>
 
 namespace glissade
@@ -21,6 +22,10 @@ namespace glissade
     reinit(const CellIterator &cell) override;
     void
     reinit(const CellIterator &cell, const unsigned int face) override;
+    void
+    reinit_at(const CellIterator &cell,
+              const unsigned int  face,
+              const double        fraction) override;
 
     unsigned int
     n_quadrature_points() const override;
@@ -43,9 +48,17 @@ namespace glissade
     const FEValuesBase<2> &
     current() const;
 
-    FEValues<2>               cell_values;
-    FEFaceValues<2>           face_values;
-    bool                      on_face = false;
+    const Mapping<2>                &mapping;
+    const FiniteElement<2>          &fe;
+    FEValues<2>                      cell_values;
+    FEFaceValues<2>                  face_values;
+    std::unique_ptr<FEFaceValues<2>> point_values;
+    enum class Where
+    {
+      cell,
+      face,
+      point
+    } where = Where::cell;
     std::vector<unsigned int> component;
   };
 } // namespace glissade
