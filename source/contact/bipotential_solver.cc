@@ -1,0 +1,431 @@
+#include <glissade/contact/bipotential_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace glissade
+{
+  namespace
+  {
+    using Vector2    = BiPotentialSolver::Vector2;
+    using Residuals  = BiPotentialSolver::Residuals;
+    using Outcome    = BiPotentialSolver::Outcome;
+    using NodeStatus = BiPotentialSolver::NodeStatus;
+
+    constexpr unsigned int t = ComplianceMatrix::tangential;
+    constexpr unsigned int n = ComplianceMatrix::normal;
+
+    // Sweeps between two recomputations of u = u_free + W r from scratch,
+    // so that the round-off of the incremental updates cannot pile up.
+    constexpr unsigned int refresh_period = 128;
+
+    // A diagonal entry below this fraction of the largest one is round-off
+    // of an assembly in which both bodies are rigid.
+    constexpr double singular_fraction = 1e-14;
+
+    // Reactions this many times larger than the problem's own force scale
+    // mean that the fixed-point iteration is running away.
+    constexpr double divergence_factor = 1e30;
+
+    inline double
+    norm(const Vector2 &v)
+    {
+      return std::sqrt(v[0] * v[0] + v[1] * v[1]);
+    }
+
+    inline bool
+    is_finite(const Vector2 &v)
+    {
+      return std::isfinite(v[0]) && std::isfinite(v[1]);
+    }
+
+    double
+    max_norm(const std::vector<Vector2> &vectors)
+    {
+      double result = 0.;
+      for (const Vector2 &v : vectors)
+        result = std::max(result, norm(v));
+      return result;
+    }
+
+    // u = u_free + W r.
+    void
+    compute_displacement(const ComplianceMatrix     &W,
+                         const std::vector<Vector2> &u_free,
+                         const std::vector<Vector2> &r,
+                         std::vector<Vector2>       &u)
+    {
+      u = u_free;
+      W.add_product(r, u);
+    }
+
+    // The residuals of the contact law at each node, from a consistent pair
+    // (u, r). See BiPotentialSolver::Residuals for what each one means.
+    Residuals
+    residuals_of(const std::vector<Vector2> &u,
+                 const std::vector<Vector2> &r,
+                 const std::vector<double>  &mu,
+                 const double                scale)
+    {
+      Residuals result;
+      for (std::size_t k = 0; k < u.size(); ++k)
+        {
+          const double gap       = u[k][n];
+          result.complementarity = std::max(
+              result.complementarity, std::abs(std::min(gap, scale * r[k][n])));
+          result.max_penetration = std::max(result.max_penetration, -gap);
+
+          // Coulomb's law for the tangential part, at the given normal
+          // reaction: s r_t must be the projection of s r_t - u_t onto
+          // [-mu s r_n, mu s r_n]. Inside the interval this says u_t = 0
+          // (stick); at the end -mu s r_n it says u_t >= 0, i.e. the slave
+          // slips in +t and friction pulls it back (and symmetrically).
+          const double half_width = mu[k] * scale * std::max(r[k][n], 0.);
+          const double scaled_r_t = scale * r[k][t];
+          const double trial      = scaled_r_t - u[k][t];
+          const double projected =
+              std::max(-half_width, std::min(half_width, trial));
+          result.friction =
+              std::max(result.friction, std::abs(scaled_r_t - projected));
+          result.max_cone_violation =
+              std::max(result.max_cone_violation,
+                       scale * (std::abs(r[k][t]) - mu[k] * r[k][n]));
+        }
+      return result;
+    }
+
+    double
+    natural_scale(const ComplianceMatrix &W)
+    {
+      double scale = 0.;
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        scale = std::max(scale, W.normal_compliance(k));
+      return scale;
+    }
+
+    // Largest eigenvalue of the symmetric part of a 2x2 block.
+    double
+    largest_eigenvalue(const ComplianceMatrix::Block &w)
+    {
+      const double mean      = 0.5 * (w[t][t] + w[n][n]);
+      const double half_diff = 0.5 * (w[t][t] - w[n][n]);
+      const double off_diag  = 0.5 * (w[t][n] + w[n][t]);
+      return mean + std::sqrt(half_diff * half_diff + off_diag * off_diag);
+    }
+
+    std::string
+    invalid_input_message(const BiPotentialSolver::Settings &settings,
+                          const ComplianceMatrix            &W,
+                          const std::vector<Vector2>        &u_free,
+                          const std::vector<double>         &mu,
+                          const std::vector<Vector2>        &r)
+    {
+      const std::size_t  n_nodes = W.n_nodes();
+      std::ostringstream problem;
+      if (!(settings.beta > 0. && settings.beta < 2.))
+        problem << "beta = " << settings.beta << " is not in (0, 2). ";
+      if (!(settings.change_tolerance >= 0.) ||
+          !(settings.residual_tolerance >= 0.) ||
+          !(settings.reaction_floor >= 0.) || !(settings.length_floor >= 0.) ||
+          !std::isfinite(settings.force_to_length_scale) ||
+          !std::isfinite(settings.reaction_floor) ||
+          !std::isfinite(settings.length_floor))
+        problem << "tolerances and floors must be finite and >= 0. ";
+      if (settings.max_sweeps == 0)
+        problem << "max_sweeps must be at least 1. ";
+      if (u_free.size() != n_nodes || mu.size() != n_nodes ||
+          (!r.empty() && r.size() != n_nodes))
+        {
+          problem << "size mismatch: W has " << n_nodes << " nodes, u_free "
+                  << u_free.size() << ", mu " << mu.size() << ", r " << r.size()
+                  << ". ";
+          return problem.str();
+        }
+      for (std::size_t k = 0; k < n_nodes; ++k)
+        {
+          if (!is_finite(u_free[k]))
+            {
+              problem << "u_free of node " << k << " is not finite. ";
+              break;
+            }
+          if (!(mu[k] >= 0.) || !std::isfinite(mu[k]))
+            {
+              problem << "mu of node " << k << " is " << mu[k]
+                      << " (must be finite and >= 0). ";
+              break;
+            }
+          if (!r.empty() && !is_finite(r[k]))
+            {
+              problem << "the starting reaction of node " << k
+                      << " is not finite. ";
+              break;
+            }
+        }
+      if (!W.all_entries_finite())
+        problem << "W has non-finite entries. ";
+      else
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          if (W.diagonal_block(k)[t][t] < 0.)
+            {
+              problem << "W_kk[t][t] < 0 at node " << k
+                      << ": W is not positive semi-definite. ";
+              break;
+            }
+      return problem.str();
+    }
+  } // namespace
+
+  BiPotentialSolver::BiPotentialSolver() : settings() {}
+
+  BiPotentialSolver::BiPotentialSolver(const Settings &settings)
+      : settings(settings)
+  {
+  }
+
+  const BiPotentialSolver::Settings &
+  BiPotentialSolver::get_settings() const
+  {
+    return settings;
+  }
+
+  Vector2
+  BiPotentialSolver::project_on_coulomb_cone(const Vector2 &x, const double mu)
+  {
+    const double abs_t = std::abs(x[t]);
+    // The polar cone {y : y . z <= 0 for all z in K} = {x_n <= -mu |x_t|}
+    // projects to the apex. Tested first so that mu = 0 (K is the half-line
+    // r_t = 0, r_n >= 0) sends x_n <= 0 to zero.
+    if (x[n] <= -mu * abs_t)
+      return {{0., 0.}};
+    if (abs_t <= mu * x[n])
+      return x;
+    // Orthogonal projection on the edge spanned by (sign(x_t) mu, 1):
+    // r_n = (x . e) / |e|^2 with e = (sign(x_t) mu, 1). Positive here
+    // because x is not in the polar cone.
+    const double r_n = (x[n] + mu * abs_t) / (1. + mu * mu);
+    return {{std::copysign(mu * r_n, x[t]), r_n}};
+  }
+
+  BiPotentialSolver::NodeStatus
+  BiPotentialSolver::classify(const Vector2 &r, const double mu)
+  {
+    if (!(r[n] > 0.))
+      return NodeStatus::open;
+    // The projection puts a slipping node exactly on the edge; the relative
+    // margin only absorbs the rounding of mu r_n.
+    if (mu == 0. || std::abs(r[t]) >= mu * r[n] * (1. - 1e-12))
+      return NodeStatus::slip;
+    return NodeStatus::stick;
+  }
+
+  BiPotentialSolver::Result
+  BiPotentialSolver::solve(const ComplianceMatrix     &W,
+                           const std::vector<Vector2> &u_free,
+                           const std::vector<double>  &mu,
+                           std::vector<Vector2>       &r) const
+  {
+    Result             result;
+    const unsigned int n_nodes = W.n_nodes();
+
+    // 1. Refuse what cannot be solved, before touching r.
+    const std::string problem =
+        invalid_input_message(settings, W, u_free, mu, r);
+    if (!problem.empty())
+      {
+        result.outcome = Outcome::invalid_input;
+        result.message = "BiPotentialSolver: invalid input: " + problem;
+        return result;
+      }
+
+    const double max_normal_compliance = natural_scale(W);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const double w_nn = W.normal_compliance(k);
+        if (!(w_nn > singular_fraction * max_normal_compliance) || w_nn <= 0.)
+          result.singular_nodes.push_back(k);
+      }
+    if (!result.singular_nodes.empty())
+      {
+        std::ostringstream message;
+        message << "BiPotentialSolver: " << result.singular_nodes.size()
+                << " node(s) with W_kk[n][n] <= 0 (or below 1e-14 of the "
+                   "largest), i.e. a gap that no reaction can change (both "
+                   "bodies rigid at the node?): ";
+        for (std::size_t i = 0; i < result.singular_nodes.size() && i < 10; ++i)
+          message << result.singular_nodes[i] << ' ';
+        if (result.singular_nodes.size() > 10)
+          message << "...";
+        result.outcome = Outcome::singular_node;
+        result.message = message.str();
+        return result;
+      }
+
+    // 2. Scales and step lengths.
+    const double scale           = settings.force_to_length_scale > 0.
+                                       ? settings.force_to_length_scale
+                                       : max_normal_compliance;
+    result.force_to_length_scale = scale;
+
+    std::vector<double> rho(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const ComplianceMatrix::Block w_kk = W.diagonal_block(k);
+        const bool                    use_largest =
+            settings.rho_choice == RhoChoice::largest_diagonal_compliance &&
+            mu[k] > 0.;
+        rho[k] = settings.beta /
+                 (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
+      }
+
+    const std::vector<Vector2> initial_r =
+        r.empty() ? std::vector<Vector2>(n_nodes, Vector2{{0., 0.}}) : r;
+    r = initial_r;
+
+    const double free_length =
+        std::max(max_norm(u_free), settings.length_floor);
+    // The forces this problem can produce: those that close the free gaps,
+    // or those the caller already had. Used only to detect a blow-up.
+    const double force_reference = std::max(
+        {free_length / scale, settings.reaction_floor, max_norm(initial_r)});
+
+    std::vector<Vector2> u;
+    compute_displacement(W, u_free, r, u);
+
+    // 3. Gauss-Seidel sweeps.
+    bool u_is_exact = true;
+    result.outcome  = Outcome::max_sweeps_reached;
+    for (unsigned int sweep = 1; sweep <= settings.max_sweeps; ++sweep)
+      {
+        result.sweeps     = sweep;
+        double max_change = 0.;
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            const Vector2 &u_k = u[k];
+            Vector2        new_r;
+            if (mu[k] == 0.)
+              // Frictionless: projected SOR on the normal LCP.
+              new_r = {{0., std::max(0., r[k][n] - rho[k] * u_k[n])}};
+            else
+              {
+                // Bi-potential step: the normal argument is the modified
+                // gap g + mu |u_t|, which couples Signorini and Coulomb so
+                // that a single projection on K_mu enforces both.
+                const Vector2 trial = {
+                    {r[k][t] - rho[k] * u_k[t],
+                     r[k][n] - rho[k] * (u_k[n] + mu[k] * std::abs(u_k[t]))}};
+                new_r = project_on_coulomb_cone(trial, mu[k]);
+              }
+
+            const Vector2 delta = {{new_r[t] - r[k][t], new_r[n] - r[k][n]}};
+            if (delta[t] != 0. || delta[n] != 0.)
+              {
+                r[k] = new_r;
+                W.add_column_product(k, delta, u);
+                u_is_exact = false;
+                max_change = std::max(max_change, norm(delta));
+              }
+          }
+
+        const double max_reaction   = max_norm(r);
+        result.last_reaction_change = max_change;
+        if (!std::isfinite(max_change) || !std::isfinite(max_reaction) ||
+            max_reaction > divergence_factor * force_reference)
+          {
+            result.outcome = Outcome::diverged;
+            break;
+          }
+
+        result.reaction_change_bound =
+            settings.change_tolerance *
+            std::max(max_reaction, settings.reaction_floor);
+        const bool small_change = max_change <= result.reaction_change_bound;
+        if (small_change || sweep % refresh_period == 0)
+          {
+            compute_displacement(W, u_free, r, u);
+            u_is_exact = true;
+          }
+        if (small_change)
+          {
+            result.residual_bound = settings.residual_tolerance *
+                                    std::max(free_length, scale * max_reaction);
+            const Residuals residuals = residuals_of(u, r, mu, scale);
+            if (residuals.complementarity <= result.residual_bound &&
+                residuals.friction <= result.residual_bound)
+              {
+                result.outcome = Outcome::converged;
+                break;
+              }
+          }
+      }
+
+    // 4. Report on exactly what is returned.
+    std::ostringstream message;
+    if (result.outcome == Outcome::diverged)
+      {
+        r          = initial_r;
+        u_is_exact = false;
+        message << "BiPotentialSolver: the iteration diverged at sweep "
+                << result.sweeps
+                << "; the starting reactions are returned. Is W positive "
+                   "semi-definite? With friction, try a smaller beta or "
+                   "RhoChoice::largest_diagonal_compliance.";
+      }
+    if (!u_is_exact)
+      compute_displacement(W, u_free, r, u);
+    result.residuals = residuals_of(u, r, mu, scale);
+    if (result.residual_bound == 0.)
+      result.residual_bound = settings.residual_tolerance *
+                              std::max(free_length, scale * max_norm(r));
+    result.converged    = result.outcome == Outcome::converged;
+    result.displacement = std::move(u);
+    result.status.resize(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      result.status[k] = classify(r[k], mu[k]);
+
+    if (result.outcome == Outcome::converged)
+      message << "BiPotentialSolver: converged in " << result.sweeps
+              << " sweeps";
+    else if (result.outcome == Outcome::max_sweeps_reached)
+      {
+        message << "BiPotentialSolver: not converged after " << result.sweeps
+                << " sweeps (last change " << result.last_reaction_change
+                << ", bound " << result.reaction_change_bound << ")";
+        // The usual culprit with friction: a tangential step that cannot
+        // contract (see RhoChoice::normal_compliance).
+        unsigned int n_overshooting = 0;
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          if (mu[k] > 0. && rho[k] * W.diagonal_block(k)[t][t] >= 2.)
+            ++n_overshooting;
+        if (n_overshooting > 0)
+          message << "; " << n_overshooting
+                  << " friction node(s) have rho W_tt >= 2, so their stick "
+                     "iteration cannot contract: use a smaller beta or "
+                     "RhoChoice::largest_diagonal_compliance";
+      }
+    if (result.outcome != Outcome::diverged)
+      message << "; complementarity " << result.residuals.complementarity
+              << ", friction " << result.residuals.friction << " (bound "
+              << result.residual_bound << ")";
+    result.message = message.str();
+    return result;
+  }
+
+  BiPotentialSolver::Residuals
+  compute_contact_residuals(const ComplianceMatrix     &W,
+                            const std::vector<Vector2> &u_free,
+                            const std::vector<double>  &mu,
+                            const std::vector<Vector2> &r,
+                            const double                force_to_length_scale,
+                            std::vector<Vector2>       *displacement)
+  {
+    std::vector<Vector2> u;
+    compute_displacement(W, u_free, r, u);
+    const double scale =
+        force_to_length_scale > 0. ? force_to_length_scale : natural_scale(W);
+    const Residuals result = residuals_of(u, r, mu, scale);
+    if (displacement != nullptr)
+      *displacement = std::move(u);
+    return result;
+  }
+} // namespace glissade
