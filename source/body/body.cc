@@ -50,6 +50,7 @@ namespace glissade
     stored_solution.reinit(dofs.n_dofs());
     system_rhs.reinit(dofs.n_dofs());
     unconstrained_residual.reinit(dofs.n_dofs());
+    contact_forces.reinit(dofs.n_dofs());
 
     // The set of constrained dofs never changes during a run (only the
     // prescribed values do), so the sparsity pattern is built once.
@@ -271,6 +272,7 @@ namespace glissade
     // constrained dof a = sum_b w_b u_b + g hands its residual on to the
     // dofs b (serendipity interiors, Hermite tangential derivatives).
     Vector<double> condensed = unconstrained_residual;
+    condensed -= contact_forces;
     constraints.condense(condensed);
     for (const auto &line : constraints.get_lines())
       condensed(line.index) = 0.;
@@ -282,7 +284,16 @@ namespace glissade
   double
   Body::force_scale() const
   {
-    return std::max(internal_force_norm, external_force_norm);
+    // A stress-free motion (a rigid translation driven by prescribed
+    // displacements) has no force to compare the residual with; the floor
+    // is the force a strain of 1e-6 |u| / L would carry over the length L.
+    const double floor = 1e-6 * description.material.young_modulus *
+                         description.material.thickness *
+                         solution.linfty_norm();
+    return std::max({internal_force_norm,
+                     external_force_norm,
+                     contact_forces.l2_norm(),
+                     floor});
   }
 
 
@@ -306,6 +317,37 @@ namespace glissade
 
 
   void
+  Body::solve_homogeneous(const Vector<double> &force, Vector<double> &x) const
+  {
+    x = force;
+    constraints.condense(x);
+    for (const auto &line : constraints.get_lines())
+      x(line.index) = 0.;
+    factorization.solve(x);
+    for (const auto &line : constraints.get_lines())
+      {
+        double value = 0.;
+        for (const auto &[j, w] : line.entries)
+          value += w * x(j);
+        x(line.index) = value;
+      }
+  }
+
+
+
+  types::boundary_id
+  Body::boundary_id(const std::string &boundary, const std::string &entry) const
+  {
+    const Location where = BoundaryConditions::resolve(
+      boundary, boundary_names, mesh, description.name, entry);
+    if (where.is_vertex)
+      throw InputError(entry, "expected a boundary name, not a point");
+    return where.boundary;
+  }
+
+
+
+  void
   Body::update(const Vector<double> &increment)
   {
     solution += increment;
@@ -316,7 +358,8 @@ namespace glissade
   void
   Body::store_state()
   {
-    stored_solution = solution;
+    stored_solution       = solution;
+    stored_contact_forces = contact_forces;
   }
 
 
@@ -324,7 +367,8 @@ namespace glissade
   void
   Body::restore_state()
   {
-    solution = stored_solution;
+    solution       = stored_solution;
+    contact_forces = stored_contact_forces;
   }
 
 

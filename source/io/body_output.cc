@@ -13,14 +13,15 @@ namespace glissade
   namespace
   {
     /**
-     * The displacement vector from the value components of an element with
-     * derivative dofs (Hermite: components 0 and 3 of 6).
+     * A nodal vector field (displacement, contact force) from the value
+     * components (Hermite: components 0 and 3 of 6; Lagrange: 0 and 1).
      */
     class NodalDisplacement : public DataPostprocessorVector<2>
     {
     public:
-      explicit NodalDisplacement(const unsigned int per_dim)
-        : DataPostprocessorVector<2>("displacement", update_values)
+      explicit NodalDisplacement(const unsigned int per_dim,
+                                 const std::string &name = "displacement")
+        : DataPostprocessorVector<2>(name, update_values)
         , per_dim(per_dim)
       {}
 
@@ -61,6 +62,9 @@ namespace glissade
     else
       data_out.add_data_vector(solution, nodal_displacement);
     data_out.add_data_vector(solution, stress);
+    NodalDisplacement contact_force(per_dim, "contact_force");
+    if (contact_forces.linfty_norm() > 0.)
+      data_out.add_data_vector(contact_forces, contact_force);
     const unsigned int degree =
       per_dim == 1 ? element_space->finite_element().degree : 1;
     data_out.build_patches(element_space->mapping(),

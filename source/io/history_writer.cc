@@ -6,10 +6,11 @@
 namespace glissade
 {
   HistoryWriter::HistoryWriter(
-    const std::vector<std::string>           &items,
-    const std::vector<std::unique_ptr<Body>> &bodies,
-    const std::string                        &filename,
-    const std::string                        &source)
+    const std::vector<std::string>                  &items,
+    const std::vector<std::unique_ptr<Body>>        &bodies,
+    const std::vector<std::unique_ptr<ContactPair>> &pairs,
+    const std::string                                &filename,
+    const std::string                                &source)
     : filename(filename)
   {
     columns = {"increment", "time", "newton_iterations"};
@@ -26,6 +27,48 @@ namespace glissade
                                 ',');
         if (args.empty())
           throw InputError(entry, "'" + item + "' names no body");
+        const ContactPair *pair = nullptr;
+        for (const auto &p : pairs)
+          if (p->name() == args[0])
+            pair = p.get();
+        if (kind == "contact_force" && pair != nullptr && args.size() == 1)
+          {
+            columns.push_back(args[0] + ":Fx");
+            columns.push_back(args[0] + ":Fy");
+            columns.push_back(args[0] + ":active_nodes");
+            evaluators.emplace_back([pair](std::vector<double> &row) {
+              const Tensor<1, 2> f = pair->total_force();
+              row.push_back(f[0]);
+              row.push_back(f[1]);
+              row.push_back(pair->n_active());
+            });
+            continue;
+          }
+        if (kind == "contact_node" && pair != nullptr && args.size() == 2)
+          {
+            double x, y;
+            if (!text::parse_point_location(args[1], x, y))
+              throw InputError(entry, "'" + item + "': expected point(x, y)");
+            const Point<2> X(x, y);
+            if (pair->node_at(X).reference_position.distance(X) > 1e-8 * (1. + X.norm()))
+              throw InputError(entry,
+                               "'" + item + "': no slave node of pair '" +
+                                 args[0] + "' at that reference position");
+            std::string label = args[1].substr(6, args[1].size() - 7);
+            for (char &c : label)
+              if (c == ',')
+                c = ' ';
+            for (const std::string q : {"r_n", "r_t", "|f|", "gap"})
+              columns.push_back(args[0] + ":" + q + "(" + label + ")");
+            evaluators.emplace_back([pair, X](std::vector<double> &row) {
+              const ContactNode &node = pair->node_at(X);
+              row.push_back(node.reaction[1]);
+              row.push_back(node.reaction[0]);
+              row.push_back(node.force().norm());
+              row.push_back(node.gap);
+            });
+            continue;
+          }
         const Body *body = nullptr;
         for (const auto &b : bodies)
           if (b->name() == args[0])
@@ -100,7 +143,8 @@ namespace glissade
                            "cannot read '" + item +
                              "' (known: displacement(body, point(x, y)), "
                              "max_displacement(body), reaction(body, "
-                             "boundary))");
+                             "boundary), contact_force(pair), "
+                             "contact_node(pair, point(x, y)))");
       }
   }
 

@@ -6,6 +6,7 @@
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/scene/scene_reader.h>
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <map>
@@ -258,6 +259,122 @@ namespace glissade
       prm.leave_subsection();
     }
 
+    void
+    declare_contact(ParameterHandler &prm)
+    {
+      prm.declare_entry("Slave body", "", Patterns::Anything(),
+                        "The body whose boundary nodes are the slave nodes.");
+      prm.declare_entry("Slave boundary", "", Patterns::Anything(),
+                        "The declared contact area on the slave body.");
+      prm.declare_entry("Master body", "rigid", Patterns::Anything(),
+                        "The body that carries the master surface, or "
+                        "'rigid' for an analytic obstacle (subsection "
+                        "Obstacle).");
+      prm.declare_entry("Master boundary", "", Patterns::Anything(),
+                        "The declared contact area on the master body.");
+      prm.declare_entry(
+        "Surface",
+        "faceted",
+        Patterns::Selection("faceted|bspline|hermite"),
+        "Representation of the master surface: faceted (the element edges, "
+        "the paper's Q4), bspline (cubic uniform interpolating B-spline "
+        "through the master nodes, closed if the boundary is), hermite (the "
+        "C1 edges of a Hermite master body).");
+      prm.declare_entry(
+        "Force transfer",
+        "segment",
+        Patterns::Selection("segment|spline"),
+        "How a B-spline master receives the reaction: segment hands it to "
+        "the two nodes of the underlying straight segment (the paper); "
+        "spline uses the spline's own weights (consistent, symmetric W).");
+      prm.declare_entry("Alert distance", "0", Patterns::Double(0.),
+                        "Slave nodes farther than this from the master at the "
+                        "start of an increment are left out of the condensed "
+                        "problem.");
+      prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
+                        "Coulomb's mu (0: frictionless).");
+      prm.declare_entry("Beta", "1", Patterns::Double(0.),
+                        "Bi-potential parameter in (0, 2): rho_k = beta / "
+                        "W_kk(nn).");
+      prm.declare_entry("Tolerance", "1e-10", Patterns::Double(0.),
+                        "Relative tolerance of the local solver.");
+      prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
+                        "Gauss-Seidel sweeps of the local solver.");
+      prm.enter_subsection("Obstacle");
+      prm.declare_entry("Type", "line", Patterns::Selection("line|disk|hole"),
+                        "line: the half-plane behind a line; disk: a solid "
+                        "disk; hole: the outside of a circular hole.");
+      prm.declare_entry("Point", "0, 0", Patterns::Anything(),
+                        "line: a point on it; disk, hole: the centre.");
+      prm.declare_entry("Normal", "0, 1", Patterns::Anything(),
+                        "line: the normal pointing out of the obstacle.");
+      prm.declare_entry("Radius", "1", Patterns::Double(0.), "disk, hole.");
+      prm.declare_entry("Motion", "0, 0", Patterns::Anything(),
+                        "Translation of the obstacle as expressions of t.");
+      prm.leave_subsection();
+    }
+
+    ContactDescription
+    parse_contact(ParameterHandler               &prm,
+                  const std::string              &name,
+                  const std::vector<std::string> &body_names,
+                  const std::string              &source)
+    {
+      ContactDescription c;
+      c.name  = name;
+      c.entry = source + ": Contact " + name;
+      c.slave_body      = prm.get("Slave body");
+      c.slave_boundary  = prm.get("Slave boundary");
+      c.master_body     = prm.get("Master body");
+      c.master_boundary = prm.get("Master boundary");
+      c.surface         = prm.get("Surface");
+      c.force_transfer  = prm.get("Force transfer");
+      c.alert_distance  = prm.get_double("Alert distance");
+      c.friction        = prm.get_double("Friction coefficient");
+      c.beta            = prm.get_double("Beta");
+      c.tolerance       = prm.get_double("Tolerance");
+      c.max_sweeps      = prm.get_integer("Maximum sweeps");
+      prm.enter_subsection("Obstacle");
+      c.obstacle       = prm.get("Type");
+      c.obstacle_point = parse_coordinates(prm.get("Point"),
+                                           c.entry + "/Obstacle/Point");
+      const Point<2> normal =
+        parse_coordinates(prm.get("Normal"), c.entry + "/Obstacle/Normal");
+      c.obstacle_normal = normal;
+      c.obstacle_radius = prm.get_double("Radius");
+      c.obstacle_motion = text::split_top_level(prm.get("Motion"), ',');
+      prm.leave_subsection();
+
+      const auto known = [&](const std::string &b) {
+        return std::find(body_names.begin(), body_names.end(), b) !=
+               body_names.end();
+      };
+      if (!known(c.slave_body))
+        throw InputError(c.entry + "/Slave body",
+                         "there is no body '" + c.slave_body + "'");
+      if (c.master_body != "rigid" && !known(c.master_body))
+        throw InputError(c.entry + "/Master body",
+                         "there is no body '" + c.master_body +
+                           "' (or use 'rigid')");
+      if (c.master_body == c.slave_body)
+        throw InputError(c.entry + "/Master body",
+                         "a body cannot be its own master");
+      if (c.slave_boundary.empty())
+        throw InputError(c.entry + "/Slave boundary", "must be given");
+      if (c.master_body != "rigid" && c.master_boundary.empty())
+        throw InputError(c.entry + "/Master boundary", "must be given");
+      if (!(c.beta > 0. && c.beta < 2.))
+        throw InputError(c.entry + "/Beta", "must lie in (0, 2)");
+      if (c.obstacle_motion.size() != 2)
+        throw InputError(c.entry + "/Obstacle/Motion",
+                         "expected two expressions 'x(t), y(t)'");
+      check_expressions(c.obstacle_motion, c.entry + "/Obstacle/Motion");
+      if (c.master_body == "rigid" && c.obstacle == "line" &&
+          normal.norm() == 0.)
+        throw InputError(c.entry + "/Obstacle/Normal", "must not be zero");
+      return c;
+    }
+
     MeshDescription
     parse_mesh(ParameterHandler &prm, const std::string &where)
     {
@@ -471,7 +588,8 @@ namespace glissade
 
   void
   SceneReader::declare_parameters(ParameterHandler               &prm,
-                                  const std::vector<std::string> &body_names)
+                                  const std::vector<std::string> &body_names,
+                                  const std::vector<std::string> &contact_names)
   {
     prm.declare_entry("Study",
                       "simulation",
@@ -485,7 +603,19 @@ namespace glissade
                       Patterns::Anything(),
                       "Comma-separated names of the bodies; each has a "
                       "subsection 'Body <name>'.");
+    prm.declare_entry("Contact pairs",
+                      "",
+                      Patterns::Anything(),
+                      "Comma-separated names of the contact pairs; each has a "
+                      "subsection 'Contact <name>'.");
     prm.leave_subsection();
+
+    for (const auto &name : contact_names)
+      {
+        prm.enter_subsection("Contact " + name);
+        declare_contact(prm);
+        prm.leave_subsection();
+      }
 
     for (const auto &name : body_names)
       {
@@ -533,7 +663,10 @@ namespace glissade
       "",
       Patterns::Anything(),
       "Columns of history.csv, ';'-separated: displacement(body, point(x, "
-      "y)), max_displacement(body), reaction(body, boundary).");
+      "y)), max_displacement(body), reaction(body, boundary), "
+      "contact_force(pair) (total force on the slave and active nodes), "
+      "contact_node(pair, point(x, y)) (r_n, r_t, |f|, gap of the slave node "
+      "at that reference position).");
     prm.declare_entry("Progress", "true", Patterns::Bool(),
                       "Print one line per increment.");
     prm.leave_subsection();
@@ -544,10 +677,17 @@ namespace glissade
   SceneDescription
   SceneReader::parse_parameters(ParameterHandler               &prm,
                                 const std::vector<std::string> &body_names,
+                                const std::vector<std::string> &contact_names,
                                 const std::string              &source)
   {
     SceneDescription scene;
     scene.source = source;
+    for (const auto &name : contact_names)
+      {
+        prm.enter_subsection("Contact " + name);
+        scene.contacts.push_back(parse_contact(prm, name, body_names, source));
+        prm.leave_subsection();
+      }
     for (const auto &name : body_names)
       {
         const std::string where = source + ": Body " + name;
@@ -618,18 +758,19 @@ namespace glissade
                            const std::string              &source,
                            const std::vector<std::string> &overrides)
   {
-    // Pass 1: the body names only.
-    std::vector<std::string> body_names;
+    // Pass 1: the body and contact pair names only.
+    std::vector<std::string> body_names, contact_names;
     {
       ParameterHandler prm;
       prm.enter_subsection("Scene");
       prm.declare_entry("Bodies", "body", Patterns::Anything());
+      prm.declare_entry("Contact pairs", "", Patterns::Anything());
       prm.leave_subsection();
       try
         {
           prm.parse_input_from_string(text_value, "", true);
           for (const auto &o : overrides)
-            if (o.rfind("Scene/Bodies=", 0) == 0)
+            if (o.rfind("Scene/", 0) == 0)
               apply_override(prm, o);
         }
       catch (const InputError &)
@@ -642,12 +783,14 @@ namespace glissade
         }
       prm.enter_subsection("Scene");
       body_names = read_body_names(prm.get("Bodies"), source);
+      contact_names =
+        Utilities::split_string_list(prm.get("Contact pairs"), ',');
       prm.leave_subsection();
     }
 
     // Pass 2: everything, strictly: an undeclared entry is an error.
     ParameterHandler prm;
-    declare_parameters(prm, body_names);
+    declare_parameters(prm, body_names, contact_names);
     try
       {
         prm.parse_input_from_string(text_value, "", false);
@@ -685,7 +828,7 @@ namespace glissade
                            "is not set: every body of Scene/Bodies needs a "
                            "'subsection Body " +
                              name + "' with at least its Mesh/Type");
-    return parse_parameters(prm, body_names, source);
+    return parse_parameters(prm, body_names, contact_names, source);
   }
 
 
@@ -731,7 +874,7 @@ namespace glissade
   SceneReader::print_parameters(std::ostream &out)
   {
     ParameterHandler prm;
-    declare_parameters(prm, {"body"});
+    declare_parameters(prm, {"body"}, {"pair"});
     prm.print_parameters(out,
                          ParameterHandler::PRM |
                            ParameterHandler::KeepDeclarationOrder);

@@ -19,11 +19,13 @@ namespace glissade
     for (const auto &description : scene.bodies)
       all_bodies.push_back(std::make_unique<Body>(description, scene.source));
     pvd_records.resize(all_bodies.size());
-    history = std::make_unique<HistoryWriter>(scene.output.history,
-                                              all_bodies,
-                                              scene.output.directory +
-                                                "/history.csv",
-                                              scene.source);
+    contact_problem = std::make_unique<ContactProblem>(scene, all_bodies);
+    history         = std::make_unique<HistoryWriter>(
+      scene.output.history,
+      all_bodies,
+      contact_problem->contact_pairs(),
+      scene.output.directory + "/history.csv",
+      scene.source);
   }
 
 
@@ -45,6 +47,8 @@ namespace glissade
     const NewtonSettings &settings = scene.newton;
     for (auto &b : all_bodies)
       b->set_time(t);
+    // Detection at the start of the load step, from the current state.
+    contact_problem->begin_step(t);
 
     residual_history.clear();
     double first_residual = 0.;
@@ -70,8 +74,11 @@ namespace glissade
         const double residual = std::sqrt(residual_squared);
         if (!admissible || !std::isfinite(residual))
           return false;
-        if (iteration == 0)
-          first_residual = residual;
+        // The reference of divergence: a step driven by prescribed
+        // displacements starts from a zero residual, so take the larger of
+        // the first two.
+        if (iteration <= 1)
+          first_residual = std::max(first_residual, residual);
         const double scaled =
           scale > 0. ? residual / scale : residual;
         residual_history.push_back(scaled);
@@ -93,20 +100,32 @@ namespace glissade
         if (iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300))
           return false; // diverging
 
-        double increment_squared = 0.;
-        displacement_norm        = 0.;
-        for (auto &b : all_bodies)
+        // Predictor: the contact-free step of every body; then the contact
+        // correction on the condensed system; then the update.
+        std::vector<Vector<double>> du(all_bodies.size());
+        for (unsigned int b = 0; b < all_bodies.size(); ++b)
           {
             Timer factorization_timer;
-            b->factorize();
+            all_bodies[b]->factorize();
             stats.factorization_seconds += factorization_timer.wall_time();
-            Timer          solve_timer;
-            Vector<double> du;
-            b->solve(b->right_hand_side(), du);
-            b->update(du);
+            Timer solve_timer;
+            all_bodies[b]->solve(all_bodies[b]->right_hand_side(), du[b]);
             stats.solve_seconds += solve_timer.wall_time();
-            increment_squared += du.norm_sqr();
-            displacement_norm += b->displacement().norm_sqr();
+          }
+        if (!contact_problem->empty() && !contact_problem->correct(du))
+          {
+            if (scene.output.progress)
+              std::cout << "    contact: " << contact_problem->last_result().message
+                        << std::endl;
+            return false;
+          }
+        double increment_squared = 0.;
+        displacement_norm        = 0.;
+        for (unsigned int b = 0; b < all_bodies.size(); ++b)
+          {
+            all_bodies[b]->update(du[b]);
+            increment_squared += du[b].norm_sqr();
+            displacement_norm += all_bodies[b]->displacement().norm_sqr();
           }
         last_increment    = std::sqrt(increment_squared);
         displacement_norm = std::sqrt(displacement_norm);
@@ -181,7 +200,43 @@ namespace glissade
         DataOutBase::write_pvd_record(pvd.stream(), pvd_records[b]);
         pvd.commit();
       }
+    write_contact_table(increment);
     stats.output_seconds += timer.wall_time();
+  }
+
+
+
+  void
+  Simulation::write_contact_table(const unsigned int increment) const
+  {
+    for (const auto &pair : contact_problem->contact_pairs())
+      {
+        std::ostringstream name;
+        name << scene.output.directory << "/contact-" << pair->name() << "-"
+             << std::setw(5) << std::setfill('0') << increment << ".csv";
+        AtomicFile file(name.str());
+        file.stream() << "X,Y,x,y,active,gap,r_t,r_n,fx,fy,status\n";
+        for (const auto &node : pair->nodes())
+          {
+            const Body &slave = const_cast<ContactPair &>(*pair).slave();
+            const Tensor<1, 2> u({slave.displacement()(node.dofs[0]),
+                                  slave.displacement()(node.dofs[1])});
+            const Tensor<1, 2> f = node.active ? node.force() : Tensor<1, 2>();
+            const char *status =
+              !node.active ? "inactive" :
+              node.status == BiPotentialSolver::NodeStatus::open ? "open" :
+              node.status == BiPotentialSolver::NodeStatus::stick ? "stick" :
+                                                                     "slip";
+            file.stream() << node.reference_position[0] << ','
+                          << node.reference_position[1] << ','
+                          << node.reference_position[0] + u[0] << ','
+                          << node.reference_position[1] + u[1] << ','
+                          << node.active << ',' << node.gap << ','
+                          << node.reaction[0] << ',' << node.reaction[1] << ','
+                          << f[0] << ',' << f[1] << ',' << status << '\n';
+          }
+        file.commit();
+      }
   }
 
 
@@ -221,6 +276,10 @@ namespace glissade
                         << iterations << "  |R|/F = " << std::scientific
                         << std::setprecision(2) << residual_history.back()
                         << std::defaultfloat << std::setprecision(6)
+                        << (contact_problem->empty() ?
+                              std::string() :
+                              "  active contact nodes " +
+                                std::to_string(contact_problem->n_active()))
                         << std::endl;
             history->record(increment, t, iterations);
             const bool last = (increment == n_total);

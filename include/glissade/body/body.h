@@ -57,7 +57,10 @@ namespace glissade
     double
     residual_norm() const;
 
-    /** max(|F_int|, |F_ext|) over all dofs: the force scale of tolerances. */
+    /**
+     * max(|F_int|, |F_ext|, |F_contact|) over all dofs, floored by
+     * 1e-6 E t |u|_max: the force scale of the residual tolerance.
+     */
     double
     force_scale() const;
 
@@ -67,6 +70,40 @@ namespace glissade
     /** Solves K du = rhs; constrained dofs get their prescribed increment. */
     void
     solve(const Vector<double> &rhs, Vector<double> &increment) const;
+
+    /**
+     * The response to an external force vector f with the supports held:
+     * K x = f condensed, constrained dofs following their free ones with no
+     * prescribed part. The contact compliance columns K^-1 H^T.
+     */
+    void
+    solve_homogeneous(const Vector<double> &force, Vector<double> &x) const;
+
+    /**
+     * Contact forces acting on the body (from the last contact solve); the
+     * equilibrium residual includes them.
+     */
+    void
+    set_contact_forces(const Vector<double> &forces)
+    {
+      contact_forces = forces;
+    }
+    const Vector<double> &
+    get_contact_forces() const
+    {
+      return contact_forces;
+    }
+
+    /** The boundary id of a named boundary; `entry` names the .prm entry. */
+    types::boundary_id
+    boundary_id(const std::string &boundary, const std::string &entry) const;
+
+    /** The displacement at the start of the current step. */
+    const Vector<double> &
+    stored_displacement() const
+    {
+      return stored_solution;
+    }
 
     const Vector<double> &
     right_hand_side() const
@@ -167,6 +204,8 @@ namespace glissade
     Vector<double> stored_solution;
     Vector<double> system_rhs;       // F_ext - F_int, constrained
     Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
+    Vector<double> contact_forces;         // H^T r, all dofs
+    Vector<double> stored_contact_forces;
     double         internal_force_norm = 0.;
     double         external_force_norm = 0.;
   };

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glissade/body/body.h>
+#include <glissade/contact/contact_pair.h>
 
 #include <functional>
 #include <memory>
@@ -18,10 +19,11 @@ namespace glissade
   class HistoryWriter
   {
   public:
-    HistoryWriter(const std::vector<std::string>         &items,
-                  const std::vector<std::unique_ptr<Body>> &bodies,
-                  const std::string                       &filename,
-                  const std::string                       &source);
+    HistoryWriter(const std::vector<std::string>                  &items,
+                  const std::vector<std::unique_ptr<Body>>        &bodies,
+                  const std::vector<std::unique_ptr<ContactPair>> &pairs,
+                  const std::string                                &filename,
+                  const std::string                                &source);
 
     void
     record(const unsigned int increment,

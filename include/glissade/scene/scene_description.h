@@ -115,11 +115,39 @@ namespace glissade
     bool                     progress = true;
   };
 
+  /**
+   * A contact pair: the slave nodes of one body's boundary against a master
+   * surface, which is another body's boundary or a rigid analytic obstacle.
+   */
+  struct ContactDescription
+  {
+    std::string name;
+    std::string slave_body;
+    std::string slave_boundary;
+    std::string master_body; // "rigid" for an analytic obstacle
+    std::string master_boundary;
+    std::string surface        = "faceted"; // faceted | bspline | hermite
+    std::string force_transfer = "segment"; // B-spline: segment | spline
+    double      alert_distance = 0.;
+    double      friction       = 0.;
+    double      beta           = 1.;
+    double      tolerance      = 1e-10;
+    unsigned int max_sweeps    = 10000;
+    // Rigid obstacle.
+    std::string              obstacle = "line"; // line | disk | hole
+    Point<2>                 obstacle_point;  // line: a point; disk/hole: centre
+    Tensor<1, 2>             obstacle_normal; // line: normal pointing out of it
+    double                   obstacle_radius = 1.;
+    std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
+    std::string              entry; // "Contact <name>"
+  };
+
   /** Everything a .prm file describes. */
   struct SceneDescription
   {
-    std::string                  source; // file name, for messages
-    std::vector<BodyDescription> bodies;
+    std::string                     source; // file name, for messages
+    std::vector<BodyDescription>    bodies;
+    std::vector<ContactDescription> contacts;
     LoadProgram                  load_program;
     NewtonSettings               newton;
     OutputSettings               output;

@@ -53,11 +53,13 @@ namespace glissade
   private:
     static void
     declare_parameters(ParameterHandler               &prm,
-                       const std::vector<std::string> &body_names);
+                       const std::vector<std::string> &body_names,
+                       const std::vector<std::string> &contact_names);
 
     static SceneDescription
     parse_parameters(ParameterHandler               &prm,
                      const std::vector<std::string> &body_names,
+                     const std::vector<std::string> &contact_names,
                      const std::string              &source);
   };
 } // namespace glissade

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glissade/body/body.h>
+#include <glissade/contact/contact_problem.h>
 #include <glissade/io/history_writer.h>
 #include <glissade/scene/scene_description.h>
 
@@ -59,6 +60,12 @@ namespace glissade
       return all_bodies;
     }
 
+    ContactProblem &
+    contact()
+    {
+      return *contact_problem;
+    }
+
     /** Scaled residuals |R|/scale of the Newton iterations of the last step. */
     const std::vector<double> &
     last_residuals() const
@@ -89,8 +96,13 @@ namespace glissade
     void
     write_output(const unsigned int increment, const double t);
 
+    /** contact-<pair>-<increment>.csv: every slave node's state. */
+    void
+    write_contact_table(const unsigned int increment) const;
+
     const SceneDescription             scene;
     std::vector<std::unique_ptr<Body>> all_bodies;
+    std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
     std::vector<double>                residual_history;

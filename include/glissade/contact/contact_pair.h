@@ -1,0 +1,167 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+
+#include <glissade/body/body.h>
+#include <glissade/contact/bipotential_solver.h>
+#include <glissade/contact/master_curve.h>
+#include <glissade/contact/rigid_obstacle.h>
+#include <glissade/scene/scene_description.h>
+
+#include <memory>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * One term of a linear map from the bodies' dof increments to a 2D
+   * displacement: component `component` receives weight * du[dof] of body
+   * `body` (0: slave, 1: master).
+   */
+  struct DofWeight
+  {
+    unsigned int            body;
+    types::global_dof_index dof;
+    unsigned int            component;
+    double                  weight;
+  };
+
+  /** A slave node and its contact state. */
+  struct ContactNode
+  {
+    unsigned int                           vertex;
+    std::array<types::global_dof_index, 2> dofs;
+    Point<2>                               reference_position;
+
+    bool         active = false;
+    bool         projected = false; // has a counterpart on the master
+    double       gap    = 0.;
+    Tensor<1, 2> tangent, normal;
+    /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
+    std::array<double, 2>         reaction = {{0., 0.}};
+    BiPotentialSolver::NodeStatus status   = BiPotentialSolver::NodeStatus::open;
+    /**
+     * The slave's displacement relative to the master point, as a map of
+     * the dofs (kinematics: how the gap moves), and the map that hands the
+     * reaction to the dofs (forces: the same, or the paper's two segment
+     * nodes for a B-spline master).
+     */
+    std::vector<DofWeight> kinematics, forces;
+
+    Tensor<1, 2>
+    force() const
+    {
+      return reaction[0] * tangent + reaction[1] * normal;
+    }
+  };
+
+  /**
+   * A contact pair: the nodes of a slave boundary against a master surface
+   * (another body's boundary seen through a MasterCurve, or a rigid
+   * obstacle), node-to-segment.
+   *
+   * At the start of each increment begin_step() builds the master surface
+   * from the current positions and keeps, as the active set, the slave
+   * nodes within the alert distance (paper, section 2.3): the others are
+   * not part of the condensed problem of that increment. In every Newton
+   * iteration update_geometry() rebuilds the surface and re-projects the
+   * active nodes: frame, gap and the dof maps.
+   */
+  class ContactPair
+  {
+  public:
+    ContactPair(const ContactDescription &description,
+                Body                     &slave,
+                Body                     *master,
+                const std::string        &source);
+
+    const std::string &
+    name() const
+    {
+      return description.name;
+    }
+
+    const ContactDescription &
+    settings() const
+    {
+      return description;
+    }
+
+    void
+    begin_step(const double time);
+
+    void
+    update_geometry();
+
+    std::vector<ContactNode> &
+    nodes()
+    {
+      return slave_nodes;
+    }
+
+    const std::vector<ContactNode> &
+    nodes() const
+    {
+      return slave_nodes;
+    }
+
+    Body &
+    slave()
+    {
+      return slave_body;
+    }
+
+    /** nullptr for a rigid obstacle. */
+    Body *
+    master()
+    {
+      return master_body;
+    }
+
+    unsigned int
+    n_active() const;
+
+    /** Sum of the forces on the slave nodes (global frame). */
+    Tensor<1, 2>
+    total_force() const;
+
+    /** The slave node at a reference position (for history output). */
+    const ContactNode &
+    node_at(const Point<2> &reference_position) const;
+
+  private:
+    /** Ordered chain of the master boundary's vertices (master on the right). */
+    void
+    build_master_chain(const std::string &source);
+
+    /** Rebuilds the master curve from the current displacement. */
+    void
+    update_master_curve();
+
+    /** Projects one slave node at the current state; false if no counterpart. */
+    bool
+    project(ContactNode &node) const;
+
+    Point<2>
+    current_position(const Body &body, const std::array<types::global_dof_index, 2> &dofs,
+                     const Point<2> &X) const;
+
+    const ContactDescription       description;
+    Body                          &slave_body;
+    Body                          *master_body;
+    std::unique_ptr<RigidObstacle> obstacle;
+    std::unique_ptr<MasterCurve>   curve;
+    std::vector<ContactNode>       slave_nodes;
+    double                         time = 0.;
+
+    // Master chain: node vertices, their reference positions and value
+    // dofs; for Hermite masters also the derivative dofs (x/y, d/dx, d/dy
+    // per component) and, per segment, the reference tangents dX/ds at its
+    // two ends (s in [0, 1] along the segment).
+    bool                                                closed = false;
+    std::vector<Point<2>>                               master_points;
+    std::vector<std::array<types::global_dof_index, 2>> master_dofs;
+    std::vector<std::array<types::global_dof_index, 6>> master_hermite_dofs;
+    std::vector<std::array<Tensor<1, 2>, 2>>            segment_reference_tangents;
+  };
+} // namespace glissade

@@ -1,0 +1,80 @@
+#pragma once
+
+#include <glissade/body/body.h>
+#include <glissade/contact/bipotential_solver.h>
+#include <glissade/contact/contact_pair.h>
+#include <glissade/scene/scene_description.h>
+
+#include <memory>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * The contact part of a Newton iteration, on the system condensed to the
+   * active contact nodes (paper eq. 8-10, shared/design/CONTACT_ALGORITHM.md):
+   *
+   * given each body's free step du_lib = K^-1 (F_ext - F_int), it
+   * re-projects the active nodes, forms their free relative displacement
+   * u_free = H du_lib (+ the gap, + the slip since the increment began), the
+   * compliance W = H K^-1 H^T (two back-substitutions per active node and
+   * deformable body: a rigid obstacle adds nothing), solves the bi-potential
+   * local problem for the reactions r, and returns the corrected step
+   * du = du_lib + K^-1 H^T r. The contact forces H^T r are handed to the
+   * bodies for their equilibrium residual.
+   */
+  class ContactProblem
+  {
+  public:
+    ContactProblem(const SceneDescription                   &scene,
+                   const std::vector<std::unique_ptr<Body>> &bodies);
+
+    bool
+    empty() const
+    {
+      return pairs.empty();
+    }
+
+    /** Detection at the start of an increment (alert distance). */
+    void
+    begin_step(const double time);
+
+    /**
+     * `increments[b]` holds body b's du_lib on entry and its corrected du on
+     * exit; the bodies must be factorised. Returns false if the local
+     * solver failed (the step is then cut back).
+     */
+    bool
+    correct(std::vector<Vector<double>> &increments);
+
+    unsigned int
+    n_active() const;
+
+    /** Sweeps and outcome of the last local solve. */
+    const BiPotentialSolver::Result &
+    last_result() const
+    {
+      return result;
+    }
+
+    std::vector<std::unique_ptr<ContactPair>> &
+    contact_pairs()
+    {
+      return pairs;
+    }
+
+    /** Local solve and compliance timings, accumulated. */
+    double compliance_seconds = 0.;
+    double local_solve_seconds = 0.;
+    double detection_seconds = 0.;
+
+  private:
+    /** Index of a body in the simulation's list. */
+    unsigned int
+    body_index(const Body *body) const;
+
+    const std::vector<std::unique_ptr<Body>> &bodies;
+    std::vector<std::unique_ptr<ContactPair>> pairs;
+    BiPotentialSolver::Result                 result;
+  };
+} // namespace glissade

@@ -1,0 +1,397 @@
+#include <glissade/base/input_error.h>
+#include <glissade/contact/bspline_curve.h>
+#include <glissade/contact/contact_pair.h>
+#include <glissade/contact/faceted_curve.h>
+#include <glissade/contact/hermite_curve.h>
+#include <glissade/fe/hermite_space.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace glissade
+{
+  ContactPair::ContactPair(const ContactDescription &description,
+                           Body                     &slave,
+                           Body                     *master,
+                           const std::string        &source)
+    : description(description)
+    , slave_body(slave)
+    , master_body(master)
+  {
+    const std::string entry = description.entry;
+    if (master_body == nullptr)
+      obstacle = std::make_unique<RigidObstacle>(description);
+
+    // The slave nodes: the vertices of the declared contact area.
+    const types::boundary_id slave_id =
+      slave.boundary_id(description.slave_boundary, entry + "/Slave boundary");
+    std::set<unsigned int> seen;
+    for (const auto &cell : slave.dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == slave_id)
+          for (const unsigned int v : {0u, 1u})
+            {
+              const unsigned int vertex = cell->face(f)->vertex_index(v);
+              if (!seen.insert(vertex).second)
+                continue;
+              ContactNode node;
+              node.vertex             = vertex;
+              node.reference_position = cell->face(f)->vertex(v);
+              node.dofs               = BoundaryConditions::vertex_dofs(
+                slave.dof_handler(), slave.space(), vertex);
+              slave_nodes.push_back(node);
+            }
+
+    if (master_body == nullptr)
+      return;
+
+    build_master_chain(source);
+    if (description.surface == "faceted")
+      curve = std::make_unique<FacetedCurve>(closed);
+    else if (description.surface == "bspline")
+      curve = std::make_unique<BSplineCurve>(
+        closed ? BSplineCurve::EndCondition::periodic :
+                 BSplineCurve::EndCondition::double_vertex);
+    else
+      {
+        if (master_body->space().name() != "hermite")
+          throw InputError(entry + "/Surface",
+                           "a hermite surface needs a master body of "
+                           "Hermite elements (body '" +
+                             master_body->name() + "' uses " +
+                             master_body->space().name() + ")");
+        curve = std::make_unique<HermiteCurve>(closed);
+      }
+    const unsigned int minimum = closed ? 3 : 2;
+    if (master_points.size() < minimum)
+      throw InputError(entry + "/Master boundary",
+                       "the master boundary has too few nodes for a curve");
+  }
+
+
+
+  void
+  ContactPair::build_master_chain(const std::string &)
+  {
+    const std::string entry = description.entry + "/Master boundary";
+    const types::boundary_id id =
+      master_body->boundary_id(description.master_boundary, entry);
+
+    struct Face
+    {
+      unsigned int                            v0, v1;
+      typename DoFHandler<2>::active_cell_iterator cell;
+      unsigned int                            face;
+    };
+    std::vector<Face>                                  faces;
+    std::map<unsigned int, std::vector<unsigned int>> at_vertex;
+    for (const auto &cell : master_body->dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+          {
+            faces.push_back({cell->face(f)->vertex_index(0),
+                             cell->face(f)->vertex_index(1),
+                             cell,
+                             f});
+            at_vertex[faces.back().v0].push_back(faces.size() - 1);
+            at_vertex[faces.back().v1].push_back(faces.size() - 1);
+          }
+
+    // Walk the faces as one chain: from an end if the boundary is open.
+    unsigned int start = faces[0].v0, n_ends = 0;
+    for (const auto &[vertex, list] : at_vertex)
+      {
+        if (list.size() > 2)
+          throw InputError(entry,
+                           "the master boundary branches (more than two "
+                           "faces at a vertex): it must be one curve");
+        if (list.size() == 1)
+          {
+            if (n_ends == 0)
+              start = vertex;
+            ++n_ends;
+          }
+      }
+    closed = (n_ends == 0);
+    std::vector<unsigned int> chain = {start};
+    std::vector<unsigned int> chain_faces;
+    std::vector<bool>         used(faces.size(), false);
+    while (true)
+      {
+        int next_face = -1;
+        for (const unsigned int f : at_vertex[chain.back()])
+          if (!used[f])
+            next_face = f;
+        if (next_face < 0)
+          break;
+        used[next_face] = true;
+        chain_faces.push_back(next_face);
+        const Face &face = faces[next_face];
+        chain.push_back(face.v0 == chain.back() ? face.v1 : face.v0);
+      }
+    if (chain_faces.size() != faces.size())
+      throw InputError(entry,
+                       "the master boundary is not connected: it must be "
+                       "one curve");
+    if (closed)
+      chain.pop_back(); // the walk came back to its start
+
+    // The master body must lie to the right of the direction of travel,
+    // so that n = e3 x t points out of it.
+    const auto  &vertices = master_body->triangulation().get_vertices();
+    const Face  &first    = faces[chain_faces[0]];
+    const Tensor<1, 2> t  = vertices[chain[1]] - vertices[chain[0]];
+    const Tensor<1, 2> outward =
+      first.cell->face(first.face)->center() - first.cell->center();
+    if (-t[1] * outward[0] + t[0] * outward[1] < 0.)
+      {
+        std::reverse(chain.begin(), chain.end());
+        std::reverse(chain_faces.begin(), chain_faces.end());
+        if (closed)
+          {
+            // Keep segment i joining chain[i] and chain[i + 1]: after the
+            // reversal the closing face comes first.
+            std::rotate(chain_faces.begin(), chain_faces.begin() + 1,
+                        chain_faces.end());
+          }
+      }
+
+    for (const unsigned int v : chain)
+      {
+        master_points.push_back(vertices[v]);
+        master_dofs.push_back(BoundaryConditions::vertex_dofs(
+          master_body->dof_handler(), master_body->space(), v));
+      }
+
+    // Hermite masters: derivative dofs and reference tangents per segment.
+    const auto *hermite =
+      dynamic_cast<const HermiteSpace *>(&master_body->space());
+    if (hermite == nullptr)
+      return;
+    const FiniteElement<2> &fe = master_body->space().finite_element();
+    master_hermite_dofs.resize(chain.size());
+    for (unsigned int i = 0; i < chain_faces.size(); ++i)
+      {
+        const Face        &face = faces[chain_faces[i]];
+        const unsigned int a    = i, b = (i + 1) % chain.size();
+        const auto edge = HermiteQuadrilateral::edge_from_dealii_face(face.face);
+        const auto ends = HermiteQuadrilateral::edge_nodes(edge.edge);
+        const auto dir  = HermiteQuadrilateral::edge_reference_direction(edge.edge);
+        const auto &element = hermite->element(face.cell->active_cell_index());
+        std::array<Tensor<1, 2>, 2> tangent_at_end;
+        for (unsigned int e = 0; e < 2; ++e)
+          {
+            const auto ref = HermiteQuadrilateral::node_reference_point(ends[e]);
+            const auto J   = element.jacobian(ref[0], ref[1]);
+            // d/ds on [-1, 1] -> d/dsigma on [0, 1]: a factor 2.
+            tangent_at_end[e] =
+              2. * Tensor<1, 2>({J[0][0] * dir[0] + J[0][1] * dir[1],
+                                 J[1][0] * dir[0] + J[1][1] * dir[1]});
+            const unsigned int v = HermiteQuadrilateral::dealii_vertex_from_node(ends[e]);
+            const unsigned int chain_index =
+              face.cell->vertex_index(v) == chain[a] ? a : b;
+            for (unsigned int k = 0; k < 6; ++k)
+              master_hermite_dofs[chain_index]
+                                 [fe.system_to_component_index(v * 6 + k).first] =
+                face.cell->vertex_dof_index(v, k);
+          }
+        const bool same_direction =
+          face.cell->vertex_index(
+            HermiteQuadrilateral::dealii_vertex_from_node(ends[0])) == chain[a];
+        segment_reference_tangents.push_back(
+          same_direction ?
+            std::array<Tensor<1, 2>, 2>{{tangent_at_end[0], tangent_at_end[1]}} :
+            std::array<Tensor<1, 2>, 2>{{-tangent_at_end[1], -tangent_at_end[0]}});
+      }
+  }
+
+
+
+  Point<2>
+  ContactPair::current_position(
+    const Body                                   &body,
+    const std::array<types::global_dof_index, 2> &dofs,
+    const Point<2>                               &X) const
+  {
+    return X + Tensor<1, 2>({body.displacement()(dofs[0]),
+                             body.displacement()(dofs[1])});
+  }
+
+
+
+  void
+  ContactPair::update_master_curve()
+  {
+    std::vector<MasterCurve::Point> points;
+    for (unsigned int j = 0; j < master_points.size(); ++j)
+      {
+        const Point<2> x =
+          current_position(*master_body, master_dofs[j], master_points[j]);
+        points.push_back({{x[0], x[1]}});
+      }
+    if (description.surface != "hermite")
+      {
+        curve->update(points);
+        return;
+      }
+    // Deformed tangents d = (I + grad u) T at both ends of each segment.
+    const Vector<double> &u = master_body->displacement();
+    std::vector<std::array<MasterCurve::Point, 2>> tangents;
+    for (unsigned int i = 0; i < segment_reference_tangents.size(); ++i)
+      {
+        std::array<MasterCurve::Point, 2> pair;
+        for (unsigned int e = 0; e < 2; ++e)
+          {
+            const unsigned int  node = (i + e) % master_points.size();
+            const Tensor<1, 2> &T    = segment_reference_tangents[i][e];
+            const auto         &d    = master_hermite_dofs[node];
+            for (unsigned int c = 0; c < 2; ++c)
+              pair[e][c] = T[c] + u(d[3 * c + 1]) * T[0] + u(d[3 * c + 2]) * T[1];
+          }
+        tangents.push_back(pair);
+      }
+    static_cast<HermiteCurve &>(*curve).update(points, tangents);
+  }
+
+
+
+  bool
+  ContactPair::project(ContactNode &node) const
+  {
+    const Point<2> x =
+      current_position(slave_body, node.dofs, node.reference_position);
+    node.kinematics.clear();
+    for (unsigned int c = 0; c < 2; ++c)
+      node.kinematics.push_back({0, node.dofs[c], c, 1.});
+
+    if (obstacle)
+      {
+        const auto p = obstacle->project(x, time);
+        node.tangent = p.tangent;
+        node.normal  = p.normal;
+        node.gap     = p.gap;
+        node.forces  = node.kinematics;
+        return true;
+      }
+
+    const auto p = curve->project({{x[0], x[1]}});
+    if (!p.valid)
+      return false;
+    node.tangent = Tensor<1, 2>({p.tangent[0], p.tangent[1]});
+    node.normal  = Tensor<1, 2>({p.normal[0], p.normal[1]});
+    node.gap     = p.gap;
+
+    MasterCurve::NodeWeights weights;
+    curve->weights(p.segment, p.s, weights);
+    for (const auto &[j, phi] : weights)
+      for (unsigned int c = 0; c < 2; ++c)
+        node.kinematics.push_back({1, master_dofs[j][c], c, -phi});
+    if (description.surface == "hermite")
+      {
+        // The tangent data d = (I + grad u) T enter with H10, H11.
+        const auto ends = curve->segment_nodes(p.segment);
+        const auto h    = static_cast<const HermiteCurve &>(*curve)
+                         .tangent_weights(p.segment, p.s);
+        for (unsigned int e = 0; e < 2; ++e)
+          {
+            const Tensor<1, 2> &T = segment_reference_tangents[p.segment][e];
+            const auto         &d = master_hermite_dofs[ends[e]];
+            for (unsigned int c = 0; c < 2; ++c)
+              for (unsigned int k = 0; k < 2; ++k)
+                node.kinematics.push_back({1, d[3 * c + 1 + k], c, -h[e] * T[k]});
+          }
+      }
+
+    node.forces.clear();
+    if (description.surface == "bspline" && description.force_transfer == "segment")
+      {
+        // The paper: the reaction goes to the two nodes of the straight
+        // segment under the spline point.
+        for (unsigned int c = 0; c < 2; ++c)
+          node.forces.push_back({0, node.dofs[c], c, 1.});
+        for (const auto &[j, phi] :
+             curve->underlying_segment_weights(p.segment, p.s))
+          for (unsigned int c = 0; c < 2; ++c)
+            node.forces.push_back({1, master_dofs[j][c], c, -phi});
+      }
+    else
+      node.forces = node.kinematics;
+    return true;
+  }
+
+
+
+  void
+  ContactPair::begin_step(const double new_time)
+  {
+    time = new_time;
+    if (curve)
+      update_master_curve();
+    for (auto &node : slave_nodes)
+      {
+        node.projected = project(node);
+        node.active =
+          node.projected && node.gap <= description.alert_distance;
+        if (!node.active)
+          {
+            node.reaction = {{0., 0.}};
+            node.status   = BiPotentialSolver::NodeStatus::open;
+          }
+      }
+  }
+
+
+
+  void
+  ContactPair::update_geometry()
+  {
+    if (curve)
+      update_master_curve();
+    for (auto &node : slave_nodes)
+      if (node.active && !project(node))
+        {
+          // Slid off an open master: out of contact for the rest of the step.
+          node.active   = false;
+          node.reaction = {{0., 0.}};
+          node.status   = BiPotentialSolver::NodeStatus::open;
+        }
+  }
+
+
+
+  unsigned int
+  ContactPair::n_active() const
+  {
+    unsigned int n = 0;
+    for (const auto &node : slave_nodes)
+      n += node.active ? 1 : 0;
+    return n;
+  }
+
+
+
+  Tensor<1, 2>
+  ContactPair::total_force() const
+  {
+    Tensor<1, 2> sum;
+    for (const auto &node : slave_nodes)
+      if (node.active)
+        sum += node.force();
+    return sum;
+  }
+
+
+
+  const ContactNode &
+  ContactPair::node_at(const Point<2> &X) const
+  {
+    const ContactNode *best = &slave_nodes[0];
+    for (const auto &node : slave_nodes)
+      if (node.reference_position.distance(X) <
+          best->reference_position.distance(X))
+        best = &node;
+    return *best;
+  }
+} // namespace glissade
