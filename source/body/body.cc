@@ -286,8 +286,9 @@ namespace glissade
   {
     // A stress-free motion (a rigid translation driven by prescribed
     // displacements) has no force to compare the residual with; the floor
-    // is the force a strain of 1e-6 |u| / L would carry over the length L.
-    const double floor = 1e-6 * description.material.young_modulus *
+    // is the force a strain of 1e-4 |u| / L would carry over the length L
+    // (round-off of a rigid motion stays 1e-12 (L / h) below it).
+    const double floor = 1e-4 * description.material.young_modulus *
                          description.material.thickness *
                          solution.linfty_norm();
     return std::max({internal_force_norm,
@@ -433,7 +434,8 @@ namespace glissade
         const auto d =
           BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
         return Tensor<1, 2>(
-          {unconstrained_residual(d[0]), unconstrained_residual(d[1])});
+          {unconstrained_residual(d[0]) - contact_forces(d[0]),
+           unconstrained_residual(d[1]) - contact_forces(d[1])});
       }
     const FiniteElement<2>              &fe = element_space->finite_element();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -456,7 +458,8 @@ namespace glissade
                     fe.face_system_to_component_index(k).first;
                   if (k_component % per_dim == 0)
                     sum[k_component / per_dim] +=
-                      unconstrained_residual(face_dofs[k]);
+                      unconstrained_residual(face_dofs[k]) -
+                      contact_forces(face_dofs[k]);
                 }
           }
     return sum;

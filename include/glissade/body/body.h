@@ -59,7 +59,7 @@ namespace glissade
 
     /**
      * max(|F_int|, |F_ext|, |F_contact|) over all dofs, floored by
-     * 1e-6 E t |u|_max: the force scale of the residual tolerance.
+     * 1e-4 E t |u|_max: the force scale of the residual tolerance.
      */
     double
     force_scale() const;
@@ -135,7 +135,10 @@ namespace glissade
     double
     max_displacement() const;
 
-    /** Sum of the support forces on a named boundary (F_int - F_ext). */
+    /**
+     * Sum of F_int - F_ext - F_contact over the dofs of a named boundary:
+     * on supported dofs, the force the support exerts on the body.
+     */
     Tensor<1, 2>
     reaction(const std::string &boundary) const;
 
