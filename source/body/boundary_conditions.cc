@@ -6,6 +6,7 @@
 #include <glissade/body/boundary_conditions.h>
 
 #include <cmath>
+#include <set>
 #include <sstream>
 
 namespace glissade
@@ -140,29 +141,37 @@ namespace glissade
 
 
   std::array<types::global_dof_index, 2>
+  BoundaryConditions::cell_vertex_dofs(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    const unsigned int                                  v,
+    const ElementSpace                                 &space)
+  {
+    // System component k moves displacement component k / per_dim;
+    // k % per_dim == 0 is the nodal value, the rest derivatives.
+    const FiniteElement<2> &fe      = cell->get_fe();
+    const unsigned int      per_dim = space.components_per_displacement();
+    std::array<types::global_dof_index, 2> dofs;
+    for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
+      {
+        const unsigned int local     = v * fe.n_dofs_per_vertex() + k;
+        const unsigned int component = fe.system_to_component_index(local).first;
+        if (component % per_dim == 0)
+          dofs[component / per_dim] = cell->vertex_dof_index(v, k);
+      }
+    return dofs;
+  }
+
+
+
+  std::array<types::global_dof_index, 2>
   BoundaryConditions::vertex_dofs(const DoFHandler<2> &dof_handler,
                                   const ElementSpace  &space,
                                   const unsigned int   vertex)
   {
-    const FiniteElement<2> &fe      = dof_handler.get_fe();
-    const unsigned int      per_dim = space.components_per_displacement();
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
         if (cell->vertex_index(v) == vertex)
-          {
-            // System component k moves displacement component k / per_dim;
-            // k % per_dim == 0 is the nodal value, the rest derivatives.
-            std::array<types::global_dof_index, 2> dofs;
-            for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
-              {
-                const unsigned int local = v * fe.n_dofs_per_vertex() + k;
-                const unsigned int component =
-                  fe.system_to_component_index(local).first;
-                if (component % per_dim == 0)
-                  dofs[component / per_dim] = cell->vertex_dof_index(v, k);
-              }
-            return dofs;
-          }
+          return cell_vertex_dofs(cell, v, space);
     Assert(false, ExcInternalError());
     return {};
   }
@@ -217,6 +226,8 @@ namespace glissade
                   n.kind == NeumannDescription::Kind::point_load);
         if (n.kind == NeumannDescription::Kind::point_load)
           point_loads.push_back({where, make_parser(n.expressions)});
+        else if (n.kind == NeumannDescription::Kind::nodal_loads)
+          nodal_loads.push_back({where, make_parser(n.expressions)});
         else
           loads_on_boundaries.push_back(
             {where.boundary,
@@ -321,6 +332,26 @@ namespace glissade
                                       const double         time,
                                       Vector<double>      &forces) const
   {
+    for (const auto &load : nodal_loads)
+      {
+        load.force->set_time(time);
+        std::set<unsigned int> done;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == load.where.boundary)
+              for (const unsigned int v : {0u, 1u})
+                {
+                  const unsigned int vertex = cell->face(f)->vertex_index(v);
+                  if (!done.insert(vertex).second)
+                    continue;
+                  const Point<2> X    = cell->face(f)->vertex(v);
+                  const auto     dofs = cell_vertex_dofs(
+                    cell, GeometryInfo<2>::face_to_cell_vertices(f, v), space);
+                  for (unsigned int c = 0; c < 2; ++c)
+                    forces[dofs[c]] += load.force->value(X, c);
+                }
+      }
     for (const auto &load : point_loads)
       {
         load.force->set_time(time);

@@ -39,8 +39,8 @@ namespace glissade
               ContactNode node;
               node.vertex             = vertex;
               node.reference_position = cell->face(f)->vertex(v);
-              node.dofs               = BoundaryConditions::vertex_dofs(
-                slave.dof_handler(), slave.space(), vertex);
+              node.dofs = BoundaryConditions::cell_vertex_dofs(
+                cell, GeometryInfo<2>::face_to_cell_vertices(f, v), slave.space());
               slave_nodes.push_back(node);
             }
 
@@ -258,7 +258,90 @@ namespace glissade
 
 
   bool
-  ContactPair::project(ContactNode &node) const
+  ContactPair::project_on_segment(const Point<2>    &x,
+                                  const unsigned int segment,
+                                  double            &s,
+                                  const double       margin) const
+  {
+    // Newton on f(s) = (c(s) - x) . c'(s), started from the last s.
+    for (unsigned int it = 0; it < 30; ++it)
+      {
+        MasterCurve::Point c, dc, ddc;
+        curve->evaluate(segment, s, c, dc, ddc);
+        const double f  = (c[0] - x[0]) * dc[0] + (c[1] - x[1]) * dc[1];
+        const double df = dc[0] * dc[0] + dc[1] * dc[1] +
+                          (c[0] - x[0]) * ddc[0] + (c[1] - x[1]) * ddc[1];
+        if (!(df > 0.))
+          return false;
+        const double step = f / df;
+        s -= step;
+        if (s < -margin - 1e-10 || s > 1. + margin + 1e-10)
+          return false;
+        if (std::abs(step) < 1e-15)
+          break;
+      }
+    if (margin == 0.)
+      s = std::min(1., std::max(0., s));
+    return true;
+  }
+
+
+
+  void
+  ContactPair::linearize(ContactNode       &node,
+                         const Point<2>    &x,
+                         const unsigned int segment,
+                         const double       s) const
+  {
+    const auto t = curve->unit_tangent(segment, s);
+    const auto c = curve->value(segment, s);
+    node.segment = segment;
+    node.s       = s;
+    node.tangent = Tensor<1, 2>({t[0], t[1]});
+    node.normal  = Tensor<1, 2>({-t[1], t[0]});
+    node.gap     = (x[0] - c[0]) * node.normal[0] + (x[1] - c[1]) * node.normal[1];
+
+    MasterCurve::NodeWeights weights;
+    curve->weights(segment, s, weights);
+    for (const auto &[j, phi] : weights)
+      for (unsigned int c = 0; c < 2; ++c)
+        node.kinematics.push_back({1, master_dofs[j][c], c, -phi});
+    if (description.surface == "hermite")
+      {
+        // The tangent data d = (I + grad u) T enter with H10, H11.
+        const auto ends = curve->segment_nodes(segment);
+        const auto h =
+          static_cast<const HermiteCurve &>(*curve).tangent_weights(segment, s);
+        for (unsigned int e = 0; e < 2; ++e)
+          {
+            const Tensor<1, 2> &T = segment_reference_tangents[segment][e];
+            const auto         &d = master_hermite_dofs[ends[e]];
+            for (unsigned int c = 0; c < 2; ++c)
+              for (unsigned int k = 0; k < 2; ++k)
+                node.kinematics.push_back({1, d[3 * c + 1 + k], c, -h[e] * T[k]});
+          }
+      }
+
+    node.forces.clear();
+    if (description.surface == "bspline" &&
+        description.force_transfer == "segment")
+      {
+        // The paper: the reaction goes to the two nodes of the straight
+        // segment under the spline point.
+        for (unsigned int c = 0; c < 2; ++c)
+          node.forces.push_back({0, node.dofs[c], c, 1.});
+        for (const auto &[j, phi] : curve->underlying_segment_weights(segment, s))
+          for (unsigned int c = 0; c < 2; ++c)
+            node.forces.push_back({1, master_dofs[j][c], c, -phi});
+      }
+    else
+      node.forces = node.kinematics;
+  }
+
+
+
+  bool
+  ContactPair::project(ContactNode &node, const bool keep_segment) const
   {
     const Point<2> x =
       current_position(slave_body, node.dofs, node.reference_position);
@@ -276,48 +359,36 @@ namespace glissade
         return true;
       }
 
-    const auto p = curve->project({{x[0], x[1]}});
-    if (!p.valid)
-      return false;
-    node.tangent = Tensor<1, 2>({p.tangent[0], p.tangent[1]});
-    node.normal  = Tensor<1, 2>({p.normal[0], p.normal[1]});
-    node.gap     = p.gap;
-
-    MasterCurve::NodeWeights weights;
-    curve->weights(p.segment, p.s, weights);
-    for (const auto &[j, phi] : weights)
-      for (unsigned int c = 0; c < 2; ++c)
-        node.kinematics.push_back({1, master_dofs[j][c], c, -phi});
-    if (description.surface == "hermite")
+    if (keep_segment && node.segment >= 0)
       {
-        // The tangent data d = (I + grad u) T enter with H10, H11.
-        const auto ends = curve->segment_nodes(p.segment);
-        const auto h    = static_cast<const HermiteCurve &>(*curve)
-                         .tangent_weights(p.segment, p.s);
-        for (unsigned int e = 0; e < 2; ++e)
+        // A faceted segment is kept along its extension, up to half its
+        // length past either end: in the valley between two facets (a
+        // concave master vertex) the node otherwise jumps from one facet
+        // to the other at every iteration and Newton cannot converge. The
+        // choice is made afresh at the next increment.
+        double s = node.s;
+        if (project_on_segment(x,
+                               node.segment,
+                               s,
+                               description.surface == "faceted" ? 0.5 : 0.))
           {
-            const Tensor<1, 2> &T = segment_reference_tangents[p.segment][e];
-            const auto         &d = master_hermite_dofs[ends[e]];
-            for (unsigned int c = 0; c < 2; ++c)
-              for (unsigned int k = 0; k < 2; ++k)
-                node.kinematics.push_back({1, d[3 * c + 1 + k], c, -h[e] * T[k]});
+            linearize(node, x, node.segment, s);
+            return true;
           }
       }
 
-    node.forces.clear();
-    if (description.surface == "bspline" && description.force_transfer == "segment")
+    const auto p = curve->project({{x[0], x[1]}});
+    if (!p.valid)
+      return false;
+    linearize(node, x, p.segment, p.s);
+    // At a convex corner of a faceted master the curve's own normal is
+    // the average of the two segments': keep it, with that gap.
+    if (p.on_vertex)
       {
-        // The paper: the reaction goes to the two nodes of the straight
-        // segment under the spline point.
-        for (unsigned int c = 0; c < 2; ++c)
-          node.forces.push_back({0, node.dofs[c], c, 1.});
-        for (const auto &[j, phi] :
-             curve->underlying_segment_weights(p.segment, p.s))
-          for (unsigned int c = 0; c < 2; ++c)
-            node.forces.push_back({1, master_dofs[j][c], c, -phi});
+        node.tangent = Tensor<1, 2>({p.tangent[0], p.tangent[1]});
+        node.normal  = Tensor<1, 2>({p.normal[0], p.normal[1]});
+        node.gap     = p.gap;
       }
-    else
-      node.forces = node.kinematics;
     return true;
   }
 
@@ -331,7 +402,9 @@ namespace glissade
       update_master_curve();
     for (auto &node : slave_nodes)
       {
+        node.segment   = -1;
         node.projected = project(node);
+        node.gap_at_step_start = node.gap;
         node.active =
           node.projected && node.gap <= description.alert_distance;
         if (!node.active)
@@ -347,10 +420,29 @@ namespace glissade
   void
   ContactPair::update_geometry()
   {
+    if (description.frame_update == "increment")
+      {
+        // Frame and maps of the start of the increment; the gap follows
+        // linearly: g = g_0 + n . (slave - master motion since then).
+        for (auto &node : slave_nodes)
+          if (node.active)
+            {
+              Tensor<1, 2> motion;
+              for (const auto &e : node.kinematics)
+                {
+                  const Body &b = e.body == 0 ? slave_body : *master_body;
+                  motion[e.component] +=
+                    e.weight * (b.displacement()(e.dof) -
+                                b.stored_displacement()(e.dof));
+                }
+              node.gap = node.gap_at_step_start + node.normal * motion;
+            }
+        return;
+      }
     if (curve)
       update_master_curve();
     for (auto &node : slave_nodes)
-      if (node.active && !project(node))
+      if (node.active && !project(node, true))
         {
           // Slid off an open master: out of contact for the rest of the step.
           node.active   = false;

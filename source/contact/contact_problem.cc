@@ -9,6 +9,7 @@ namespace glissade
     const SceneDescription                   &scene,
     const std::vector<std::unique_ptr<Body>> &bodies)
     : bodies(bodies)
+    , columns(bodies.size())
   {
     const auto find = [&](const std::string &name) -> Body * {
       for (const auto &b : bodies)
@@ -43,7 +44,25 @@ namespace glissade
     Timer timer;
     for (auto &pair : pairs)
       pair->begin_step(time);
+    for (auto &c : columns)
+      c.clear();
     detection_seconds += timer.wall_time();
+  }
+
+
+
+  const Vector<double> &
+  ContactProblem::column(const unsigned int             body,
+                         const types::global_dof_index dof)
+  {
+    auto found = columns[body].find(dof);
+    if (found != columns[body].end())
+      return found->second;
+    Vector<double> unit(bodies[body]->n_dofs());
+    unit(dof) = 1.;
+    Vector<double> &x = columns[body][dof];
+    bodies[body]->solve_homogeneous(unit, x);
+    return x;
   }
 
 
@@ -62,6 +81,12 @@ namespace glissade
   bool
   ContactProblem::correct(std::vector<Vector<double>> &increments)
   {
+    // Columns of the current tangent: a W frozen at the increment's first
+    // iteration lets a sliding mode of faceted masters grow slowly (seen on
+    // the concentric rings), so W is formed afresh each iteration.
+    for (auto &c : columns)
+      c.clear();
+
     Timer detection;
     // The active nodes of all pairs form one condensed problem: nodes of
     // different pairs couple through the bodies they share.
@@ -104,30 +129,13 @@ namespace glissade
       return row == 0 ? node.tangent : node.normal;
     };
 
-    // Compliance columns Y = K^-1 H_force^T, two per node and body.
-    Timer                  compliance_timer;
-    const unsigned int     n = active.size();
-    std::vector<std::array<std::array<Vector<double>, 2>, 2>> Y(n);
-    for (unsigned int k = 0; k < n; ++k)
-      for (unsigned int which = 0; which < 2; ++which)
-        {
-          const unsigned int b = body_of(active[k], which);
-          if (b == numbers::invalid_unsigned_int)
-            continue;
-          for (unsigned int row = 0; row < 2; ++row)
-            {
-              Vector<double> f(bodies[b]->n_dofs());
-              for (const auto &e : active[k].node->forces)
-                if (e.body == which)
-                  f(e.dof) += frame(*active[k].node, row)[e.component] * e.weight;
-              bodies[b]->solve_homogeneous(f, Y[k][which][row]);
-            }
-        }
-
-    // W_kl = H_kin,k Y_l and u_free_k, summing over the bodies of node k.
-    ComplianceMatrix                            W;
-    std::vector<BiPotentialSolver::Vector2>     u_free(n), r(n);
-    std::vector<double>                         mu(n);
+    // W_kl = H_kin,k K^-1 H_force,l^T from the cached columns of K^-1, and
+    // u_free_k, summing over the bodies that nodes k and l share.
+    Timer                                   compliance_timer;
+    const unsigned int                      n = active.size();
+    ComplianceMatrix                        W;
+    std::vector<BiPotentialSolver::Vector2> u_free(n), r(n);
+    std::vector<double>                     mu(n);
     W.reinit(n);
     for (unsigned int k = 0; k < n; ++k)
       {
@@ -147,27 +155,35 @@ namespace glissade
           }
         u_free[k] = {{node.tangent * (slip + free_motion),
                       node.gap + node.normal * free_motion}};
-
-        for (unsigned int l = 0; l < n; ++l)
+      }
+    for (unsigned int l = 0; l < n; ++l)
+      {
+        const ContactNode &node_l = *active[l].node;
+        for (const auto &f : node_l.forces)
           {
-            ComplianceMatrix::Block block = {{{{0., 0.}}, {{0., 0.}}}};
-            bool                    coupled = false;
-            for (const auto &e : node.kinematics)
+            const unsigned int b = body_of(active[l], f.body);
+            if (b == numbers::invalid_unsigned_int)
+              continue;
+            const Vector<double> &x = column(b, f.dof);
+            for (unsigned int k = 0; k < n; ++k)
               {
-                const unsigned int b = body_of(active[k], e.body);
-                for (unsigned int which = 0; which < 2; ++which)
-                  if (body_of(active[l], which) == b)
+                const ContactNode      &node_k = *active[k].node;
+                ComplianceMatrix::Block block  = {{{{0., 0.}}, {{0., 0.}}}};
+                bool                    coupled = false;
+                for (const auto &e : node_k.kinematics)
+                  if (body_of(active[k], e.body) == b)
                     {
                       coupled = true;
+                      const double value = e.weight * f.weight * x(e.dof);
                       for (unsigned int row = 0; row < 2; ++row)
                         for (unsigned int col = 0; col < 2; ++col)
-                          block[row][col] += frame(node, row)[e.component] *
-                                             e.weight *
-                                             Y[l][which][col](e.dof);
+                          block[row][col] += frame(node_k, row)[e.component] *
+                                             frame(node_l, col)[f.component] *
+                                             value;
                     }
+                if (coupled)
+                  W.add_block(k, l, block);
               }
-            if (coupled)
-              W.set_block(k, l, block);
           }
       }
     compliance_seconds += compliance_timer.wall_time();
@@ -186,25 +202,25 @@ namespace glissade
     if (!result.converged)
       return false;
 
-    // Corrector du = du_lib + K^-1 H^T r, and the contact forces H^T r.
+    // Corrector du = du_lib + K^-1 H^T r with the current tangent, and the
+    // contact forces H^T r.
     for (unsigned int k = 0; k < n; ++k)
       {
         ContactNode &node = *active[k].node;
         node.reaction     = {{r[k][0], r[k][1]}};
         node.status       = result.status[k];
-        for (unsigned int which = 0; which < 2; ++which)
-          {
-            const unsigned int b = body_of(active[k], which);
-            if (b == numbers::invalid_unsigned_int)
-              continue;
-            for (unsigned int row = 0; row < 2; ++row)
-              increments[b].add(r[k][row], Y[k][which][row]);
-          }
         const Tensor<1, 2> force = node.force();
         for (const auto &e : node.forces)
           contact_forces[body_of(active[k], e.body)](e.dof) +=
             e.weight * force[e.component];
       }
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (contact_forces[b].linfty_norm() > 0.)
+        {
+          Vector<double> correction;
+          bodies[b]->solve_homogeneous(contact_forces[b], correction);
+          increments[b] += correction;
+        }
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->set_contact_forces(contact_forces[b]);
     return true;

@@ -244,6 +244,14 @@ namespace glissade
           "Nodal forces (N per thickness): 'point(x, y): fx, fy; ...' with "
           "fx, fy expressions in t.");
         prm.declare_entry(
+          "Nodal loads",
+          "",
+          Patterns::Anything(),
+          "The same force on every node of a boundary: 'boundary: fx, fy; "
+          "...' with expressions in x, y (the node's reference position) "
+          "and t, e.g. radial forces 'outer: -10*x/sqrt(x^2+y^2)*t, "
+          "-10*y/sqrt(x^2+y^2)*t'.");
+        prm.declare_entry(
           "Tractions",
           "",
           Patterns::Anything(),
@@ -291,6 +299,18 @@ namespace glissade
                         "Slave nodes farther than this from the master at the "
                         "start of an increment are left out of the condensed "
                         "problem.");
+      prm.declare_entry(
+        "Frame update",
+        "iteration",
+        Patterns::Selection("iteration|increment"),
+        "iteration: re-project the active nodes at every Newton iteration "
+        "(frame, gap, weights). increment: project them at the start of the "
+        "increment only and follow the gap linearly within it. The frame's "
+        "change is not part of the tangent, so with a very compliant master "
+        "surface (Hermite edges, whose tangents turn under a point force) "
+        "re-projecting can make the iteration diverge; freezing the frame "
+        "over small increments converges, at an error of the order of the "
+        "increment.");
       prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
                         "Coulomb's mu (0: frictionless).");
       prm.declare_entry("Beta", "1", Patterns::Double(0.),
@@ -330,6 +350,7 @@ namespace glissade
       c.surface         = prm.get("Surface");
       c.force_transfer  = prm.get("Force transfer");
       c.alert_distance  = prm.get_double("Alert distance");
+      c.frame_update    = prm.get("Frame update");
       c.friction        = prm.get_double("Friction coefficient");
       c.beta            = prm.get_double("Beta");
       c.tolerance       = prm.get_double("Tolerance");
@@ -531,6 +552,10 @@ namespace glissade
                   NeumannDescription::Kind::point_load,
                   2,
                   "point(x, y): fx, fy");
+      add_neumann("Nodal loads",
+                  NeumannDescription::Kind::nodal_loads,
+                  2,
+                  "boundary: fx, fy");
       add_neumann("Tractions",
                   NeumannDescription::Kind::traction,
                   2,

@@ -6,6 +6,7 @@
 #include <glissade/solver/simulation.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -128,6 +129,16 @@ namespace glissade
             displacement_norm += all_bodies[b]->displacement().norm_sqr();
           }
         last_increment    = std::sqrt(increment_squared);
+        if (std::getenv("GLISSADE_DEBUG"))
+          for (unsigned int b = 0; b < all_bodies.size(); ++b)
+            std::cerr << "    body " << b << " |du| " << du[b].l2_norm()
+                      << " max " << du[b].linfty_norm() << " |u| "
+                      << all_bodies[b]->displacement().l2_norm() << std::endl;
+        if (std::getenv("GLISSADE_DEBUG"))
+          std::cerr << "  it " << iteration << " |R|/F " << scaled << " |du| "
+                    << last_increment << " |u| " << displacement_norm
+                    << " active " << contact_problem->n_active() << " sweeps "
+                    << contact_problem->last_result().sweeps << std::endl;
         displacement_norm = std::sqrt(displacement_norm);
         if (!std::isfinite(last_increment))
           return false;
@@ -282,6 +293,8 @@ namespace glissade
                                 std::to_string(contact_problem->n_active()))
                         << std::endl;
             history->record(increment, t, iterations);
+            if (on_increment)
+              on_increment(increment, t);
             const bool last = (increment == n_total);
             if (last || (scene.output.vtu_interval > 0 &&
                          increment % scene.output.vtu_interval == 0))
@@ -309,7 +322,12 @@ namespace glissade
       << " increments, " << stats.newton_iterations << " Newton iterations, "
       << stats.cut_backs << " cut-backs, " << dofs << " dofs, "
       << stats.wall_seconds << " s wall (assembly " << stats.assembly_seconds
-      << " s, factorization " << stats.factorization_seconds << " s)";
+      << " s, factorization " << stats.factorization_seconds << " s";
+    if (!contact_problem->empty())
+      s << ", contact detection " << contact_problem->detection_seconds
+        << " s, compliance " << contact_problem->compliance_seconds
+        << " s, local solve " << contact_problem->local_solve_seconds << " s";
+    s << ")";
     return s.str();
   }
 } // namespace glissade

@@ -95,6 +95,12 @@ namespace glissade
             const std::string      &entry,
             const bool              allow_face_point = false);
 
+    /** The two global value dofs (x, y) at vertex v of a cell. */
+    static std::array<types::global_dof_index, 2>
+    cell_vertex_dofs(const typename DoFHandler<2>::active_cell_iterator &cell,
+                     const unsigned int                                  v,
+                     const ElementSpace                                 &space);
+
     /** The two global value dofs (x, y) at a mesh vertex. */
     static std::array<types::global_dof_index, 2>
     vertex_dofs(const DoFHandler<2> &dof_handler,
@@ -117,6 +123,7 @@ namespace glissade
 
     std::vector<DirichletItem> dirichlet_items;
     std::vector<PointLoad>     point_loads;
+    std::vector<PointLoad>     nodal_loads; // on every vertex of a boundary
     std::vector<SurfaceLoad>   loads_on_boundaries;
   };
 } // namespace glissade

@@ -35,6 +35,10 @@ namespace glissade
 
     bool         active = false;
     bool         projected = false; // has a counterpart on the master
+    /** Master segment of the last projection (-1: none or rigid). */
+    int          segment = -1;
+    double       s       = 0.;
+    double       gap_at_step_start = 0.;
     double       gap    = 0.;
     Tensor<1, 2> tangent, normal;
     /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
@@ -138,9 +142,29 @@ namespace glissade
     void
     update_master_curve();
 
-    /** Projects one slave node at the current state; false if no counterpart. */
+    /**
+     * Projects one slave node at the current state; false if no
+     * counterpart. With `keep_segment`, a node keeps the master segment of
+     * its last projection while it still has an orthogonal projection
+     * there: near a vertex of a faceted master two segments are about as
+     * close, and letting the choice flip between Newton iterations makes
+     * the contact constraint itself jump, so Newton would stall.
+     */
     bool
-    project(ContactNode &node) const;
+    project(ContactNode &node, const bool keep_segment = false) const;
+
+    /**
+     * Orthogonal projection on one segment; false if s leaves
+     * [-margin, 1 + margin].
+     */
+    bool
+    project_on_segment(const Point<2> &x, const unsigned int segment,
+                       double &s, const double margin) const;
+
+    /** Frame, gap and dof maps of a node at (segment, s). */
+    void
+    linearize(ContactNode &node, const Point<2> &x, const unsigned int segment,
+              const double s) const;
 
     Point<2>
     current_position(const Body &body, const std::array<types::global_dof_index, 2> &dofs,

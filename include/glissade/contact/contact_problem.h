@@ -5,6 +5,7 @@
 #include <glissade/contact/contact_pair.h>
 #include <glissade/scene/scene_description.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -73,7 +74,16 @@ namespace glissade
     unsigned int
     body_index(const Body *body) const;
 
+    /**
+     * K_b^-1 e_dof for a dof the contact maps touch, computed once per
+     * Newton iteration however many nodes share it (one back-substitution
+     * per contact dof and iteration).
+     */
+    const Vector<double> &
+    column(const unsigned int body, const types::global_dof_index dof);
+
     const std::vector<std::unique_ptr<Body>> &bodies;
+    std::vector<std::map<types::global_dof_index, Vector<double>>> columns;
     std::vector<std::unique_ptr<ContactPair>> pairs;
     BiPotentialSolver::Result                 result;
   };

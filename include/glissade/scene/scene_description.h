@@ -60,6 +60,7 @@ namespace glissade
     enum class Kind
     {
       point_load,
+      nodal_loads,
       traction,
       pressure
     };
@@ -129,6 +130,7 @@ namespace glissade
     std::string surface        = "faceted"; // faceted | bspline | hermite
     std::string force_transfer = "segment"; // B-spline: segment | spline
     double      alert_distance = 0.;
+    std::string frame_update   = "iteration"; // iteration | increment
     double      friction       = 0.;
     double      beta           = 1.;
     double      tolerance      = 1e-10;

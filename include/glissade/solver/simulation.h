@@ -5,6 +5,7 @@
 #include <glissade/io/history_writer.h>
 #include <glissade/scene/scene_description.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ namespace glissade
     /** The whole load program, with output. */
     void
     run();
+
+    /** Called after every converged increment of run(): (increment, t). */
+    std::function<void(unsigned int, double)> on_increment;
 
     /**
      * One step from the current state to time t (with cut-backs); returns
