@@ -3,7 +3,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -13,6 +12,7 @@
 #include <glissade/material/material.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/scene_description.h>
+#include <glissade/solver/direct_solver.h>
 
 #include <memory>
 #include <string>
@@ -201,7 +201,7 @@ namespace glissade
     AffineConstraints<double> constraints;         // plus Dirichlet data
     SparsityPattern           sparsity;
     SparseMatrix<double>      tangent;
-    SparseDirectUMFPACK       factorization;
+    DirectSolver              factorization;
 
     Vector<double> solution;
     Vector<double> stored_solution;

@@ -1,0 +1,123 @@
+#include <deal.II/base/timer.h>
+
+#include <glissade/solver/direct_solver.h>
+
+#include <suitesparse/umfpack.h>
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace glissade
+{
+  namespace
+  {
+    void
+    check(const long status, const char *phase)
+    {
+      if (status != UMFPACK_OK)
+        throw std::runtime_error(
+          std::string("UMFPACK ") + phase + " failed with status " +
+          std::to_string(status) +
+          (status == UMFPACK_WARNING_singular_matrix ?
+             " (singular tangent matrix: is every body held against "
+             "rigid-body motion by its supports?)" :
+             ""));
+    }
+  } // namespace
+
+
+
+  DirectSolver::~DirectSolver()
+  {
+    free_numeric();
+    if (symbolic != nullptr)
+      umfpack_dl_free_symbolic(&symbolic);
+  }
+
+
+
+  void
+  DirectSolver::free_numeric()
+  {
+    if (numeric != nullptr)
+      umfpack_dl_free_numeric(&numeric);
+  }
+
+
+
+  void
+  DirectSolver::factorize(const SparseMatrix<double> &matrix)
+  {
+    // deal.II stores rows (diagonal first); UMFPACK wants sorted columns.
+    // We hand it the rows as the columns of A^T and solve with A^T later.
+    const SparsityPattern &sp = matrix.get_sparsity_pattern();
+    const long             n  = matrix.m();
+    const bool same_pattern =
+      (&sp == pattern && row_start.size() == static_cast<size_t>(n + 1) &&
+       static_cast<size_t>(row_start.back()) == matrix.n_nonzero_elements());
+    if (!same_pattern)
+      {
+        row_start.assign(n + 1, 0);
+        column_index.resize(matrix.n_nonzero_elements());
+        values.resize(matrix.n_nonzero_elements());
+      }
+    long k = 0;
+    std::vector<std::pair<long, double>> row;
+    for (long i = 0; i < n; ++i)
+      {
+        row.clear();
+        for (auto it = matrix.begin(i); it != matrix.end(i); ++it)
+          row.emplace_back(it->column(), it->value());
+        std::sort(row.begin(), row.end(), [](const auto &a, const auto &b) {
+          return a.first < b.first;
+        });
+        row_start[i] = k;
+        for (const auto &[j, v] : row)
+          {
+            column_index[k] = j;
+            values[k]       = v;
+            ++k;
+          }
+      }
+    row_start[n] = k;
+
+    double control[UMFPACK_CONTROL];
+    umfpack_dl_defaults(control);
+    Timer timer;
+    if (!same_pattern || symbolic == nullptr)
+      {
+        if (symbolic != nullptr)
+          umfpack_dl_free_symbolic(&symbolic);
+        check(umfpack_dl_symbolic(n, n, row_start.data(), column_index.data(),
+                                  values.data(), &symbolic, control, nullptr),
+              "symbolic analysis");
+        pattern = &sp;
+        symbolic_seconds += timer.wall_time();
+        timer.restart();
+      }
+    free_numeric();
+    check(umfpack_dl_numeric(row_start.data(), column_index.data(),
+                             values.data(), symbolic, &numeric, control,
+                             nullptr),
+          "factorization");
+    numeric_seconds += timer.wall_time();
+  }
+
+
+
+  void
+  DirectSolver::solve(Vector<double> &x) const
+  {
+    double control[UMFPACK_CONTROL];
+    umfpack_dl_defaults(control);
+    control[UMFPACK_IRSTEP] = 0;
+    solution.resize(x.size());
+    check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column_index.data(),
+                           values.data(), solution.data(), x.begin(), numeric,
+                           control, nullptr),
+          "solve");
+    std::copy(solution.begin(), solution.end(), x.begin());
+  }
+} // namespace glissade
