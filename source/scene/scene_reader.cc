@@ -683,6 +683,10 @@ namespace glissade
     prm.declare_entry("VTU interval", "1", Patterns::Integer(0),
                       "Write a VTU every this many increments (0: only the "
                       "final state).");
+    prm.declare_entry("Contact table interval", "0", Patterns::Integer(0),
+                      "Write contact-<pair>-<increment>.csv (every slave "
+                      "node's gap, reaction, status) every this many "
+                      "increments; 0: with the VTU files.");
     prm.declare_entry(
       "History",
       "",
@@ -768,6 +772,8 @@ namespace glissade
     prm.enter_subsection("Output");
     scene.output.directory    = prm.get("Directory");
     scene.output.vtu_interval = prm.get_integer("VTU interval");
+    scene.output.contact_table_interval =
+      prm.get_integer("Contact table interval");
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))
       if (!item.empty())
         scene.output.history.push_back(item);

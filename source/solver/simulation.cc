@@ -211,7 +211,8 @@ namespace glissade
         DataOutBase::write_pvd_record(pvd.stream(), pvd_records[b]);
         pvd.commit();
       }
-    write_contact_table(increment);
+    if (scene.output.contact_table_interval == 0)
+      write_contact_table(increment);
     stats.output_seconds += timer.wall_time();
   }
 
@@ -296,6 +297,9 @@ namespace glissade
             if (on_increment)
               on_increment(increment, t);
             const bool last = (increment == n_total);
+            if (scene.output.contact_table_interval > 0 &&
+                (last || increment % scene.output.contact_table_interval == 0))
+              write_contact_table(increment);
             if (last || (scene.output.vtu_interval > 0 &&
                          increment % scene.output.vtu_interval == 0))
               write_output(increment, t);

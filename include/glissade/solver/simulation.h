@@ -70,6 +70,12 @@ namespace glissade
       return *contact_problem;
     }
 
+    const ContactProblem &
+    contact() const
+    {
+      return *contact_problem;
+    }
+
     /** Scaled residuals |R|/scale of the Newton iterations of the last step. */
     const std::vector<double> &
     last_residuals() const

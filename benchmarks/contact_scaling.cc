@@ -1,0 +1,55 @@
+// Benchmark (not a test): the contact part of a Newton iteration against
+// the number of active contact nodes and the number of dofs. A strip of
+// Q4 elements is pushed onto a rigid flat, so every bottom node is active.
+// Per Newton iteration: factorisation, detection (projection), compliance
+// matrix W = H K^-1 H^T, local bi-potential solve.
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include <cstdio>
+#include <string>
+
+int
+main(int argc, char **argv)
+{
+  using namespace glissade;
+  if (argc != 3)
+    {
+      std::fprintf(stderr, "usage: glissade_contact_benchmark <nx> <ny>\n");
+      return 1;
+    }
+  const unsigned int nx = std::stoi(argv[1]), ny = std::stoi(argv[2]);
+  const double       length = 1., height = double(ny) / nx;
+  const std::string  prm =
+    "subsection Scene\n set Bodies = strip\n set Contact pairs = floor\nend\n"
+    "subsection Body strip\n subsection Mesh\n  set Type = rectangle\n"
+    "  set Corner 2 = " + std::to_string(length) + ", " + std::to_string(height) +
+    "\n  set Subdivisions = " + std::to_string(nx) + ", " + std::to_string(ny) +
+    "\n end\n subsection Material\n  set Young modulus = 1000\n end\n"
+    " subsection Boundary conditions\n  set Fixed = left: x\n"
+    "  set Prescribed displacement = top: y: -0.01*" + std::to_string(height) +
+    "*t\n end\nend\n"
+    "subsection Contact floor\n set Slave body = strip\n"
+    " set Slave boundary = bottom\n set Alert distance = 1\n"
+    " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
+    "  set Normal = 0, 1\n end\nend\n"
+    "subsection Output\n set Progress = false\nend\n";
+  Simulation simulation(SceneReader::read_string(prm, "contact benchmark"));
+  simulation.advance_to(1., "increment 1");
+  const RunStatistics &s = simulation.statistics();
+  const ContactProblem &c = simulation.contact();
+  const double         n  = s.newton_iterations;
+  std::printf("%6u active nodes %9u dofs  Newton its %2u  per iteration: "
+              "factorisation %8.4f s  detection %8.5f s  compliance %8.4f s  "
+              "local solve %8.4f s (%u sweeps in the last)\n",
+              c.n_active(),
+              simulation.body("strip").n_dofs(),
+              s.newton_iterations,
+              s.factorization_seconds / n,
+              c.detection_seconds / n,
+              c.compliance_seconds / n,
+              c.local_solve_seconds / n,
+              c.last_result().sweeps);
+  return 0;
+}
