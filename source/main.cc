@@ -5,6 +5,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+#include <glissade/study/case3_study.h>
 #include <glissade/study/geometric_study.h>
 
 #include <cstring>
@@ -61,6 +62,11 @@ main(int argc, char **argv)
       if (study == "geometric")
         {
           GeometricStudy::run(argv[1], overrides);
+          return 0;
+        }
+      if (study == "case3")
+        {
+          Case3Study::run(argv[1], overrides);
           return 0;
         }
       const SceneDescription scene =

@@ -618,10 +618,13 @@ namespace glissade
   {
     prm.declare_entry("Study",
                       "simulation",
-                      Patterns::Selection("simulation|geometric"),
+                      Patterns::Selection("simulation|geometric|case3"),
                       "simulation: run the scene below. geometric: the "
                       "geometric study of the paper's section 3.3 (see "
-                      "prm/geometric_study.prm; its entries replace these).");
+                      "prm/geometric_study.prm); case3: the concentric rings "
+                      "of section 4.3 in several variants (see "
+                      "prm/case3_default.prm). A study's own entries replace "
+                      "these.");
     prm.enter_subsection("Scene");
     prm.declare_entry("Bodies",
                       "body",

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  /** What one variant of case 3 gives. */
+  struct Case3Result
+  {
+    std::string         variant;
+    unsigned int        dofs = 0;
+    double              wall_seconds = 0.;
+    std::vector<double> spread_percent; // per rotation increment
+    std::vector<double> node_force;     // |f| of node (1.25, 0), per increment
+    double              worst_spread = 0.;
+    unsigned int        worst_increment = 0;
+    std::vector<double> worst_distribution; // (|f| - F_e) / F_e in %, per node
+  };
+
+  /**
+   * Case 3 of the paper (section 4.3): the concentric rings of
+   * prm/case3_rings.prm, compressed and then rotated, for the variants q4
+   * (faceted master), bspline (closed B-spline over the Q4 master) and
+   * hermite (Hermite outer ring). Per rotation increment it measures the
+   * spread of the interface contact forces around their equilibrium value
+   * F_e, the mean force norm over the interface at that increment:
+   * max_k | |f_k| - F_e | / F_e, in %.
+   */
+  class Case3Study
+  {
+  public:
+    /** The paper's worst-increment spread (fig 26), in %. */
+    static double
+    paper_spread(const std::string &variant);
+
+    /**
+     * Runs one variant of the scene file with `rotation_increments`
+     * increments over `rotation_degrees` after the 10 of compression.
+     */
+    static Case3Result
+    run_variant(const std::string &scene_file,
+                const std::string &variant,
+                const double       rotation_degrees,
+                const unsigned int rotation_increments,
+                const std::string &output_directory);
+
+    /** Reads the study's .prm, runs its variants, writes CSV and PNG. */
+    static void
+    run(const std::string &prm_file, const std::vector<std::string> &overrides);
+  };
+} // namespace glissade

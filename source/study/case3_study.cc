@@ -1,0 +1,191 @@
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/io/atomic_file.h>
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+#include <glissade/study/case3_study.h>
+#include <glissade/study/plotting.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  double
+  Case3Study::paper_spread(const std::string &variant)
+  {
+    return variant == "q4" ? 4.8 : variant == "bspline" ? 0.0015 : 0.1;
+  }
+
+
+
+  Case3Result
+  Case3Study::run_variant(const std::string &scene_file,
+                          const std::string &variant,
+                          const double       rotation_degrees,
+                          const unsigned int rotation_increments,
+                          const std::string &output_directory)
+  {
+    std::vector<std::string> overrides = {
+      "Load program/Stage end times=1, " + std::to_string(1. + rotation_degrees / 180.),
+      "Load program/Stage increments=10, " + std::to_string(rotation_increments),
+      "Output/Progress=false",
+      "Output/VTU interval=0",
+      "Output/Directory=" + output_directory + "/" + variant};
+    if (variant == "q4")
+      overrides.push_back("Contact interface/Surface=faceted");
+    else if (variant == "bspline")
+      overrides.push_back("Contact interface/Surface=bspline");
+    else if (variant == "hermite")
+      {
+        overrides.push_back("Body outer/Element/Space=hermite");
+        overrides.push_back("Contact interface/Surface=hermite");
+        overrides.push_back("Contact interface/Frame update=increment");
+      }
+    else
+      throw InputError("Case 3 study/Variants",
+                       "unknown variant '" + variant +
+                         "' (known: q4, bspline, hermite)");
+
+    Simulation simulation(SceneReader::read_file(scene_file, overrides));
+    Case3Result result;
+    result.variant = variant;
+    for (const auto &b : simulation.bodies())
+      result.dofs += b->n_dofs();
+    auto &pair = *simulation.contact().contact_pairs().at(0);
+    simulation.on_increment = [&](const unsigned int increment, double) {
+      std::vector<double> forces;
+      for (const auto &node : pair.nodes())
+        if (node.active)
+          forces.push_back(node.force().norm());
+      result.node_force.push_back(pair.node_at(Point<2>(1.25, 0.)).force().norm());
+      if (increment <= 10 || forces.empty())
+        return;
+      double mean = 0.;
+      for (const double f : forces)
+        mean += f / forces.size();
+      double spread = 0.;
+      for (const double f : forces)
+        spread = std::max(spread, std::abs(f - mean) / mean * 100.);
+      result.spread_percent.push_back(spread);
+      if (spread >= result.worst_spread)
+        {
+          result.worst_spread    = spread;
+          result.worst_increment = increment;
+          result.worst_distribution.clear();
+          for (const double f : forces)
+            result.worst_distribution.push_back((f / mean - 1.) * 100.);
+        }
+    };
+    Timer timer;
+    simulation.run();
+    result.wall_seconds = timer.wall_time();
+    return result;
+  }
+
+
+
+  void
+  Case3Study::run(const std::string              &prm_file,
+                  const std::vector<std::string> &overrides)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Study", "case3", Patterns::Selection("case3"));
+    prm.enter_subsection("Case 3 study");
+    prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
+                      "The rings' scene (relative to this file's folder).");
+    prm.declare_entry("Variants", "q4, bspline, hermite",
+                      Patterns::List(Patterns::Selection("q4|bspline|hermite")),
+                      "Discretisations of the interface.");
+    prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
+                      "Degrees of rotation after the compression (the paper: "
+                      "180; one element of the outer ring: 9).");
+    prm.declare_entry("Rotation increments", "50", Patterns::Integer(1),
+                      "Increments of the rotation (the paper: 1000 for 180 "
+                      "degrees, i.e. 50 per element).");
+    prm.declare_entry("Output directory", "output/case3_study",
+                      Patterns::Anything(), "Where CSVs and PNGs go.");
+    prm.leave_subsection();
+    try
+      {
+        prm.parse_input(prm_file);
+        for (const auto &o : overrides)
+          {
+            const auto eq    = o.find('=');
+            const auto slash = o.find('/');
+            if (eq == std::string::npos || slash == std::string::npos)
+              throw InputError("--set " + o, "expected 'Section/Entry=value'");
+            prm.enter_subsection(o.substr(0, slash));
+            prm.set(o.substr(slash + 1, eq - slash - 1), o.substr(eq + 1));
+            prm.leave_subsection();
+          }
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(prm_file, e.what());
+      }
+    prm.enter_subsection("Case 3 study");
+    std::string scene = prm.get("Scene");
+    if (!scene.empty() && scene[0] != '/')
+      {
+        const auto slash = prm_file.find_last_of('/');
+        if (slash != std::string::npos)
+          scene = prm_file.substr(0, slash + 1) + scene;
+      }
+    const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
+    const double       angle      = prm.get_double("Rotation angle");
+    const unsigned int increments = prm.get_integer("Rotation increments");
+    const std::string  directory  = prm.get("Output directory");
+    prm.leave_subsection();
+    std::filesystem::create_directories(directory);
+
+    std::vector<Case3Result> results;
+    for (const auto &variant : variants)
+      {
+        std::cout << "case 3, " << variant << ": compression (10 increments), "
+                  << "rotation by " << angle << " degrees (" << increments
+                  << " increments) ..." << std::endl;
+        results.push_back(
+          run_variant(scene, variant, angle, increments, directory));
+      }
+
+    AtomicFile csv(directory + "/case3_spread.csv");
+    csv.stream() << "variant,increment,spread_percent,node_force\n";
+    for (const auto &r : results)
+      for (unsigned int i = 0; i < r.node_force.size(); ++i)
+        csv.stream() << r.variant << ',' << i + 1 << ','
+                     << (i >= 10 ? r.spread_percent[i - 10] : 0.) << ','
+                     << r.node_force[i] << '\n';
+    csv.commit();
+    AtomicFile worst(directory + "/case3_worst.csv");
+    worst.stream() << "variant,node,deviation_percent\n";
+    for (const auto &r : results)
+      for (unsigned int k = 0; k < r.worst_distribution.size(); ++k)
+        worst.stream() << r.variant << ',' << k << ','
+                       << r.worst_distribution[k] << '\n';
+    worst.commit();
+
+    std::cout << "\nCase 3, spread of the interface contact forces around F_e "
+                 "(worst rotation increment)\n"
+              << std::setw(10) << "method" << std::setw(14) << "spread (%)"
+              << std::setw(14) << "paper (%)" << std::setw(10) << "dofs"
+              << std::setw(14) << "wall (s)" << '\n';
+    for (const auto &r : results)
+      std::cout << std::setw(10) << r.variant << std::setw(14)
+                << std::setprecision(3) << r.worst_spread << std::setw(14)
+                << paper_spread(r.variant) << std::setw(10) << r.dofs
+                << std::setw(14) << r.wall_seconds << '\n';
+    std::cout << std::flush;
+    plot_with_python("plot_case3.py", directory);
+  }
+} // namespace glissade
