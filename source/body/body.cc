@@ -7,6 +7,7 @@
 #include <glissade/fe/element_space_registry.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace glissade
 {
@@ -377,9 +378,11 @@ namespace glissade
   Tensor<1, 2>
   Body::vertex_displacement(const Point<2> &point) const
   {
+    std::ostringstream location;
+    location.precision(17);
+    location << "point(" << point[0] << ", " << point[1] << ")";
     const Location where =
-      BoundaryConditions::resolve("point(" + std::to_string(point[0]) + "," +
-                                    std::to_string(point[1]) + ")",
+      BoundaryConditions::resolve(location.str(),
                                   boundary_names,
                                   mesh,
                                   description.name,
