@@ -115,25 +115,17 @@ namespace
     simulation.advance_to(1., "increment 1");
     const Body &body      = simulation.body("block");
     const auto  evaluator = body.space().create_evaluator(6);
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+    std::vector<double> values(evaluator->dofs_per_cell());
     double e0 = 0., e1 = 0., n0 = 0., n1 = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
         evaluator->reinit(cell);
-        cell->get_dof_indices(local);
+        cell->get_dof_values(body.displacement(), values.begin(), values.end());
         for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
           {
-            Tensor<1, 2> u;
-            Tensor<2, 2> H;
-            for (unsigned int i = 0; i < local.size(); ++i)
-              {
-                const unsigned int c = evaluator->displacement_component(i);
-                u[c] += body.displacement()(local[i]) *
-                        evaluator->shape_value(i, q);
-                H[c] += body.displacement()(local[i]) *
-                        evaluator->shape_grad(i, q);
-              }
-            const Point<2> X = evaluator->quadrature_point(q);
+            const Tensor<1, 2> u = evaluator->value(values, q);
+            const Tensor<2, 2> H = evaluator->gradient(values, q);
+            const Point<2>     X = evaluator->quadrature_point(q);
             e0 += (u - exact_u(X)).norm_square() * evaluator->JxW(q);
             e1 += (H - exact_grad(X)).norm_square() * evaluator->JxW(q);
             n0 += exact_u(X).norm_square() * evaluator->JxW(q);
@@ -242,7 +234,7 @@ namespace
   top_edge_slopes(const Body &body, const double x_node)
   {
     const auto evaluator = body.space().create_evaluator();
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+    std::vector<double> values(evaluator->dofs_per_cell());
     double left = 0., right = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
@@ -254,11 +246,8 @@ namespace
         if (!ends_here && !starts_here)
           continue;
         evaluator->reinit_at(cell, top, ends_here ? 1. : 0.);
-        cell->get_dof_indices(local);
-        Tensor<2, 2> H;
-        for (unsigned int i = 0; i < local.size(); ++i)
-          H[evaluator->displacement_component(i)] +=
-            body.displacement()(local[i]) * evaluator->shape_grad(i, 0);
+        cell->get_dof_values(body.displacement(), values.begin(), values.end());
+        const Tensor<2, 2> H = evaluator->gradient(values, 0);
         // Deformed tangent of the edge: (I + H) e_x.
         const double angle = std::atan2(H[1][0], 1. + H[0][0]);
         (ends_here ? left : right) = angle;
@@ -300,16 +289,13 @@ GLISSADE_TEST(hermite_static)
         }
       // The deformed top edge for the picture.
       const auto evaluator = body.space().create_evaluator();
-      std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+      std::vector<double> values(evaluator->dofs_per_cell());
       for (const auto &cell : body.dof_handler().active_cell_iterators())
         for (unsigned int k = 0; k <= 20; ++k)
           {
             evaluator->reinit_at(cell, 3, k / 20.);
-            cell->get_dof_indices(local);
-            Tensor<1, 2> u;
-            for (unsigned int i = 0; i < local.size(); ++i)
-              u[evaluator->displacement_component(i)] +=
-                body.displacement()(local[i]) * evaluator->shape_value(i, 0);
+            cell->get_dof_values(body.displacement(), values.begin(), values.end());
+            const Tensor<1, 2> u = evaluator->value(values, 0);
             const Point<2> X = evaluator->quadrature_point(0);
             csv << space << ',' << X[0] + u[0] << ',' << X[1] + u[1] << '\n';
           }

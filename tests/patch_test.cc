@@ -144,26 +144,18 @@ namespace
       law == "neo-Hookean" ? neo_hookean_cauchy(F, plane_stress) :
                              svk_plane_stress_cauchy(F);
     const auto evaluator = body.space().create_evaluator(5);
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+    std::vector<double> values(evaluator->dofs_per_cell());
     const Tensor<2, 2> exact_H = F - unit_symmetric_tensor<2>();
     double max_u_error = 0., max_u = 0., max_H_error = 0.,
            max_sigma_error = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
         evaluator->reinit(cell);
-        cell->get_dof_indices(local);
+        cell->get_dof_values(body.displacement(), values.begin(), values.end());
         for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
           {
-            Tensor<1, 2> u;
-            Tensor<2, 2> H;
-            for (unsigned int i = 0; i < local.size(); ++i)
-              {
-                const unsigned int c = evaluator->displacement_component(i);
-                u[c] += body.displacement()(local[i]) *
-                        evaluator->shape_value(i, q);
-                H[c] += body.displacement()(local[i]) *
-                        evaluator->shape_grad(i, q);
-              }
+            const Tensor<1, 2> u       = evaluator->value(values, q);
+            const Tensor<2, 2> H       = evaluator->gradient(values, q);
             const Point<2>     X       = evaluator->quadrature_point(q);
             const Tensor<1, 2> exact_u = exact_H * X;
             max_u_error = std::max(max_u_error, (u - exact_u).norm());

@@ -215,6 +215,9 @@ namespace glissade
               continue;
             evaluator.reinit(cell, f);
             load.function->set_time(time);
+            std::vector<double> cell_values(n_local);
+            for (unsigned int i = 0; i < n_local; ++i)
+              cell_values[i] = solution(local_dofs[i]);
             for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
               {
                 const Point<2>     X  = evaluator.quadrature_point(q);
@@ -233,10 +236,8 @@ namespace glissade
                   }
                 // Follower pressure: f = -p n da = -p cof(F) N0 dA (Nanson),
                 // with cof(F) linear in F in 2D, hence the simple tangent.
-                Tensor<2, 2> F = unit_symmetric_tensor<2>();
-                for (unsigned int i = 0; i < n_local; ++i)
-                  F[evaluator.displacement_component(i)] +=
-                    solution(local_dofs[i]) * evaluator.shape_grad(i, q);
+                const Tensor<2, 2> F = unit_symmetric_tensor<2>() +
+                                       evaluator.gradient(cell_values, q);
                 const double       p = load.function->value(X);
                 const Tensor<1, 2> cof_F_N0({F[1][1] * N0[0] - F[1][0] * N0[1],
                                              -F[0][1] * N0[0] +

@@ -178,6 +178,19 @@ namespace glissade
 
 
 
+  std::array<types::global_dof_index, 2>
+  BoundaryConditions::cached_vertex_dofs(const DoFHandler<2> &dof_handler,
+                                         const ElementSpace  &space,
+                                         const unsigned int   vertex) const
+  {
+    const auto found = vertex_dof_cache.find(vertex);
+    if (found != vertex_dof_cache.end())
+      return found->second;
+    return vertex_dof_cache[vertex] = vertex_dofs(dof_handler, space, vertex);
+  }
+
+
+
   BoundaryConditions::BoundaryConditions(const BodyDescription  &body,
                                          const BoundaryNames    &names,
                                          const Triangulation<2> &tria,
@@ -256,7 +269,8 @@ namespace glissade
         std::vector<DofRelation> these;
         if (item.where.is_vertex)
           {
-            const auto dofs = vertex_dofs(dof_handler, space, item.where.vertex);
+            const auto dofs =
+              cached_vertex_dofs(dof_handler, space, item.where.vertex);
             const Point<2> X =
               dof_handler.get_triangulation().get_vertices()[item.where.vertex];
             for (unsigned int c = 0; c < 2; ++c)
@@ -360,7 +374,7 @@ namespace glissade
         if (load.where.is_vertex)
           {
             const auto dofs =
-              vertex_dofs(dof_handler, space, load.where.vertex);
+              cached_vertex_dofs(dof_handler, space, load.where.vertex);
             for (unsigned int c = 0; c < 2; ++c)
               forces[dofs[c]] += f[c];
             continue;

@@ -881,6 +881,32 @@ namespace glissade
 
 
 
+  void
+  SceneReader::parse_study(ParameterHandler               &prm,
+                           const std::string              &filename,
+                           const std::vector<std::string> &overrides)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError(filename, "cannot open the parameter file");
+    try
+      {
+        prm.parse_input(in, filename);
+        for (const auto &o : overrides)
+          apply_override(prm, o);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(filename, essential_message(e));
+      }
+  }
+
+
+
   std::string
   SceneReader::study_type(const std::string &filename)
   {

@@ -230,7 +230,7 @@ namespace glissade
         file.stream() << "X,Y,x,y,active,gap,r_t,r_n,fx,fy,status\n";
         for (const auto &node : pair->nodes())
           {
-            const Body &slave = const_cast<ContactPair &>(*pair).slave();
+            const Body &slave = pair->slave();
             const Tensor<1, 2> u({slave.displacement()(node.dofs[0]),
                                   slave.displacement()(node.dofs[1])});
             const Tensor<1, 2> f = node.active ? node.force() : Tensor<1, 2>();

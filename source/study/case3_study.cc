@@ -112,28 +112,7 @@ namespace glissade
     prm.declare_entry("Output directory", "output/case3_study",
                       Patterns::Anything(), "Where CSVs and PNGs go.");
     prm.leave_subsection();
-    try
-      {
-        prm.parse_input(prm_file);
-        for (const auto &o : overrides)
-          {
-            const auto eq    = o.find('=');
-            const auto slash = o.find('/');
-            if (eq == std::string::npos || slash == std::string::npos)
-              throw InputError("--set " + o, "expected 'Section/Entry=value'");
-            prm.enter_subsection(o.substr(0, slash));
-            prm.set(o.substr(slash + 1, eq - slash - 1), o.substr(eq + 1));
-            prm.leave_subsection();
-          }
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (const std::exception &e)
-      {
-        throw InputError(prm_file, e.what());
-      }
+    SceneReader::parse_study(prm, prm_file, overrides);
     prm.enter_subsection("Case 3 study");
     std::string scene = prm.get("Scene");
     if (!scene.empty() && scene[0] != '/')

@@ -121,6 +121,19 @@ namespace glissade
       std::shared_ptr<FunctionParser<2>> force;
     };
 
+    /**
+     * The value dofs of the vertices named by point(x, y) items: finding a
+     * vertex's dofs walks the cells, which must not happen at every
+     * assembly.
+     */
+    std::array<types::global_dof_index, 2>
+    cached_vertex_dofs(const DoFHandler<2> &dof_handler,
+                       const ElementSpace  &space,
+                       const unsigned int   vertex) const;
+
+    mutable std::map<unsigned int, std::array<types::global_dof_index, 2>>
+      vertex_dof_cache;
+
     std::vector<DirichletItem> dirichlet_items;
     std::vector<PointLoad>     point_loads;
     std::vector<PointLoad>     nodal_loads; // on every vertex of a boundary

@@ -115,6 +115,12 @@ namespace glissade
       return slave_body;
     }
 
+    const Body &
+    slave() const
+    {
+      return slave_body;
+    }
+
     /** nullptr for a rigid obstacle. */
     Body *
     master()

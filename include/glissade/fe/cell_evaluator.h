@@ -4,6 +4,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
 
+#include <vector>
+
 namespace glissade
 {
   using namespace dealii;
@@ -68,5 +70,25 @@ namespace glissade
     /** Outward unit normal in the reference configuration (faces only). */
     virtual Tensor<1, 2>
     normal_vector(const unsigned int q) const = 0;
+
+    /** The displacement at point q, from the cell's dof values. */
+    Tensor<1, 2>
+    value(const std::vector<double> &dof_values, const unsigned int q) const
+    {
+      Tensor<1, 2> u;
+      for (unsigned int i = 0; i < dof_values.size(); ++i)
+        u[displacement_component(i)] += dof_values[i] * shape_value(i, q);
+      return u;
+    }
+
+    /** The displacement gradient at point q, from the cell's dof values. */
+    Tensor<2, 2>
+    gradient(const std::vector<double> &dof_values, const unsigned int q) const
+    {
+      Tensor<2, 2> H;
+      for (unsigned int i = 0; i < dof_values.size(); ++i)
+        H[displacement_component(i)] += dof_values[i] * shape_grad(i, q);
+      return H;
+    }
   };
 } // namespace glissade

@@ -46,6 +46,16 @@ namespace glissade
     static std::string
     study_type(const std::string &filename);
 
+    /**
+     * Parses a study driver's file into `prm` (whose entries the driver has
+     * declared) and applies the command line's overrides, with the same
+     * messages as for scenes.
+     */
+    static void
+    parse_study(ParameterHandler               &prm,
+                const std::string              &filename,
+                const std::vector<std::string> &overrides);
+
     /** Every parameter with its documentation and default, for one body. */
     static void
     print_parameters(std::ostream &out);
