@@ -6,6 +6,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/case3_study.h>
+#include <glissade/study/contact_case_study.h>
 #include <glissade/study/geometric_study.h>
 
 #include <cstring>
@@ -62,6 +63,11 @@ main(int argc, char **argv)
       if (study == "geometric")
         {
           GeometricStudy::run(argv[1], overrides);
+          return 0;
+        }
+      if (study == "case1" || study == "case2")
+        {
+          ContactCaseStudy::run(argv[1], overrides);
           return 0;
         }
       if (study == "case3")

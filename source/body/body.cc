@@ -395,6 +395,23 @@ namespace glissade
 
 
 
+  std::vector<Tensor<1, 2>>
+  Body::vertex_displacements() const
+  {
+    std::vector<Tensor<1, 2>> result(mesh.n_vertices());
+    for (const auto &cell : dofs.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const auto value_dofs =
+            BoundaryConditions::cell_vertex_dofs(cell, v, *element_space);
+          for (unsigned int d = 0; d < 2; ++d)
+            result[cell->vertex_index(v)][d] = solution(value_dofs[d]);
+        }
+    return result;
+  }
+
+
+
   double
   Body::max_displacement() const
   {

@@ -95,6 +95,117 @@ namespace glissade
       return result;
     }
 
+    // Solves the dense system A x = b in place by LU with partial pivoting;
+    // false if A is singular to working precision.
+    bool
+    solve_dense(std::vector<double> &A, std::vector<double> &b,
+                const std::size_t m)
+    {
+      for (std::size_t c = 0; c < m; ++c)
+        {
+          std::size_t pivot = c;
+          for (std::size_t i = c + 1; i < m; ++i)
+            if (std::abs(A[i * m + c]) > std::abs(A[pivot * m + c]))
+              pivot = i;
+          if (!(std::abs(A[pivot * m + c]) > 0.))
+            return false;
+          if (pivot != c)
+            {
+              for (std::size_t j = 0; j < m; ++j)
+                std::swap(A[c * m + j], A[pivot * m + j]);
+              std::swap(b[c], b[pivot]);
+            }
+          const double inverse = 1. / A[c * m + c];
+          for (std::size_t i = c + 1; i < m; ++i)
+            {
+              const double factor = A[i * m + c] * inverse;
+              if (factor == 0.)
+                continue;
+              for (std::size_t j = c + 1; j < m; ++j)
+                A[i * m + j] -= factor * A[c * m + j];
+              b[i] -= factor * b[c];
+            }
+        }
+      for (std::size_t c = m; c-- > 0;)
+        {
+          double sum = b[c];
+          for (std::size_t j = c + 1; j < m; ++j)
+            sum -= A[c * m + j] * b[j];
+          b[c] = sum / A[c * m + c];
+        }
+      for (std::size_t c = 0; c < m; ++c)
+        if (!std::isfinite(b[c]))
+          return false;
+      return true;
+    }
+
+    // Active-set polish: with the statuses of the current iterate fixed
+    // (open: r = 0; closed frictionless: g = 0; stick: u = 0; slip: g = 0
+    // with r_t = -mu r_n sign(u_t), the sign taken from the iterate's r_t),
+    // the contact law is a linear system in the closed nodes' reactions.
+    // Its solution is the exact answer if the statuses were right, which
+    // the caller checks with the residuals of the law. Returns false if
+    // nothing is closed or the system is singular.
+    bool
+    polish(const ComplianceMatrix     &W,
+           const std::vector<Vector2> &u_free,
+           const std::vector<double>  &mu,
+           const std::vector<Vector2> &r,
+           std::vector<Vector2>       &polished)
+    {
+      const unsigned int n_nodes = W.n_nodes();
+      // Unknowns: r_n of every closed node, and r_t of every stick node.
+      std::vector<int>    normal_unknown(n_nodes, -1), tangential_unknown(n_nodes, -1);
+      std::vector<double> slip_sign(n_nodes, 0.);
+      std::size_t         m = 0;
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        {
+          const NodeStatus status = BiPotentialSolver::classify(r[k], mu[k]);
+          if (status == NodeStatus::open)
+            continue;
+          normal_unknown[k] = m++;
+          if (status == NodeStatus::stick)
+            tangential_unknown[k] = m++;
+          else if (mu[k] > 0.)
+            slip_sign[k] = r[k][t] >= 0. ? 1. : -1.;
+        }
+      if (m == 0)
+        return false;
+      // Row of each equation: g_k = 0 in the row of r_n(k), u_t,k = 0 in
+      // the row of r_t(k).
+      std::vector<double> A(m * m, 0.), b(m, 0.);
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        for (const unsigned int component : {n, t})
+          {
+            const int row = component == n ? normal_unknown[k] : tangential_unknown[k];
+            if (row < 0)
+              continue;
+            b[row] = -u_free[k][component];
+            for (unsigned int l = 0; l < n_nodes; ++l)
+              {
+                if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
+                  continue;
+                const ComplianceMatrix::Block w = W.block(k, l);
+                A[row * m + normal_unknown[l]] +=
+                  w[component][n] + slip_sign[l] * mu[l] * w[component][t];
+                if (tangential_unknown[l] >= 0)
+                  A[row * m + tangential_unknown[l]] += w[component][t];
+              }
+          }
+      if (!solve_dense(A, b, m))
+        return false;
+      polished.assign(n_nodes, Vector2{{0., 0.}});
+      for (unsigned int k = 0; k < n_nodes; ++k)
+        if (normal_unknown[k] >= 0)
+          {
+            polished[k][n] = b[normal_unknown[k]];
+            polished[k][t] = tangential_unknown[k] >= 0 ?
+                               b[tangential_unknown[k]] :
+                               slip_sign[k] * mu[k] * polished[k][n];
+          }
+      return true;
+    }
+
     double
     natural_scale(const ComplianceMatrix &W)
     {
@@ -357,6 +468,38 @@ namespace glissade
                 break;
               }
           }
+        else if (settings.polish_period > 0 &&
+                 (sweep % settings.polish_period == 0 ||
+                  sweep == settings.max_sweeps))
+          {
+            // Gauss-Seidel finds the statuses long before the values when W
+            // is ill-conditioned (a stiff slave on a soft master: the
+            // reactions of neighbouring nodes trade off along an almost
+            // null direction of W). With the statuses fixed the law is
+            // linear: solve it, and keep the answer if it satisfies the law.
+            std::vector<Vector2> candidate, candidate_u;
+            if (polish(W, u_free, mu, r, candidate))
+              {
+                compute_displacement(W, u_free, candidate, candidate_u);
+                const double bound =
+                  settings.residual_tolerance *
+                  std::max(free_length, scale * max_norm(candidate));
+                const Residuals residuals =
+                  residuals_of(candidate_u, candidate, mu, scale);
+                if (residuals.complementarity <= bound &&
+                    residuals.friction <= bound &&
+                    residuals.max_cone_violation <= bound)
+                  {
+                    r                     = std::move(candidate);
+                    u                     = std::move(candidate_u);
+                    u_is_exact            = true;
+                    result.residual_bound = bound;
+                    result.polished       = true;
+                    result.outcome        = Outcome::converged;
+                    break;
+                  }
+              }
+          }
       }
 
     // 4. Report on exactly what is returned.
@@ -385,7 +528,7 @@ namespace glissade
 
     if (result.outcome == Outcome::converged)
       message << "BiPotentialSolver: converged in " << result.sweeps
-              << " sweeps";
+              << " sweeps" << (result.polished ? " (active-set polish)" : "");
     else if (result.outcome == Outcome::max_sweeps_reached)
       {
         message << "BiPotentialSolver: not converged after " << result.sweeps

@@ -3,6 +3,9 @@
 #include <glissade/base/input_error.h>
 #include <glissade/contact/contact_problem.h>
 
+#include <cstdlib>
+#include <iostream>
+
 namespace glissade
 {
   ContactProblem::ContactProblem(
@@ -241,6 +244,13 @@ namespace glissade
           contact_forces[body_of(active[k], e.body)](e.dof) +=
             e.weight * force[e.component];
       }
+    if (const char *debug = std::getenv("GLISSADE_DEBUG");
+        debug != nullptr && std::string(debug) == "2")
+      for (unsigned int k = 0; k < n; ++k)
+        std::cerr << "      node " << active[k].node->vertex << " segment "
+                  << active[k].node->segment << " s " << active[k].node->s
+                  << " gap " << active[k].node->gap << " r "
+                  << r[k][0] << ' ' << r[k][1] << std::endl;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       if (contact_forces[b].linfty_norm() > 0.)
         {

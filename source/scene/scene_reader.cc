@@ -618,10 +618,13 @@ namespace glissade
   {
     prm.declare_entry("Study",
                       "simulation",
-                      Patterns::Selection("simulation|geometric|case3"),
+                      Patterns::Selection("simulation|geometric|case1|case2|case3"),
                       "simulation: run the scene below. geometric: the "
                       "geometric study of the paper's section 3.3 (see "
-                      "prm/geometric_study.prm); case3: the concentric rings "
+                      "prm/geometric_study.prm); case1, case2: the beam on a "
+                      "half ring and the square between two half rings "
+                      "(sections 4.1, 4.2; prm/case1_study.prm, "
+                      "prm/case2_study.prm); case3: the concentric rings "
                       "of section 4.3 in several variants (see "
                       "prm/case3_default.prm). A study's own entries replace "
                       "these.");

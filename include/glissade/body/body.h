@@ -131,6 +131,13 @@ namespace glissade
     Tensor<1, 2>
     vertex_displacement(const Point<2> &point) const;
 
+    /**
+     * The displacement of every vertex of the mesh, indexed like
+     * triangulation().get_vertices() (zero for unused vertices).
+     */
+    std::vector<Tensor<1, 2>>
+    vertex_displacements() const;
+
     /** Largest nodal displacement norm over the body. */
     double
     max_displacement() const;

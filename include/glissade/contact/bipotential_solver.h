@@ -139,6 +139,14 @@ namespace glissade
        * max_k W_kk[n][n].
        */
       double force_to_length_scale = 0.;
+      /**
+       * Every this many sweeps without convergence (and at the last), fix
+       * the statuses of the iterate and solve the then linear contact law
+       * exactly on the closed nodes (a dense LU of their W block); the
+       * answer is kept only if it satisfies the law's residual test. 0:
+       * never.
+       */
+      unsigned int polish_period = 100;
     };
 
     enum class NodeStatus
@@ -191,6 +199,8 @@ namespace glissade
 
       /** Gauss-Seidel sweeps done (1 for a problem solved by its start). */
       unsigned int sweeps = 0;
+      /** Whether the answer came from the active-set polish. */
+      bool polished = false;
 
       /** Largest change of a node's reaction |delta r_k| in the last sweep. */
       double last_reaction_change = 0.;
