@@ -21,19 +21,6 @@ namespace
   {
     return *std::max_element(values.begin(), values.end());
   }
-
-  /** The increments [first, last) in which the corner node is loaded. */
-  std::pair<unsigned int, unsigned int>
-  contact_phase(const ContactCaseResult &r)
-  {
-    unsigned int first = 0;
-    while (first < r.corner_force.size() && !(r.corner_force[first] > 0.))
-      ++first;
-    unsigned int last = first;
-    while (last < r.corner_force.size() && r.corner_force[last] > 0.)
-      ++last;
-    return {first, last};
-  }
 } // namespace
 
 // Case 1, rigid ring (fig 16): at every increment no beam node is inside
@@ -111,7 +98,7 @@ GLISSADE_TEST(case2_sliding_smoothness)
   std::vector<double> force_roughness, kinks;
   for (const auto &r : runs)
     {
-      const auto [first, last] = contact_phase(r);
+      const auto [first, last] = ContactCaseStudy::contact_phase(r);
       force_roughness.push_back(
         ContactCaseStudy::roughness(r.corner_force, first + 2, last - 1,
                                     r.active_nodes));

@@ -62,6 +62,17 @@ namespace glissade
       return Tensor<1, 2>({-v[0], v[1]});
     }
 
+    /** The vertex of a mesh at a point (looked up once, before the run). */
+    unsigned int
+    vertex_at(const Triangulation<2> &mesh, const Point<2> &point,
+              const std::string &where)
+    {
+      const unsigned int v = GridTools::find_closest_vertex(mesh, point);
+      if (mesh.get_vertices()[v].distance(point) > 1e-9 * GridTools::diameter(mesh))
+        throw InputError(where, "no mesh vertex at the point the study measures");
+      return v;
+    }
+
     /** For every vertex of `a`, the vertex of `b` at its mirror image. */
     std::vector<unsigned int>
     mirror_vertices(const Triangulation<2> &a, const Triangulation<2> &b,
@@ -143,8 +154,24 @@ namespace glissade
     const bool symmetric_scene = left_ring && right_ring && square &&
                                  left_pair && right_pair;
     std::vector<unsigned int> ring_mirror, square_mirror;
+    std::array<unsigned int, 2> crown_vertex;
+    unsigned int                corner_vertex = 0;
     if (symmetric_scene)
       {
+        // The crowns (top of each ring's outer edge, fig 19) and the
+        // square's lower left corner (figs 20-23).
+        for (const unsigned int side : {0u, 1u})
+          {
+            const BodyDescription &ring = side == 0 ? *left_ring : *right_ring;
+            crown_vertex[side] =
+              vertex_at(simulation.body(ring.name).triangulation(),
+                        Point<2>(ring.mesh.center[0],
+                                 ring.mesh.center[1] + ring.mesh.outer_radius),
+                        scene_file + ": Body " + ring.name);
+          }
+        corner_vertex = vertex_at(simulation.body("square").triangulation(),
+                                  square->mesh.corner_1,
+                                  scene_file + ": Body square");
         ring_mirror =
           mirror_vertices(simulation.body("left ring").triangulation(),
                           simulation.body("right ring").triangulation(),
@@ -215,20 +242,11 @@ namespace glissade
           result.symmetry_force.push_back(
             largest_force > 0. ? force_difference / largest_force : 0.);
 
-          std::array<double, 2> crowns;
-          for (const unsigned int side : {0u, 1u})
-            {
-              const BodyDescription &ring = side == 0 ? *left_ring : *right_ring;
-              const Point<2> crown(ring.mesh.center[0],
-                                   ring.mesh.center[1] + ring.mesh.outer_radius);
-              crowns[side] = simulation.body(ring.name).vertex_displacement(crown)[1];
-            }
-          result.crown_uy.push_back(crowns);
-
-          const Point<2> corner = square->mesh.corner_1;
-          result.corner_ux.push_back(
-            simulation.body("square").vertex_displacement(corner)[0]);
-          result.corner_force.push_back(left_pair->node_at(corner).force().norm());
+          result.crown_uy.push_back({{u_left[crown_vertex[0]][1],
+                                      u_right[crown_vertex[1]][1]}});
+          result.corner_ux.push_back(u_square[corner_vertex][0]);
+          result.corner_force.push_back(
+            left_pair->node_at(square->mesh.corner_1).force().norm());
         }
     };
 
@@ -314,6 +332,20 @@ namespace glissade
 
 
 
+  std::pair<unsigned int, unsigned int>
+  ContactCaseStudy::contact_phase(const ContactCaseResult &r)
+  {
+    unsigned int first = 0;
+    while (first < r.corner_force.size() && !(r.corner_force[first] > 0.))
+      ++first;
+    unsigned int last = first;
+    while (last < r.corner_force.size() && r.corner_force[last] > 0.)
+      ++last;
+    return {first, last};
+  }
+
+
+
   double
   ContactCaseStudy::kink_concentration(const std::vector<double> &f,
                                        const unsigned int         first,
@@ -339,19 +371,6 @@ namespace glissade
 
   namespace
   {
-    /** The increments [first, last) in which the corner carries a force. */
-    std::pair<unsigned int, unsigned int>
-    contact_phase(const ContactCaseResult &r)
-    {
-      unsigned int first = 0;
-      while (first < r.corner_force.size() && !(r.corner_force[first] > 0.))
-        ++first;
-      unsigned int last = first;
-      while (last < r.corner_force.size() && r.corner_force[last] > 0.)
-        ++last;
-      return {first, last};
-    }
-
     std::string
     optional(const std::vector<double> &values, const unsigned int i)
     {
@@ -372,14 +391,14 @@ namespace glissade
                           "symmetry_displacement,symmetry_force,crown_left_uy,"
                           "crown_right_uy,corner_ux,corner_force\n";
       for (const auto &r : runs)
-        for (unsigned int i = 0; i < r.active_nodes.size(); ++i)
-          {
-            std::vector<double> left, right;
-            for (const auto &c : r.crown_uy)
-              {
-                left.push_back(c[0]);
-                right.push_back(c[1]);
-              }
+        {
+          std::vector<double> left, right;
+          for (const auto &c : r.crown_uy)
+            {
+              left.push_back(c[0]);
+              right.push_back(c[1]);
+            }
+          for (unsigned int i = 0; i < r.active_nodes.size(); ++i)
             history.stream() << r.variant << ',' << i + 1 << ',' << r.active_nodes[i]
                              << ',' << optional(r.min_obstacle_distance, i) << ','
                              << optional(r.symmetry_displacement, i) << ','
@@ -387,7 +406,7 @@ namespace glissade
                              << optional(left, i) << ',' << optional(right, i) << ','
                              << optional(r.corner_ux, i) << ','
                              << optional(r.corner_force, i) << '\n';
-          }
+        }
       history.commit();
 
       for (const auto &r : runs)

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glissade
@@ -98,6 +99,13 @@ namespace glissade
               const unsigned int               first,
               const unsigned int               last,
               const std::vector<unsigned int> &loaded_nodes = {});
+
+    /**
+     * The increments [first, last) of the first stretch in which the
+     * corner node of a case-2 run carries a force.
+     */
+    static std::pair<unsigned int, unsigned int>
+    contact_phase(const ContactCaseResult &result);
 
     /**
      * How piecewise linear a history is: the share of the total
