@@ -320,6 +320,68 @@ namespace glissade
 
 
   void
+  Body::set_contact_dofs(
+    const std::vector<types::global_dof_index> &contact_dofs)
+  {
+    for (const auto &load : boundary_conditions->surface_loads())
+      if (load.is_pressure)
+        tangent_is_symmetric = false;
+
+    contact_position.assign(n_dofs(), -1);
+    contact_rows.clear();
+    std::vector<long> unknowns;
+    for (const auto dof : contact_dofs)
+      {
+        if (contact_position[dof] >= 0)
+          continue;
+        contact_position[dof] = contact_rows.size();
+        std::vector<std::pair<long, double>> row;
+        if (const auto *line = constraints.get_constraint_entries(dof))
+          for (const auto &[j, w] : *line)
+            row.emplace_back(j, w);
+        else if (!constraints.is_constrained(dof))
+          row.emplace_back(dof, 1.);
+        // (a fixed dof has an empty row: it never moves)
+        for (const auto &[j, w] : row)
+          unknowns.push_back(j);
+        contact_rows.push_back(row);
+      }
+    factorization.use_cholesky(tangent_is_symmetric, unknowns);
+    contact_rows_resolved.clear();
+  }
+
+
+
+  bool
+  Body::prepare_contact_compliance()
+  {
+    if (contact_rows.empty() || !factorization.has_inverse_block())
+      return false;
+    SchurCholesky &cholesky = factorization.cholesky();
+    cholesky.compute_inverse_block();
+    contact_rows_resolved = contact_rows;
+    for (auto &row : contact_rows_resolved)
+      for (auto &[j, w] : row)
+        j = cholesky.last_position(j);
+    return true;
+  }
+
+
+
+  double
+  Body::contact_compliance(const long a, const long b) const
+  {
+    const SchurCholesky &cholesky = factorization.cholesky();
+    double value = 0.;
+    for (const auto &[i, wi] : contact_rows_resolved[a])
+      for (const auto &[j, wj] : contact_rows_resolved[b])
+        value += wi * wj * cholesky.inverse_entry(i, j);
+    return value;
+  }
+
+
+
+  void
   Body::solve_homogeneous(const Vector<double> &force, Vector<double> &x) const
   {
     x = force;

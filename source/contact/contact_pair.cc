@@ -340,6 +340,25 @@ namespace glissade
 
 
 
+  std::vector<types::global_dof_index>
+  ContactPair::contact_dofs(const Body &body) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    if (&body == &slave_body)
+      for (const auto &node : slave_nodes)
+        dofs.insert(dofs.end(), node.dofs.begin(), node.dofs.end());
+    if (&body == master_body)
+      {
+        for (const auto &d : master_dofs)
+          dofs.insert(dofs.end(), d.begin(), d.end());
+        for (const auto &d : master_hermite_dofs)
+          dofs.insert(dofs.end(), d.begin(), d.end());
+      }
+    return dofs;
+  }
+
+
+
   bool
   ContactPair::project(ContactNode &node, const bool keep_segment) const
   {

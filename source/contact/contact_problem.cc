@@ -26,6 +26,18 @@ namespace glissade
         *find(c.slave_body),
         c.master_body == "rigid" ? nullptr : find(c.master_body),
         scene.source));
+
+    for (const auto &body : bodies)
+      {
+        std::vector<types::global_dof_index> dofs;
+        for (const auto &pair : pairs)
+          {
+            const auto d = pair->contact_dofs(*body);
+            dofs.insert(dofs.end(), d.begin(), d.end());
+          }
+        if (!dofs.empty())
+          body->set_contact_dofs(dofs);
+      }
   }
 
 
@@ -164,6 +176,12 @@ namespace glissade
     // dofs per node and direction), then W_kl = H_kin,k T_l. This costs
     // O(n e m + n^2 e) instead of O(n^2 e^2) for e map entries per node,
     // which matters for B-spline masters (e ~ 50).
+    struct LocalEntry
+    {
+      unsigned int index; // among the body's contact dofs of this iteration
+      unsigned int component;
+      double       weight;
+    };
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         std::map<types::global_dof_index, unsigned int> index;
@@ -181,38 +199,74 @@ namespace glissade
             dofs.push_back(dof);
           }
         const unsigned int m = dofs.size();
-        for (unsigned int l = 0; l < n; ++l)
-          for (unsigned int col = 0; col < 2; ++col)
+
+        // The maps of every node restricted to this body, by local index.
+        std::vector<std::vector<LocalEntry>> kinematics(n), forces(n);
+        std::vector<bool>                    is_force_dof(m, false);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            for (const auto &e : active[k].node->kinematics)
+              if (body_of(active[k], e.body) == b)
+                kinematics[k].push_back({index[e.dof], e.component, e.weight});
+            for (const auto &e : active[k].node->forces)
+              if (body_of(active[k], e.body) == b)
+                {
+                  forces[k].push_back({index[e.dof], e.component, e.weight});
+                  is_force_dof[index[e.dof]] = true;
+                }
+          }
+
+        // The columns of C at the force dofs (m x m, column major): from
+        // the body's Cholesky factor when it has one, else by solves.
+        bool              from_factor = bodies[b]->prepare_contact_compliance();
+        std::vector<long> position(m, -1);
+        for (unsigned int i = 0; i < m && from_factor; ++i)
+          {
+            position[i] = bodies[b]->contact_dof_position(dofs[i]);
+            from_factor = position[i] >= 0;
+          }
+        std::vector<double> C(std::size_t(m) * m, 0.);
+        for (unsigned int j = 0; j < m; ++j)
+          if (is_force_dof[j])
             {
-              std::vector<double> t(m, 0.);
-              bool                any = false;
-              for (const auto &f : active[l].node->forces)
-                if (body_of(active[l], f.body) == b)
-                  {
-                    any = true;
-                    const double c =
-                      f.weight * frame(*active[l].node, col)[f.component];
-                    const Vector<double> &x = column(b, f.dof);
-                    for (unsigned int i = 0; i < m; ++i)
-                      t[i] += c * x(dofs[i]);
-                  }
-              if (!any)
-                continue;
+              double *c = &C[std::size_t(j) * m];
+              if (from_factor)
+                for (unsigned int i = 0; i < m; ++i)
+                  c[i] = bodies[b]->contact_compliance(position[i], position[j]);
+              else
+                {
+                  const Vector<double> &x = column(b, dofs[j]);
+                  for (unsigned int i = 0; i < m; ++i)
+                    c[i] = x(dofs[i]);
+                }
+            }
+
+        std::vector<double> t(m);
+        for (unsigned int l = 0; l < n; ++l)
+          for (unsigned int col = 0; col < 2 && !forces[l].empty(); ++col)
+            {
+              std::fill(t.begin(), t.end(), 0.);
+              for (const auto &f : forces[l])
+                {
+                  const double coefficient =
+                    f.weight * frame(*active[l].node, col)[f.component];
+                  const double *c = &C[std::size_t(f.index) * m];
+                  for (unsigned int i = 0; i < m; ++i)
+                    t[i] += coefficient * c[i];
+                }
               for (unsigned int k = 0; k < n; ++k)
                 {
-                  ComplianceMatrix::Block block   = {{{{0., 0.}}, {{0., 0.}}}};
-                  bool                    coupled = false;
-                  for (const auto &e : active[k].node->kinematics)
-                    if (body_of(active[k], e.body) == b)
-                      {
-                        coupled = true;
-                        const double v = e.weight * t[index[e.dof]];
-                        for (unsigned int row = 0; row < 2; ++row)
-                          block[row][col] +=
-                            frame(*active[k].node, row)[e.component] * v;
-                      }
-                  if (coupled)
-                    W.add_block(k, l, block);
+                  if (kinematics[k].empty())
+                    continue;
+                  ComplianceMatrix::Block block = {{{{0., 0.}}, {{0., 0.}}}};
+                  for (const auto &e : kinematics[k])
+                    {
+                      const double v = e.weight * t[e.index];
+                      for (unsigned int row = 0; row < 2; ++row)
+                        block[row][col] +=
+                          frame(*active[k].node, row)[e.component] * v;
+                    }
+                  W.add_block(k, l, block);
                 }
             }
       }

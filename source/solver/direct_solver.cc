@@ -82,18 +82,47 @@ namespace glissade
           }
       }
     row_start[n] = k;
+    pattern = &sp;
+    if (!same_pattern && symbolic != nullptr)
+      umfpack_dl_free_symbolic(&symbolic);
 
-    double control[UMFPACK_CONTROL];
+    // The pattern is symmetric (it comes from a DoFHandler), so the rows are
+    // also the columns of A: Cholesky reads the arrays as they are.
+    cholesky_used = false;
+    if (symmetric)
+      {
+        const double before =
+          schur.analysis_seconds + schur.factorization_seconds;
+        const bool ok =
+          schur.factorize(n, row_start, column_index, values, !same_pattern);
+        numeric_seconds +=
+          schur.analysis_seconds + schur.factorization_seconds - before;
+        if (ok)
+          {
+            cholesky_used = true;
+            ++n_cholesky;
+            free_numeric();
+            return;
+          }
+      }
+    factorize_lu();
+  }
+
+
+
+  void
+  DirectSolver::factorize_lu()
+  {
+    ++n_lu;
+    const long n = row_start.size() - 1;
+    double     control[UMFPACK_CONTROL];
     umfpack_dl_defaults(control);
     Timer timer;
-    if (!same_pattern || symbolic == nullptr)
+    if (symbolic == nullptr)
       {
-        if (symbolic != nullptr)
-          umfpack_dl_free_symbolic(&symbolic);
         check(umfpack_dl_symbolic(n, n, row_start.data(), column_index.data(),
                                   values.data(), &symbolic, control, nullptr),
               "symbolic analysis");
-        pattern = &sp;
         symbolic_seconds += timer.wall_time();
         timer.restart();
       }
@@ -108,8 +137,23 @@ namespace glissade
 
 
   void
+  DirectSolver::use_cholesky(const bool               symmetric_matrices,
+                             const std::vector<long> &last_unknowns)
+  {
+    symmetric = symmetric_matrices;
+    schur.set_last_unknowns(last_unknowns);
+  }
+
+
+
+  void
   DirectSolver::solve(Vector<double> &x) const
   {
+    if (cholesky_used)
+      {
+        schur.solve(x);
+        return;
+      }
     double control[UMFPACK_CONTROL];
     umfpack_dl_defaults(control);
     control[UMFPACK_IRSTEP] = 0;

@@ -67,6 +67,20 @@ namespace glissade
     void
     factorize();
 
+    /** The tangent of the last assembly (benchmarks factorise it again). */
+    const SparseMatrix<double> &
+    tangent_matrix() const
+    {
+      return tangent;
+    }
+
+    /** The factorisation (method used, timings). */
+    const DirectSolver &
+    direct_solver() const
+    {
+      return factorization;
+    }
+
     /** Solves K du = rhs; constrained dofs get their prescribed increment. */
     void
     solve(const Vector<double> &rhs, Vector<double> &increment) const;
@@ -78,6 +92,37 @@ namespace glissade
      */
     void
     solve_homogeneous(const Vector<double> &force, Vector<double> &x) const;
+
+    /**
+     * The dofs that contact may load (declared contact areas). When the
+     * tangent is symmetric they are eliminated last, and the compliance
+     * between any two of them -- the entries of solve_homogeneous() at
+     * contact dofs -- comes from the factorisation itself.
+     */
+    void
+    set_contact_dofs(const std::vector<types::global_dof_index> &contact_dofs);
+
+    /**
+     * Makes the contact compliance of the current factorisation available;
+     * false if it is not (LU fall-back, or no contact dofs set): the caller
+     * then uses solve_homogeneous().
+     */
+    bool
+    prepare_contact_compliance();
+
+    /** Position of a dof among the contact dofs, or -1. */
+    long
+    contact_dof_position(const types::global_dof_index dof) const
+    {
+      return contact_position[dof];
+    }
+
+    /**
+     * Compliance between the contact dofs at positions a and b, that is
+     * x_a for x = solve_homogeneous(e_b), after prepare_contact_compliance().
+     */
+    double
+    contact_compliance(const long a, const long b) const;
 
     /**
      * Contact forces acting on the body (from the last contact solve); the
@@ -209,6 +254,16 @@ namespace glissade
     SparsityPattern           sparsity;
     SparseMatrix<double>      tangent;
     DirectSolver              factorization;
+    bool                      tangent_is_symmetric = true; // no follower loads
+
+    /**
+     * Per contact dof, the free unknowns it follows (itself, or the entries
+     * of its constraint line) with weights, as positions among the
+     * factorisation's last unknowns once prepared.
+     */
+    std::vector<long>                                       contact_position;
+    std::vector<std::vector<std::pair<long, double>>>       contact_rows;
+    std::vector<std::vector<std::pair<long, double>>>       contact_rows_resolved;
 
     Vector<double> solution;
     Vector<double> stored_solution;

@@ -131,6 +131,14 @@ namespace glissade
     unsigned int
     n_active() const;
 
+    /**
+     * Every dof of `body` that this pair's dof maps can ever touch: the
+     * slave nodes' dofs, or the master curve's (with the Hermite
+     * derivatives). The bodies eliminate these last in their factorisation.
+     */
+    std::vector<types::global_dof_index>
+    contact_dofs(const Body &body) const;
+
     /** Sum of the forces on the slave nodes (global frame). */
     Tensor<1, 2>
     total_force() const;

@@ -3,6 +3,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <glissade/solver/schur_cholesky.h>
+
 #include <vector>
 
 namespace glissade
@@ -18,6 +20,12 @@ namespace glissade
    * - a solve skips UMFPACK's iterative refinement: Newton and the contact
    *   loop correct the residual anyway, and the compliance matrix needs one
    *   back-substitution per contact dof and iteration, so each one counts.
+   *
+   * A symmetric matrix (no follower loads) is factorised by Cholesky with
+   * the contact dofs eliminated last (SchurCholesky), which also yields the
+   * block of A^-1 on those dofs without any back-substitution; if Cholesky
+   * finds the matrix not positive definite (a tangent past a limit point),
+   * that factorisation falls back on LU.
    */
   class DirectSolver
   {
@@ -28,7 +36,14 @@ namespace glissade
     operator=(const DirectSolver &) = delete;
     ~DirectSolver();
 
-    /** LU of A (symbolic analysis reused while the pattern is the same). */
+    /**
+     * Whether the matrices to come are symmetric, so that Cholesky may be
+     * tried, and which unknowns it should eliminate last.
+     */
+    void
+    use_cholesky(const bool symmetric, const std::vector<long> &last_unknowns);
+
+    /** Cholesky or LU of A (analysis reused while the pattern is the same). */
     void
     factorize(const SparseMatrix<double> &matrix);
 
@@ -36,13 +51,40 @@ namespace glissade
     void
     solve(Vector<double> &rhs_and_solution) const;
 
-    /** Seconds spent in the symbolic and numeric phases so far. */
+    /**
+     * True if the last factorisation was Cholesky: the block of A^-1 on the
+     * last unknowns is then available through cholesky().
+     */
+    bool
+    has_inverse_block() const
+    {
+      return cholesky_used;
+    }
+
+    SchurCholesky &
+    cholesky()
+    {
+      return schur;
+    }
+
+    const SchurCholesky &
+    cholesky() const
+    {
+      return schur;
+    }
+
+    /** Seconds spent in the analysis and numeric phases so far (both methods). */
     double symbolic_seconds = 0.;
     double numeric_seconds  = 0.;
+    /** Factorisations by each method (LU counts the Cholesky fall-backs). */
+    unsigned int n_cholesky = 0, n_lu = 0;
 
   private:
     void
     free_numeric();
+
+    void
+    factorize_lu();
 
     const SparsityPattern *pattern = nullptr;
     std::vector<long>      row_start, column_index;
@@ -50,5 +92,9 @@ namespace glissade
     void                  *symbolic = nullptr;
     void                  *numeric  = nullptr;
     mutable std::vector<double> solution;
+
+    bool          symmetric     = false;
+    bool          cholesky_used = false;
+    SchurCholesky schur;
   };
 } // namespace glissade

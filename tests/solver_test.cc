@@ -1,0 +1,148 @@
+// The factorisation behind the condensed contact problem: the block of
+// A^-1 on the contact dofs from a Cholesky factor with those dofs ordered
+// last must equal the one obtained by back-substitutions with an
+// independent LU (UMFPACK); a matrix that is not positive definite must
+// fall back on LU and still be solved.
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+
+#include <glissade/solver/direct_solver.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+
+using namespace dealii;
+using namespace glissade;
+using glissade_tests::check;
+
+namespace
+{
+  /** 5-point Laplacian on an n x n grid, plus shift * identity. */
+  void
+  make_grid_matrix(const unsigned int     n,
+                   const double           shift,
+                   SparsityPattern       &pattern,
+                   SparseMatrix<double>  &matrix)
+  {
+    const unsigned int     size = n * n;
+    DynamicSparsityPattern dsp(size, size);
+    const auto             id = [n](unsigned int i, unsigned int j) {
+      return i * n + j;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          dsp.add(id(i, j), id(i, j));
+          if (i > 0)
+            dsp.add(id(i, j), id(i - 1, j));
+          if (i + 1 < n)
+            dsp.add(id(i, j), id(i + 1, j));
+          if (j > 0)
+            dsp.add(id(i, j), id(i, j - 1));
+          if (j + 1 < n)
+            dsp.add(id(i, j), id(i, j + 1));
+        }
+    pattern.copy_from(dsp);
+    matrix.reinit(pattern);
+    for (unsigned int i = 0; i < size; ++i)
+      for (auto it = pattern.begin(i); it != pattern.end(i); ++it)
+        matrix.set(i, it->column(), it->column() == i ? 4. + shift : -1.);
+  }
+
+  double
+  residual(const SparseMatrix<double> &A,
+           const Vector<double>       &x,
+           const Vector<double>       &b)
+  {
+    Vector<double> r(b.size());
+    A.vmult(r, x);
+    r -= b;
+    return r.linfty_norm() / b.linfty_norm();
+  }
+} // namespace
+
+
+
+GLISSADE_TEST(contact_compliance_block_matches_solves)
+{
+  const unsigned int   n = 40;
+  SparsityPattern      pattern;
+  SparseMatrix<double> A;
+  make_grid_matrix(n, 0.01, pattern, A);
+
+  // "Contact dofs": one edge of the grid and a few scattered unknowns.
+  std::vector<long> last;
+  for (unsigned int j = 0; j < n; ++j)
+    last.push_back(j);
+  for (const long extra : {777L, 1234L, 1599L, 801L})
+    last.push_back(extra);
+
+  DirectSolver cholesky, lu;
+  cholesky.use_cholesky(true, last);
+  cholesky.factorize(A);
+  lu.factorize(A);
+  check(cholesky.has_inverse_block() && cholesky.n_cholesky == 1,
+        "an SPD matrix is factorised by Cholesky");
+  cholesky.cholesky().compute_inverse_block();
+
+  double worst = 0., largest = 0.;
+  for (const long j : last)
+    {
+      Vector<double> column(A.m());
+      column(j) = 1.;
+      lu.solve(column);
+      for (const long i : last)
+        {
+          const double block = cholesky.cholesky().inverse_entry(
+            cholesky.cholesky().last_position(i),
+            cholesky.cholesky().last_position(j));
+          worst   = std::max(worst, std::abs(block - column(i)));
+          largest = std::max(largest, std::abs(column(i)));
+        }
+    }
+  std::cout << "  block of A^-1 on " << last.size()
+            << " last unknowns (1600 in all): largest entry " << largest
+            << ", largest difference to LU back-substitutions " << worst
+            << std::endl;
+  check(worst <= 1e-10 * largest, "inverse block differs from LU solves");
+
+  Vector<double> b(A.m()), x(A.m());
+  for (unsigned int i = 0; i < b.size(); ++i)
+    b(i) = std::sin(0.1 * i) + 0.5;
+  x = b;
+  cholesky.solve(x);
+  const double r = residual(A, x, b);
+  std::cout << "  Cholesky solve: relative residual " << r << std::endl;
+  check(r < 1e-12, "Cholesky solve residual");
+}
+
+
+
+GLISSADE_TEST(contact_compliance_indefinite_falls_back_on_lu)
+{
+  // Laplacian eigenvalues on a 20 x 20 grid lie in (0, 8); a shift of -1
+  // makes the matrix indefinite but leaves it regular.
+  SparsityPattern      pattern;
+  SparseMatrix<double> A;
+  make_grid_matrix(20, -1., pattern, A);
+  DirectSolver solver;
+  solver.use_cholesky(true, {0, 1, 2, 3});
+  solver.factorize(A);
+  std::cout << "  Cholesky factorisations " << solver.n_cholesky << ", LU "
+            << solver.n_lu << std::endl;
+  check(solver.n_lu == 1 && !solver.has_inverse_block(),
+        "an indefinite matrix falls back on LU");
+
+  Vector<double> b(A.m()), x(A.m());
+  for (unsigned int i = 0; i < b.size(); ++i)
+    b(i) = std::cos(0.3 * i);
+  x = b;
+  solver.solve(x);
+  const double r = residual(A, x, b);
+  std::cout << "  LU solve after the fall-back: relative residual " << r
+            << std::endl;
+  check(r < 1e-10, "fall-back solve residual");
+}
