@@ -12,7 +12,10 @@ directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/case3_spread.csv")))
 worst = list(csv.DictReader(open(f"{directory}/case3_worst.csv")))
 variants = list(dict.fromkeys(r["variant"] for r in rows))
-names = {"q4": "Q4", "bspline": "Q4 + B-spline", "hermite": "Hermite"}
+names = {"q4": "Q4", "bspline": "Q4 + B-spline", "hermite": "Hermite (40)"}
+for v in variants:
+    if v.startswith("hermite") and v not in names:
+        names[v] = f"Hermite ({v[len('hermite'):]})"
 fig, axes = plt.subplots(1, 3, figsize=(15, 3.8))
 for v in variants:
     pts = [r for r in rows if r["variant"] == v]

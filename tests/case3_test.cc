@@ -5,6 +5,7 @@
 
 #include "test_tools.h"
 
+#include <algorithm>
 #include <cmath>
 
 using namespace glissade;
@@ -109,12 +110,16 @@ namespace
 // normals by +-pi/40 at every node and breaks the symmetry.
 GLISSADE_TEST(case3_compression_single_ring)
 {
+  // The rings' material, read from their scene.
+  const SceneDescription rings =
+    SceneReader::read_file(source_path("prm/case3_rings.prm"));
+  const std::string young = std::to_string(rings.bodies.at(0).material.young_modulus);
   const std::string single =
     "subsection Scene\n set Bodies = ring\nend\n"
     "subsection Body ring\n subsection Mesh\n  set Type = ring\n"
     "  set Inner radius = 0.5\n  set Outer radius = 2\n"
     "  set Subdivisions = 40, 8\n end\n"
-    " subsection Material\n  set Young modulus = 1000\n"
+    " subsection Material\n  set Young modulus = " + young + "\n"
     "  set Poisson ratio = 0.3\n end\n"
     " subsection Boundary conditions\n  set Fixed = inner: xy\n"
     "  set Nodal loads = outer: -10*x/sqrt(x^2+y^2)*t, -10*y/sqrt(x^2+y^2)*t\n"
@@ -171,4 +176,56 @@ GLISSADE_TEST(case3_compression_single_ring)
           check(asymmetry(outer) < 1e-8, "Hermite should stay symmetric");
         }
     }
+}
+
+// The Hermite ripple (paper, figs 27-28): the contact force on node
+// (1.25, 0) differs from the B-spline's by a ripple that follows the outer
+// ring's elements, and the two agree where the node faces a master node and
+// at mid-element. Two elements of rotation (18 degrees, 100 increments).
+GLISSADE_TEST(case3_hermite_ripple_period)
+{
+  const auto run_two_elements = [](const std::string &variant) {
+    return Case3Study::run_variant(source_path("prm/case3_rings.prm"), variant,
+                                   18., 100, "case3_ripple_test");
+  };
+  const Case3Result bspline = run_two_elements("bspline"),
+                    hermite = run_two_elements("hermite");
+  // Ripple d(i) over the rotation increments (the first 10 compress).
+  std::vector<double> d;
+  for (unsigned int i = 10; i < hermite.node_force.size(); ++i)
+    d.push_back(hermite.node_force[i] - bspline.node_force[i]);
+  const double amplitude = *std::max_element(d.begin(), d.end()) -
+                           *std::min_element(d.begin(), d.end());
+  double largest = 0.;
+  for (const double v : d)
+    largest = std::max(largest, std::abs(v));
+  const auto mismatch = [&](const unsigned int lag) {
+    double worst = 0.;
+    for (unsigned int i = 0; i + lag < d.size(); ++i)
+      worst = std::max(worst, std::abs(d[i + lag] - d[i]));
+    return worst / amplitude;
+  };
+  // One element of the outer ring = 9 degrees = 50 increments.
+  unsigned int period = 0;
+  for (unsigned int lag = 30; lag <= 70; ++lag)
+    if (period == 0 || mismatch(lag) < mismatch(period))
+      period = lag;
+  std::cout << "  ripple Hermite - B-spline on node (1.25, 0): amplitude "
+            << amplitude << " N on " << bspline.node_force.back()
+            << " N; period found " << period
+            << " increments (one element: 50); mismatch after one element "
+            << mismatch(50) * 100. << " % of the amplitude, after half an "
+            << "element " << mismatch(25) * 100. << " %" << std::endl;
+  check(amplitude > 1e-4 * bspline.node_force.back(),
+        "the Hermite ripple should be measurable");
+  check(std::abs(double(period) - 50.) <= 5.,
+        "the ripple's period should be one element within 10 %");
+  check(mismatch(50) < 0.1, "the ripple should repeat after one element");
+  // Where the two smoothings agree (paper, fig 27): facing a master node
+  // (increment 50: s = 1) and at mid-element (increment 25: s = 0.5).
+  std::cout << "  |d| facing a master node " << std::abs(d[49])
+            << ", at mid-element " << std::abs(d[24]) << ", largest "
+            << largest << std::endl;
+  check(std::abs(d[49]) < 0.3 * largest && std::abs(d[24]) < 0.3 * largest,
+        "Hermite and B-spline should agree at a master node and mid-element");
 }

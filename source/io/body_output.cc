@@ -67,6 +67,11 @@ namespace glissade
       data_out.add_data_vector(contact_forces, contact_force);
     const unsigned int degree =
       per_dim == 1 ? element_space->finite_element().degree : 1;
+    // No time stamp in the file: the same scene must give the same bytes
+    // (ctest -R determinism).
+    DataOutBase::VtkFlags flags;
+    flags.print_date_and_time = false;
+    data_out.set_flags(flags);
     data_out.build_patches(element_space->mapping(),
                            degree,
                            DataOut<2>::curved_inner_cells);

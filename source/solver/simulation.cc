@@ -208,7 +208,18 @@ namespace glissade
         pvd_records[b].emplace_back(t, vtu);
         AtomicFile pvd(scene.output.directory + "/" + all_bodies[b]->name() +
                        ".pvd");
-        DataOutBase::write_pvd_record(pvd.stream(), pvd_records[b]);
+        // Written here rather than by DataOutBase::write_pvd_record, which
+        // stamps the date into the file: the same scene must give the same
+        // bytes (ctest -R determinism).
+        pvd.stream() << "<?xml version=\"1.0\"?>\n"
+                     << "<VTKFile type=\"Collection\" version=\"0.1\" "
+                        "ByteOrder=\"LittleEndian\">\n  <Collection>\n"
+                     << std::setprecision(17);
+        for (const auto &[time, file] : pvd_records[b])
+          pvd.stream() << "    <DataSet timestep=\"" << time
+                       << "\" group=\"\" part=\"0\" file=\"" << file
+                       << "\"/>\n";
+        pvd.stream() << "  </Collection>\n</VTKFile>\n";
         pvd.commit();
       }
     if (scene.output.contact_table_interval == 0)

@@ -43,7 +43,8 @@ namespace glissade
                 const std::string &variant,
                 const double       rotation_degrees,
                 const unsigned int rotation_increments,
-                const std::string &output_directory);
+                const std::string &output_directory,
+                const unsigned int outer_elements = 40);
 
     /** Reads the study's .prm, runs its variants, writes CSV and PNG. */
     static void
