@@ -323,6 +323,8 @@ namespace glissade
   Body::set_contact_dofs(
     const std::vector<types::global_dof_index> &contact_dofs)
   {
+    // Follower pressure makes the tangent unsymmetric: LU, not Cholesky.
+    bool tangent_is_symmetric = true;
     for (const auto &load : boundary_conditions->surface_loads())
       if (load.is_pressure)
         tangent_is_symmetric = false;

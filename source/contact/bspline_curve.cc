@@ -254,11 +254,9 @@ namespace glissade
 
 
   MasterCurve::Point
-  BSplineCurve::value(const unsigned int segment, const double s) const
+  BSplineCurve::combine_control_points(const unsigned int segment,
+                                       const double       b[4]) const
   {
-    assert(segment < n_segments());
-    double b[4];
-    basis(s, b);
     Point c = {{0., 0.}};
     for (int k = 0; k < 4; ++k)
       {
@@ -272,19 +270,23 @@ namespace glissade
 
 
   MasterCurve::Point
+  BSplineCurve::value(const unsigned int segment, const double s) const
+  {
+    assert(segment < n_segments());
+    double b[4];
+    basis(s, b);
+    return combine_control_points(segment, b);
+  }
+
+
+
+  MasterCurve::Point
   BSplineCurve::derivative(const unsigned int segment, const double s) const
   {
     assert(segment < n_segments());
     double b[4];
     basis_derivative(s, b);
-    Point c = {{0., 0.}};
-    for (int k = 0; k < 4; ++k)
-      {
-        const Point &q = control[control_index(int(segment) - 1 + k)];
-        c[0] += b[k] * q[0];
-        c[1] += b[k] * q[1];
-      }
-    return c;
+    return combine_control_points(segment, b);
   }
 
 
@@ -296,14 +298,7 @@ namespace glissade
     assert(segment < n_segments());
     double b[4];
     basis_second_derivative(s, b);
-    Point c = {{0., 0.}};
-    for (int k = 0; k < 4; ++k)
-      {
-        const Point &q = control[control_index(int(segment) - 1 + k)];
-        c[0] += b[k] * q[0];
-        c[1] += b[k] * q[1];
-      }
-    return c;
+    return combine_control_points(segment, b);
   }
 
 

@@ -254,7 +254,6 @@ namespace glissade
     SparsityPattern           sparsity;
     SparseMatrix<double>      tangent;
     DirectSolver              factorization;
-    bool                      tangent_is_symmetric = true; // no follower loads
 
     /**
      * Per contact dof, the free unknowns it follows (itself, or the entries

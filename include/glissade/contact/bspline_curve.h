@@ -88,6 +88,10 @@ namespace glissade
     /** Index of the stored control point that plays the role of Q_i. */
     unsigned int control_index(int i) const;
 
+    /** sum_k b_k Q_{segment-1+k}: the curve or a derivative, by basis b. */
+    Point
+    combine_control_points(const unsigned int segment, const double b[4]) const;
+
     /** Factorisation and Green's function table for N nodes. O(N). */
     void prepare_for_size(unsigned int n);
 
