@@ -17,10 +17,12 @@ namespace
   void
   print_usage(std::ostream &out)
   {
-    out << "usage: glissade <scene.prm> [--set 'Section/Entry=value' ...]\n"
+    out << "usage: glissade <scene.prm> [--set 'Section/Entry=value' ...] "
+           "[--restart]\n"
            "       glissade --print-parameters\n"
            "Runs the scene described by the .prm file; --set overrides an\n"
-           "entry of the file (e.g. --set 'Body beam/Mesh/Subdivisions=60,4').\n";
+           "entry of the file (e.g. --set 'Body beam/Mesh/Subdivisions=60,4');\n"
+           "--restart continues from <Output directory>/checkpoint.bin.\n";
   }
 } // namespace
 
@@ -45,10 +47,13 @@ main(int argc, char **argv)
     }
 
   std::vector<std::string> overrides;
+  bool                     restart = false;
   for (int i = 2; i < argc; ++i)
     {
       if (std::strcmp(argv[i], "--set") == 0 && i + 1 < argc)
         overrides.emplace_back(argv[++i]);
+      else if (std::strcmp(argv[i], "--restart") == 0)
+        restart = true;
       else
         {
           std::cerr << "glissade: unknown argument '" << argv[i] << "'\n";
@@ -60,6 +65,11 @@ main(int argc, char **argv)
   try
     {
       const std::string study = SceneReader::study_type(argv[1]);
+      if (restart && study != "simulation")
+        throw InputError(argv[1],
+                         "--restart continues a scene; this file is a '" +
+                           study + "' study driver, which runs its scenes "
+                                   "from the start");
       if (study == "geometric")
         {
           GeometricStudy::run(argv[1], overrides);
@@ -78,8 +88,12 @@ main(int argc, char **argv)
       const SceneDescription scene =
         SceneReader::read_file(argv[1], overrides);
       Simulation simulation(scene);
-      simulation.run();
+      const bool completed = simulation.run(restart);
       std::cout << simulation.summary() << std::endl;
+      if (!completed)
+        std::cout << "stopped at Checkpoint/Stop after increment; continue "
+                     "with: glissade "
+                  << argv[1] << " --restart" << std::endl;
     }
   catch (const InputError &e)
     {

@@ -5,9 +5,11 @@
 #include <glissade/contact/hermite_curve.h>
 #include <glissade/fe/hermite_space.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace glissade
 {
@@ -431,6 +433,50 @@ namespace glissade
             node.reaction = {{0., 0.}};
             node.status   = BiPotentialSolver::NodeStatus::open;
           }
+      }
+  }
+
+
+
+  void
+  ContactPair::check_initial_state()
+  {
+    begin_step(0.);
+    double       deepest = 0.;
+    unsigned int behind  = 0;
+    for (const auto &node : slave_nodes)
+      if (node.projected && node.gap < 0.)
+        {
+          deepest = std::min(deepest, node.gap);
+          ++behind;
+        }
+    for (auto &node : slave_nodes)
+      {
+        node.active   = false;
+        node.segment  = -1;
+        node.reaction = {{0., 0.}};
+        node.status   = BiPotentialSolver::NodeStatus::open;
+      }
+    const double size =
+      master_body ? std::min(slave_body.size(), master_body->size()) :
+                    slave_body.size();
+    // Interference fits and the sagitta of a faceted circle stay well
+    // below this; a master that faces away puts the slave a whole
+    // thickness behind it.
+    if (deepest < -0.05 * size)
+      {
+        std::ostringstream message;
+        message << "at t = 0, " << behind << " slave nodes of '"
+                << description.slave_body << "/" << description.slave_boundary
+                << "' lie up to " << -deepest << " behind the master "
+                << (master_body ? "surface '" + description.master_body + "/" +
+                                    description.master_boundary + "'" :
+                                  std::string("obstacle"))
+                << ", more than 5 % of the bodies' size (" << size
+                << "): the master must face the slave";
+        throw InputError(description.entry +
+                           (master_body ? "/Master boundary" : "/Obstacle"),
+                         message.str());
       }
   }
 

@@ -20,12 +20,20 @@ namespace glissade
           return b.get();
       return nullptr;
     };
+    // Each pair is built and checked even when another has a mistake: all
+    // of them in one message.
+    InputErrorList mistakes;
     for (const auto &c : scene.contacts)
-      pairs.push_back(std::make_unique<ContactPair>(
-        c,
-        *find(c.slave_body),
-        c.master_body == "rigid" ? nullptr : find(c.master_body),
-        scene.source));
+      mistakes.collect([&]() {
+        auto pair = std::make_unique<ContactPair>(
+          c,
+          *find(c.slave_body),
+          c.master_body == "rigid" ? nullptr : find(c.master_body),
+          scene.source);
+        pair->check_initial_state();
+        pairs.push_back(std::move(pair));
+      });
+    mistakes.throw_if_any();
 
     for (const auto &body : bodies)
       {

@@ -63,7 +63,9 @@ namespace glissade
       data_out.add_data_vector(solution, nodal_displacement);
     data_out.add_data_vector(solution, stress);
     NodalDisplacement contact_force(per_dim, "contact_force");
-    if (contact_forces.linfty_norm() > 0.)
+    // Present in every file of a body that can touch (zero while it does
+    // not), so that ParaView sees the same fields at every time step.
+    if (!contact_rows.empty() || contact_forces.linfty_norm() > 0.)
       data_out.add_data_vector(contact_forces, contact_force);
     const unsigned int degree =
       per_dim == 1 ? element_space->finite_element().degree : 1;

@@ -6,6 +6,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/mesh/mesh_factory.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -150,59 +151,127 @@ namespace glissade
 
 
 
+  namespace
+  {
+    /**
+     * Checks the section structure of a Gmsh file before deal.II reads it:
+     * GridIn::read_msh loops forever on a file cut short before $Nodes and
+     * trusts the declared node and element counts (a wrong digit asks for
+     * gigabytes). Found by the fuzzer (tests/fuzz).
+     */
+    void
+    check_gmsh_structure(const std::vector<std::string> &lines,
+                         const std::string              &file,
+                         const std::string              &entry)
+    {
+      const auto find = [&](const std::string &marker, const std::size_t from) {
+        for (std::size_t i = from; i < lines.size(); ++i)
+          if (lines[i] == marker)
+            return i;
+        throw InputError(entry,
+                         "'" + file + "' has no " + marker +
+                           " line where one is needed (a truncated or "
+                           "damaged Gmsh file?)");
+      };
+      const std::size_t format = find("$MeshFormat", 0);
+      const std::size_t format_end = find("$EndMeshFormat", format);
+      const bool version_2 = format + 1 < format_end &&
+                             lines[format + 1].rfind("2.", 0) == 0;
+      std::size_t from = format_end;
+      for (const std::string section : {"Nodes", "Elements"})
+        {
+          const std::size_t begin = find("$" + section, from);
+          const std::size_t end   = find("$End" + section, begin);
+          from                    = end;
+          // Version 2: "N" then N lines. Version 4: "blocks N ..." then at
+          // least N lines (plus one per block).
+          std::istringstream header(begin + 1 < end ? lines[begin + 1] : "");
+          long long          first = -1, second = -1;
+          header >> first >> second;
+          const long long declared = version_2 ? first : second;
+          const long long present  = static_cast<long long>(end - begin) - 2;
+          if (declared < 0 || (version_2 ? declared != present :
+                                           declared > present))
+            throw InputError(entry,
+                             "'" + file + "' declares " +
+                               std::to_string(declared) + " " +
+                               (section == std::string("Nodes") ?
+                                  "nodes" :
+                                  "elements") +
+                               " but its $" + section + " section has " +
+                               std::to_string(std::max(present, 0ll)) +
+                               " lines");
+        }
+    }
+  } // namespace
+
+
+
   BoundaryNames
   MeshFactory::read_gmsh(const MeshDescription &description,
                          Triangulation<2>      &triangulation,
                          const std::string     &where)
   {
-    std::ifstream in(description.file);
-    if (!in)
-      throw InputError(where + "/Mesh/File",
+    const std::string entry = where + "/Mesh/File";
+    std::ifstream     file(description.file);
+    if (!file)
+      throw InputError(entry,
                        "cannot open mesh file '" + description.file + "'");
+    std::stringstream text;
+    text << file.rdbuf();
+    std::vector<std::string> lines;
+    {
+      std::istringstream in(text.str());
+      for (std::string line; std::getline(in, line);)
+        {
+          while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
+            line.pop_back();
+          lines.push_back(line);
+        }
+    }
+    check_gmsh_structure(lines, description.file, entry);
 
     // deal.II turns the physical tag of each boundary line into its boundary
     // id; the names are in the $PhysicalNames section, which we read here.
     BoundaryNames names;
-    {
-      std::string line;
-      while (std::getline(in, line))
-        if (line.rfind("$PhysicalNames", 0) == 0)
-          {
-            std::getline(in, line);
-            const unsigned int n = std::stoi(line);
-            for (unsigned int i = 0; i < n && std::getline(in, line); ++i)
-              {
-                std::istringstream entry(line);
-                int                dimension = -1, tag = -1;
-                std::string        name;
-                entry >> dimension >> tag;
-                std::getline(entry, name);
-                const auto q0 = name.find('"');
-                const auto q1 = name.rfind('"');
-                if (dimension == 1 && q0 != std::string::npos && q1 > q0)
-                  names[name.substr(q0 + 1, q1 - q0 - 1)] =
-                    static_cast<types::boundary_id>(tag);
-              }
-            break;
-          }
-    }
-    in.clear();
-    in.seekg(0);
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i] == "$PhysicalNames")
+        {
+          for (std::size_t k = i + 2;
+               k < lines.size() && lines[k] != "$EndPhysicalNames";
+               ++k)
+            {
+              std::istringstream line(lines[k]);
+              int                dimension = -1, tag = -1;
+              std::string        name;
+              line >> dimension >> tag;
+              std::getline(line, name);
+              const auto q0 = name.find('"');
+              const auto q1 = name.rfind('"');
+              if (dimension == 1 && tag >= 0 &&
+                  tag < numbers::internal_face_boundary_id &&
+                  q0 != std::string::npos && q1 > q0)
+                names[name.substr(q0 + 1, q1 - q0 - 1)] =
+                  static_cast<types::boundary_id>(tag);
+            }
+          break;
+        }
 
     try
       {
-        GridIn<2> grid_in;
+        std::istringstream in(text.str());
+        GridIn<2>          grid_in;
         grid_in.attach_triangulation(triangulation);
         grid_in.read_msh(in);
       }
     catch (const std::exception &e)
       {
-        throw InputError(where + "/Mesh/File",
+        throw InputError(entry,
                          "cannot read '" + description.file +
                            "' as a Gmsh mesh of quadrilaterals");
       }
     if (!triangulation.all_reference_cells_are_hyper_cube())
-      throw InputError(where + "/Mesh/File",
+      throw InputError(entry,
                        "'" + description.file +
                          "' has non-quadrilateral cells; glissade needs "
                          "quadrilaterals (Recombine in Gmsh)");

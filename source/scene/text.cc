@@ -62,5 +62,33 @@ namespace glissade
       y = std::strtod(coordinates[1].c_str(), &end);
       return *end == '\0';
     }
+
+
+
+    std::string
+    essential_message(const std::exception &e)
+    {
+      std::string       message = e.what();
+      const std::string marker  = "Additional information:";
+      const auto        begin   = message.find(marker);
+      if (begin != std::string::npos)
+        message = message.substr(begin + marker.size());
+      const auto end = message.find("Stacktrace:");
+      if (end != std::string::npos)
+        message = message.substr(0, end);
+      std::string compact;
+      bool        space = false;
+      for (const char c : message)
+        if (c == '\n' || c == ' ' || c == '\t')
+          space = true;
+        else
+          {
+            if (space && !compact.empty())
+              compact += ' ';
+            compact += c;
+            space = false;
+          }
+      return compact;
+    }
   } // namespace text
 } // namespace glissade

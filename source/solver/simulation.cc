@@ -17,8 +17,14 @@ namespace glissade
   Simulation::Simulation(const SceneDescription &scene)
     : scene(scene)
   {
+    // Every body is built, and its boundary names checked against its mesh,
+    // before the first mistake is reported: all of them in one message.
+    InputErrorList mistakes;
     for (const auto &description : scene.bodies)
-      all_bodies.push_back(std::make_unique<Body>(description, scene.source));
+      mistakes.collect([&]() {
+        all_bodies.push_back(std::make_unique<Body>(description, scene.source));
+      });
+    mistakes.throw_if_any();
     pvd_records.resize(all_bodies.size());
     contact_problem = std::make_unique<ContactProblem>(scene, all_bodies);
     history         = std::make_unique<HistoryWriter>(
@@ -264,8 +270,8 @@ namespace glissade
 
 
 
-  void
-  Simulation::run()
+  bool
+  Simulation::run(const bool restart)
   {
     Timer wall;
     std::filesystem::create_directories(scene.output.directory);
@@ -275,12 +281,27 @@ namespace glissade
     for (const unsigned int n : program.stage_increments)
       n_total += n;
 
-    history->record(0, 0., 0);
-    write_output(0, 0.);
+    unsigned int restart_increment = 0;
+    if (restart)
+      {
+        restart_increment = read_checkpoint();
+        if (scene.output.progress)
+          std::cout << "restart after increment " << restart_increment
+                    << " (t = " << current_time << ") from "
+                    << checkpoint_file() << std::endl;
+      }
+    else
+      {
+        history->record(0, 0., 0);
+        write_output(0, 0.);
+      }
+    const double wall_before = stats.wall_seconds;
 
     unsigned int increment = 0;
     double       t_begin   = 0.;
-    for (unsigned int stage = 0; stage < program.stage_end_times.size();
+    bool         completed = true;
+    for (unsigned int stage = 0;
+         stage < program.stage_end_times.size() && completed;
          ++stage)
       {
         const double       t_end = program.stage_end_times[stage];
@@ -288,7 +309,10 @@ namespace glissade
         for (unsigned int k = 1; k <= n; ++k)
           {
             ++increment;
+            // The same formula for t as the uninterrupted run: the same bits.
             const double t = t_begin + (t_end - t_begin) * double(k) / n;
+            if (increment <= restart_increment)
+              continue;
             const unsigned int iterations =
               advance_to(t, "increment " + std::to_string(increment));
             ++stats.increments;
@@ -314,14 +338,35 @@ namespace glissade
             if (last || (scene.output.vtu_interval > 0 &&
                          increment % scene.output.vtu_interval == 0))
               write_output(increment, t);
+
+            const bool stop = (increment == scene.checkpoint.stop_after);
+            if (stop || (scene.checkpoint.interval > 0 &&
+                         increment % scene.checkpoint.interval == 0))
+              {
+                stats.wall_seconds = wall_before + wall.wall_time();
+                write_checkpoint(increment);
+                if (scene.output.progress)
+                  std::cout << "checkpoint after increment " << increment
+                            << ": " << checkpoint_file() << std::endl;
+              }
+            if (stop)
+              {
+                completed = false;
+                break;
+              }
           }
         t_begin = t_end;
       }
-    stats.wall_seconds = wall.wall_time();
+    stats.wall_seconds = wall_before + wall.wall_time();
 
     AtomicFile summary_file(scene.output.directory + "/summary.txt");
     summary_file.stream() << summary() << '\n';
+    if (!completed)
+      summary_file.stream()
+        << "stopped after increment " << increment << " of " << n_total
+        << " (Checkpoint/Stop after increment); continue with --restart\n";
     summary_file.commit();
+    return completed;
   }
 
 

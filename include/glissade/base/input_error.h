@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
@@ -19,6 +20,48 @@ namespace glissade
     InputError(const std::string &where, const std::string &what)
       : std::runtime_error(where.empty() ? what : where + ": " + what)
     {}
+  };
+
+  /**
+   * Collects the mistakes of independent parts of the input (each body,
+   * each contact pair, the load program) so that the user reads all of them
+   * in one message rather than one per run.
+   */
+  class InputErrorList
+  {
+  public:
+    /** Runs check(); an InputError it throws is recorded, not propagated. */
+    template <typename Check>
+    void
+    collect(const Check &check)
+    {
+      try
+        {
+          check();
+        }
+      catch (const InputError &e)
+        {
+          messages.emplace_back(e.what());
+        }
+    }
+
+    /** Throws one InputError listing every recorded mistake, if any. */
+    void
+    throw_if_any() const
+    {
+      if (messages.size() == 1)
+        throw InputError("", messages.front());
+      if (messages.size() > 1)
+        {
+          std::string all = std::to_string(messages.size()) + " mistakes:";
+          for (const auto &m : messages)
+            all += "\n  " + m;
+          throw InputError("", all);
+        }
+    }
+
+  private:
+    std::vector<std::string> messages;
   };
 
   /**

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -21,5 +22,13 @@ namespace glissade
     /** True for "point(x, y)"; fills x and y. */
     bool
     parse_point_location(const std::string &location, double &x, double &y);
+
+    /**
+     * deal.II's exception text carries the library's source location and a
+     * stack trace; the user needs only the "Additional information" part,
+     * which names the line and the entry of the .prm file.
+     */
+    std::string
+    essential_message(const std::exception &e);
   } // namespace text
 } // namespace glissade

@@ -165,6 +165,19 @@ namespace glissade
     void
     restore_state();
 
+    /**
+     * Writes or reads (a Boost archive) the state a checkpoint must hold:
+     * the displacement and the contact forces H^T r of the last iteration,
+     * which the next residual starts from. Everything else is rebuilt from
+     * the scene.
+     */
+    template <class Archive>
+    void
+    serialize_state(Archive &archive)
+    {
+      archive &solution &contact_forces;
+    }
+
     /** A length that measures the body (diameter of the reference mesh). */
     double
     size() const

@@ -52,6 +52,22 @@ namespace glissade
      */
     std::vector<DofWeight> kinematics, forces;
 
+    /**
+     * The state a checkpoint holds (Boost serialization): the reactions and
+     * statuses warm-start the local solver of the next increment, so a
+     * restart needs them to continue bit for bit; the maps are rebuilt by
+     * the next detection.
+     */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      int status_code = static_cast<int>(status);
+      archive &active &projected &segment &s &gap_at_step_start &gap &tangent
+        &normal &reaction[0] &reaction[1] &status_code;
+      status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
+    }
+
     Tensor<1, 2>
     force() const
     {
@@ -93,6 +109,15 @@ namespace glissade
 
     void
     begin_step(const double time);
+
+    /**
+     * A pair that cannot make sense: at t = 0, slave nodes lie deeper behind
+     * the master surface than 5 % of the bodies' size (the master boundary
+     * faces away from the slave, or the obstacle is on the wrong side).
+     * Throws an InputError naming the entry; the state is left as before.
+     */
+    void
+    check_initial_state();
 
     void
     update_geometry();

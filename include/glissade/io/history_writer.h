@@ -43,6 +43,14 @@ namespace glissade
       return rows.back();
     }
 
+    /** The rows so far, for a checkpoint (Boost serialization). */
+    template <class Archive>
+    void
+    serialize_rows(Archive &archive)
+    {
+      archive &rows;
+    }
+
   private:
     std::string                                     filename;
     std::vector<std::string>                        columns;

@@ -117,6 +117,13 @@ namespace glissade
     bool                     progress = true;
   };
 
+  /** Checkpoints of a long run (Simulation::run). */
+  struct CheckpointSettings
+  {
+    unsigned int interval   = 0; // increments between checkpoints; 0: none
+    unsigned int stop_after = 0; // stop after this increment; 0: never
+  };
+
   /**
    * A contact pair: the slave nodes of one body's boundary against a master
    * surface, which is another body's boundary or a rigid analytic obstacle.
@@ -154,5 +161,8 @@ namespace glissade
     LoadProgram                  load_program;
     NewtonSettings               newton;
     OutputSettings               output;
+    CheckpointSettings           checkpoint;
+    /** Hash of every value but the Checkpoint section (see SceneReader). */
+    std::string fingerprint;
   };
 } // namespace glissade

@@ -41,9 +41,15 @@ namespace glissade
   public:
     explicit Simulation(const SceneDescription &scene);
 
-    /** The whole load program, with output. */
-    void
-    run();
+    /**
+     * The whole load program, with output and the checkpoints the scene
+     * asks for. With restart, continue from the checkpoint in the output
+     * directory (InputError if it is missing, unreadable or of another
+     * scene). Returns false if the run stopped at Checkpoint/Stop after
+     * increment, true if it reached the end.
+     */
+    bool
+    run(const bool restart = false);
 
     /** Called after every converged increment of run(): (increment, t). */
     std::function<void(unsigned int, double)> on_increment;
@@ -109,6 +115,23 @@ namespace glissade
     /** contact-<pair>-<increment>.csv: every slave node's state. */
     void
     write_contact_table(const unsigned int increment) const;
+
+    /** <Output directory>/checkpoint.bin */
+    std::string
+    checkpoint_file() const;
+
+    /** The state after the increment, written atomically. */
+    void
+    write_checkpoint(const unsigned int increment);
+
+    /** Restores the state; returns the increment it was written after. */
+    unsigned int
+    read_checkpoint();
+
+    /** Both directions of the checkpoint (source/solver/checkpoint.cc). */
+    template <class Archive>
+    void
+    serialize_state(Archive &archive);
 
     const SceneDescription             scene;
     std::vector<std::unique_ptr<Body>> all_bodies;

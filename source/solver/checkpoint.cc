@@ -1,0 +1,127 @@
+// Checkpoint and restart of a Simulation: the state that the next increment
+// starts from, written with Boost serialization, so that a run stopped
+// half-way continues to the same output files as an uninterrupted one.
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <glissade/base/input_error.h>
+#include <glissade/io/atomic_file.h>
+#include <glissade/solver/simulation.h>
+
+#include <fstream>
+
+namespace glissade
+{
+  namespace
+  {
+    // Raised when the layout of the file changes: an old file is refused.
+    const std::string checkpoint_format = "glissade checkpoint 1";
+  } // namespace
+
+
+
+  std::string
+  Simulation::checkpoint_file() const
+  {
+    return scene.output.directory + "/checkpoint.bin";
+  }
+
+
+
+  template <class Archive>
+  void
+  Simulation::serialize_state(Archive &archive)
+  {
+    archive &current_time;
+    archive &stats.increments &stats.newton_iterations &stats.cut_backs
+      &stats.assembly_seconds &stats.factorization_seconds
+        &stats.solve_seconds &stats.output_seconds &stats.wall_seconds;
+    archive &pvd_records;
+    history->serialize_rows(archive);
+    for (auto &b : all_bodies)
+      {
+        // The sizes are written and compared so that a mismatch is a
+        // message, not a read past the end.
+        unsigned int n_dofs = b->n_dofs();
+        archive     &n_dofs;
+        if (n_dofs != b->n_dofs())
+          throw InputError(checkpoint_file(),
+                           "body '" + b->name() + "' has " +
+                             std::to_string(n_dofs) +
+                             " dofs in the checkpoint and " +
+                             std::to_string(b->n_dofs()) + " in the scene");
+        b->serialize_state(archive);
+      }
+    for (auto &pair : contact_problem->contact_pairs())
+      {
+        unsigned int n_nodes = pair->nodes().size();
+        archive     &n_nodes;
+        if (n_nodes != pair->nodes().size())
+          throw InputError(checkpoint_file(),
+                           "contact pair '" + pair->name() +
+                             "' has a different number of slave nodes");
+        archive &pair->nodes();
+      }
+  }
+
+
+
+  void
+  Simulation::write_checkpoint(const unsigned int increment)
+  {
+    AtomicFile file(checkpoint_file());
+    {
+      boost::archive::binary_oarchive archive(file.stream());
+      std::string  format      = checkpoint_format;
+      std::string  fingerprint = scene.fingerprint;
+      unsigned int last        = increment;
+      archive     &format &fingerprint &last;
+      serialize_state(archive);
+    }
+    file.commit();
+  }
+
+
+
+  unsigned int
+  Simulation::read_checkpoint()
+  {
+    std::ifstream in(checkpoint_file(), std::ios::binary);
+    if (!in)
+      throw InputError(checkpoint_file(),
+                       "cannot open the checkpoint to restart from (set "
+                       "Checkpoint/Interval or Stop after increment in " +
+                         scene.source + " and run without --restart first)");
+    unsigned int increment = 0;
+    try
+      {
+        boost::archive::binary_iarchive archive(in);
+        std::string                     format, fingerprint;
+        archive &format;
+        if (format != checkpoint_format)
+          throw InputError(checkpoint_file(),
+                           "is not a checkpoint of this version of glissade");
+        archive &fingerprint &increment;
+        if (fingerprint != scene.fingerprint)
+          throw InputError(checkpoint_file(),
+                           "was written for another scene: " + scene.source +
+                             " (with its --set overrides) has changed since; "
+                             "only the Checkpoint section may differ");
+        serialize_state(archive);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(checkpoint_file(),
+                         std::string("is unreadable (") + e.what() + ")");
+      }
+    return increment;
+  }
+} // namespace glissade
