@@ -89,7 +89,8 @@ main(int argc, char **argv)
         SceneReader::read_file(argv[1], overrides);
       Simulation simulation(scene);
       const bool completed = simulation.run(restart);
-      std::cout << simulation.summary() << std::endl;
+      std::cout << simulation.summary() << '\n'
+                << simulation.timing_table() << std::flush;
       if (!completed)
         std::cout << "stopped at Checkpoint/Stop after increment; continue "
                      "with: glissade "

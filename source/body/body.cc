@@ -355,6 +355,17 @@ namespace glissade
 
 
   bool
+  Body::dof_is_prescribed(const types::global_dof_index dof) const
+  {
+    if (!constraints.is_constrained(dof))
+      return false;
+    const auto *line = constraints.get_constraint_entries(dof);
+    return line == nullptr || line->empty();
+  }
+
+
+
+  bool
   Body::prepare_contact_compliance()
   {
     if (contact_rows.empty() || !factorization.has_inverse_block())

@@ -1,3 +1,5 @@
+#include <deal.II/base/timer.h>
+
 #include <glissade/base/input_error.h>
 #include <glissade/contact/bspline_curve.h>
 #include <glissade/contact/contact_pair.h>
@@ -226,6 +228,10 @@ namespace glissade
   void
   ContactPair::update_master_curve()
   {
+    Timer                           timer;
+    const auto                      account = [&]() {
+      surface_build_seconds += timer.wall_time();
+    };
     std::vector<MasterCurve::Point> points;
     for (unsigned int j = 0; j < master_points.size(); ++j)
       {
@@ -236,6 +242,7 @@ namespace glissade
     if (description.surface != "hermite")
       {
         curve->update(points);
+        account();
         return;
       }
     // Deformed tangents d = (I + grad u) T at both ends of each segment.
@@ -255,6 +262,7 @@ namespace glissade
         tangents.push_back(pair);
       }
     static_cast<HermiteCurve &>(*curve).update(points, tangents);
+    account();
   }
 
 
@@ -426,8 +434,8 @@ namespace glissade
         node.segment   = -1;
         node.projected = project(node);
         node.gap_at_step_start = node.gap;
-        node.active =
-          node.projected && node.gap <= description.alert_distance;
+        node.active = node.projected &&
+                      node.gap <= description.alert_distance && can_react(node);
         if (!node.active)
           {
             node.reaction = {{0., 0.}};
@@ -478,6 +486,59 @@ namespace glissade
                            (master_body ? "/Master boundary" : "/Obstacle"),
                          message.str());
       }
+  }
+
+
+
+  bool
+  ContactPair::can_react(const ContactNode &node) const
+  {
+    // A slave node whose two dofs are prescribed, against a rigid obstacle,
+    // has no compliance at all (W_kk = 0): no reaction can change its gap.
+    // Such a node (a supported corner inside a large alert distance) is left
+    // out rather than handed to the local solver, which would refuse it.
+    return master_body != nullptr ||
+           !(slave_body.dof_is_prescribed(node.dofs[0]) &&
+             slave_body.dof_is_prescribed(node.dofs[1]));
+  }
+
+
+
+  unsigned int
+  ContactPair::activate_penetrating_nodes()
+  {
+    if (curve)
+      update_master_curve();
+    // Round-off of a node resting on the master is not a penetration.
+    const double tolerance = 1e-10 * slave_body.size();
+    unsigned int activated = 0;
+    for (auto &node : slave_nodes)
+      {
+        if (node.active || !can_react(node))
+          continue;
+        ContactNode trial = node;
+        trial.segment     = -1;
+        if (!project(trial) || trial.gap >= -tolerance)
+          continue;
+        // The gap at the start of the increment that the linear follow-up
+        // of Frame update = increment needs: g_0 = g - n . (motion since).
+        Tensor<1, 2> motion;
+        for (const auto &e : trial.kinematics)
+          {
+            const Body &b = e.body == 0 ? slave_body : *master_body;
+            motion[e.component] +=
+              e.weight *
+              (b.displacement()(e.dof) - b.stored_displacement()(e.dof));
+          }
+        trial.gap_at_step_start = trial.gap - trial.normal * motion;
+        trial.active            = true;
+        trial.projected         = true;
+        trial.reaction          = {{0., 0.}};
+        trial.status            = BiPotentialSolver::NodeStatus::open;
+        node                    = trial;
+        ++activated;
+      }
+    return activated;
   }
 
 

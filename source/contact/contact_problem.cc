@@ -101,9 +101,44 @@ namespace glissade
 
 
 
+  unsigned int
+  ContactProblem::activate_penetrating_nodes()
+  {
+    Timer        timer;
+    unsigned int n = 0;
+    for (auto &pair : pairs)
+      n += pair->activate_penetrating_nodes();
+    detection_seconds += timer.wall_time();
+    return n;
+  }
+
+
+
+  unsigned int
+  ContactProblem::activate_nodes_crossed_by(
+    const std::vector<Vector<double>> &free_step)
+  {
+    std::vector<Vector<double>> current(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        current[b]           = bodies[b]->displacement();
+        Vector<double> trial = current[b];
+        trial += free_step[b];
+        bodies[b]->set_displacement(trial);
+      }
+    const unsigned int n = activate_penetrating_nodes();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->set_displacement(current[b]);
+    return n;
+  }
+
+
+
   bool
   ContactProblem::correct(std::vector<Vector<double>> &increments)
   {
+    activate_nodes_crossed_by(increments);
+
     // Columns of the current tangent: a W frozen at the increment's first
     // iteration lets a sliding mode of faceted masters grow slowly (seen on
     // the concentric rings), so W is formed afresh each iteration.

@@ -98,7 +98,7 @@ namespace glissade
   // the paper's eq. 24 in two places, which are misprints there:
   //   N_8,xi  is  -1/8 (1 + xi)(1 + eta)(1 - 3 xi)  (paper: (1 - xi)),
   //   N_11,xi is  -1/8 (1 - xi)(1 + eta)(1 + 3 xi)  (paper: + sign).
-  // Eq. 25 is correct. tests/hermite_tests.cc checks all of this.
+  // Eq. 25 is correct. tests/hermite/hermite_tests.cc checks all of this.
 
   HermiteQuadrilateral::ShapeArray
   HermiteQuadrilateral::reference_values(const double xi, const double eta)

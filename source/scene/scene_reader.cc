@@ -129,8 +129,8 @@ namespace glissade
           "Point loads",
           "",
           Patterns::Anything(),
-          "Nodal forces (N per thickness): 'point(x, y): fx, fy; ...' with "
-          "fx, fy expressions in t.");
+          "Nodal forces in N, on the whole thickness (added as given): "
+          "'point(x, y): fx, fy; ...' with fx, fy expressions in t.");
         prm.declare_entry(
           "Nodal loads",
           "",
@@ -143,14 +143,16 @@ namespace glissade
           "Tractions",
           "",
           Patterns::Anything(),
-          "Dead tractions per unit reference length: 'boundary: tx, ty; ...' "
-          "(expressions in x, y, t).");
+          "Dead tractions, force per unit reference area (integrated along "
+          "the reference boundary times the material's Thickness): "
+          "'boundary: tx, ty; ...' (expressions in x, y, t).");
         prm.declare_entry(
           "Pressure",
           "",
           Patterns::Anything(),
           "Follower pressure on the deformed boundary, positive into the "
-          "body: 'boundary: p; ...' (expression in x, y, t).");
+          "body, force per unit area (times the Thickness): 'boundary: p; "
+          "...' (expression in x, y, t).");
       }
       prm.leave_subsection();
     }
@@ -203,7 +205,12 @@ namespace glissade
                         "Coulomb's mu (0: frictionless).");
       prm.declare_entry("Beta", "1", Patterns::Double(0.),
                         "Bi-potential parameter in (0, 2): rho_k = beta / "
-                        "W_kk(nn).");
+                        "W_kk(nn) on a frictionless node, beta / the largest "
+                        "eigenvalue of its 2x2 block W_kk with friction. The "
+                        "active nodes of "
+                        "all pairs form one local problem, solved with the "
+                        "Beta, Tolerance and Maximum sweeps of the first "
+                        "pair.");
       prm.declare_entry("Tolerance", "1e-10", Patterns::Double(0.),
                         "Relative tolerance of the local solver.");
       prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
@@ -334,7 +341,8 @@ namespace glissade
                       "Converged when |R| <= tol * max(|F_int|, |F_ext|) on "
                       "the free dofs...");
     prm.declare_entry("Displacement tolerance", "1e-9", Patterns::Double(0.),
-                      "...and |du| <= tol * max(|u|, size of the body).");
+                      "...and |du| <= tol * |u| (tol * 1e-12 * the largest "
+                      "body's diameter while u = 0).");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
@@ -343,7 +351,7 @@ namespace glissade
                       "(relative paths: from the working directory).");
     prm.declare_entry("VTU interval", "1", Patterns::Integer(0),
                       "Write a VTU every this many increments (0: only the "
-                      "final state).");
+                      "initial and final states).");
     prm.declare_entry("Contact table interval", "0", Patterns::Integer(0),
                       "Write contact-<pair>-<increment>.csv (every slave "
                       "node's gap, reaction, status) every this many "

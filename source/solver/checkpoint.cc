@@ -8,6 +8,8 @@
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <deal.II/base/timer.h>
+
 #include <glissade/base/input_error.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
@@ -39,7 +41,8 @@ namespace glissade
     archive &current_time;
     archive &stats.increments &stats.newton_iterations &stats.cut_backs
       &stats.assembly_seconds &stats.factorization_seconds
-        &stats.solve_seconds &stats.output_seconds &stats.wall_seconds;
+        &stats.solve_seconds &stats.output_seconds &stats.checkpoint_seconds
+          &stats.wall_seconds;
     archive &pvd_records;
     history->serialize_rows(archive);
     for (auto &b : all_bodies)
@@ -73,6 +76,7 @@ namespace glissade
   void
   Simulation::write_checkpoint(const unsigned int increment)
   {
+    Timer timer;
     AtomicFile file(checkpoint_file());
     {
       boost::archive::binary_oarchive archive(file.stream());
@@ -83,6 +87,7 @@ namespace glissade
       serialize_state(archive);
     }
     file.commit();
+    stats.checkpoint_seconds += timer.wall_time();
   }
 
 

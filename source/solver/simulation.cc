@@ -5,6 +5,7 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -92,16 +93,27 @@ namespace glissade
 
         // At least one correction per step: at iteration 0 the prescribed
         // displacements of the new time are not applied yet.
-        if (iteration > 0 &&
-            residual <= settings.residual_tolerance * scale &&
-            last_increment <=
-              settings.displacement_tolerance *
-                std::max(displacement_norm, 1e-12 * size))
+        const bool converged =
+          iteration > 0 && residual <= settings.residual_tolerance * scale &&
+          last_increment <= settings.displacement_tolerance *
+                              std::max(displacement_norm, 1e-12 * size);
+        // A converged state with a slave node behind the master that was
+        // not active (beyond the alert distance at the start of the
+        // increment) is not a solution: iterate on with that node.
+        const unsigned int newly_active =
+          converged && !contact_problem->empty() ?
+            contact_problem->activate_penetrating_nodes() :
+            0;
+        if (converged && newly_active == 0)
           {
             iterations_of_step += iteration;
             stats.newton_iterations += iteration;
             return true;
           }
+        if (newly_active > 0 && std::getenv("GLISSADE_DEBUG"))
+          std::cerr << "  it " << iteration << ": " << newly_active
+                    << " slave nodes went behind the master; now active"
+                    << std::endl;
         if (iteration == settings.max_iterations)
           break;
         if (iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300))
@@ -260,7 +272,12 @@ namespace glissade
                           << node.reference_position[1] << ','
                           << node.reference_position[0] + u[0] << ','
                           << node.reference_position[1] + u[1] << ','
-                          << node.active << ',' << node.gap << ','
+                          << node.active << ',';
+            // A node with no counterpart on the master has no gap: the field
+            // stays empty rather than repeating its last projection's.
+            if (node.projected)
+              file.stream() << node.gap;
+            file.stream() << ','
                           << node.reaction[0] << ',' << node.reaction[1] << ','
                           << f[0] << ',' << f[1] << ',' << status << '\n';
           }
@@ -360,7 +377,7 @@ namespace glissade
     stats.wall_seconds = wall_before + wall.wall_time();
 
     AtomicFile summary_file(scene.output.directory + "/summary.txt");
-    summary_file.stream() << summary() << '\n';
+    summary_file.stream() << summary() << '\n' << timing_table();
     if (!completed)
       summary_file.stream()
         << "stopped after increment " << increment << " of " << n_total
@@ -389,5 +406,49 @@ namespace glissade
         << " s, local solve " << contact_problem->local_solve_seconds << " s";
     s << ")";
     return s.str();
+  }
+
+
+  std::string
+  Simulation::timing_table() const
+  {
+    double surface = 0.;
+    for (const auto &pair : contact_problem->contact_pairs())
+      surface += pair->surface_build_seconds;
+    const ContactProblem &c = *contact_problem;
+    std::vector<std::pair<std::string, double>> rows = {
+      {"assembly of residual and tangent", stats.assembly_seconds},
+      {"factorization", stats.factorization_seconds},
+      {"predictor solve", stats.solve_seconds}};
+    if (!c.empty())
+      {
+        rows.emplace_back("contact detection and projection",
+                          c.detection_seconds - surface);
+        rows.emplace_back("master surface build", surface);
+        rows.emplace_back("compliance matrix W", c.compliance_seconds);
+        rows.emplace_back("local bi-potential solve", c.local_solve_seconds);
+      }
+    rows.emplace_back("output (VTU, PVD, CSV)", stats.output_seconds);
+    if (stats.checkpoint_seconds > 0.)
+      rows.emplace_back("checkpoints", stats.checkpoint_seconds);
+    double accounted = 0.;
+    for (const auto &row : rows)
+      accounted += row.second;
+    rows.emplace_back("other (corrector, bookkeeping)",
+                      std::max(0., stats.wall_seconds - accounted));
+
+    std::ostringstream table;
+    const double       total = std::max(stats.wall_seconds, 1e-300);
+    table << std::fixed << "  " << std::left << std::setw(36) << "part of the run"
+          << std::right << std::setw(11) << "wall (s)" << std::setw(8) << "%"
+          << '\n';
+    for (const auto &[name, seconds] : rows)
+      table << "  " << std::left << std::setw(36) << name << std::right
+            << std::setw(11) << std::setprecision(3) << seconds << std::setw(8)
+            << std::setprecision(1) << 100. * seconds / total << '\n';
+    table << "  " << std::left << std::setw(36) << "total" << std::right
+          << std::setw(11) << std::setprecision(3) << stats.wall_seconds
+          << std::setw(8) << "100.0" << '\n';
+    return table.str();
   }
 } // namespace glissade

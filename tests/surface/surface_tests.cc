@@ -4,9 +4,8 @@
 // independent reference: a closed form, a symmetry, a dense solve of the
 // paper's own equations, or brute-force sampling.
 //
-// Build and run:
-//   g++ -std=c++17 -O2 -Wall -Wextra -I include source/contact/*.cc
-//       tests/surface_tests.cc -o /tmp/surface_tests && /tmp/surface_tests
+// Built by tests/CMakeLists.txt as surface_tests (one ctest test per group:
+// ctest -R surface); run one group with build/tests/surface_tests <group>.
 
 #include <map>
 #include <string>

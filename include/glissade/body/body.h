@@ -159,6 +159,20 @@ namespace glissade
     void
     update(const Vector<double> &increment);
 
+    /** Replaces the displacement (a trial state; see ContactProblem). */
+    void
+    set_displacement(const Vector<double> &u)
+    {
+      solution = u;
+    }
+
+    /**
+     * True for a dof whose value the boundary conditions prescribe (fixed
+     * or driven): no force moves it.
+     */
+    bool
+    dof_is_prescribed(const types::global_dof_index dof) const;
+
     /** Saves and restores the displacement (for cut-backs). */
     void
     store_state();

@@ -64,13 +64,13 @@ namespace glissade
      * so only about 25 nodes on each side survive the 1e-14 cut. See
      * inverse_entry() for how the entries are obtained.
      */
-    void bounding_box(unsigned int segment,
-                      Point       &low,
-                      Point       &high) const override;
-
     void weights(unsigned int segment,
                  double       s,
                  NodeWeights &node_weights) const override;
+
+    void bounding_box(unsigned int segment,
+                      Point       &low,
+                      Point       &high) const override;
 
     /**
      * Entry (i,j) of the inverse of the N x N interpolation matrix A (with the

@@ -122,6 +122,15 @@ namespace glissade
     void
     update_geometry();
 
+    /**
+     * Activates the inactive slave nodes that have gone behind the master
+     * during the increment (they were farther than the alert distance at
+     * its start); returns how many. Newton then goes on with them, so that
+     * a small alert distance costs iterations, never a penetration.
+     */
+    unsigned int
+    activate_penetrating_nodes();
+
     std::vector<ContactNode> &
     nodes()
     {
@@ -164,6 +173,9 @@ namespace glissade
     std::vector<types::global_dof_index>
     contact_dofs(const Body &body) const;
 
+    /** Wall time spent rebuilding the master curve, accumulated. */
+    double surface_build_seconds = 0.;
+
     /** Sum of the forces on the slave nodes (global frame). */
     Tensor<1, 2>
     total_force() const;
@@ -199,6 +211,10 @@ namespace glissade
     bool
     project_on_segment(const Point<2> &x, const unsigned int segment,
                        double &s, const double margin) const;
+
+    /** False for a node that no reaction can move (see the definition). */
+    bool
+    can_react(const ContactNode &node) const;
 
     /** Frame, gap and dof maps of a node at (segment, s). */
     void

@@ -18,8 +18,9 @@ namespace glissade
    * given each body's free step du_lib = K^-1 (F_ext - F_int), it
    * re-projects the active nodes, forms their free relative displacement
    * u_free = H du_lib (+ the gap, + the slip since the increment began), the
-   * compliance W = H K^-1 H^T (two back-substitutions per active node and
-   * deformable body: a rigid obstacle adds nothing), solves the bi-potential
+   * compliance W = H K^-1 H^T (from the block of K^-1 on the contact dofs
+   * that the Cholesky factorisation gives, or one back-substitution per
+   * contact dof when the tangent needs LU), solves the bi-potential
    * local problem for the reactions r, and returns the corrected step
    * du = du_lib + K^-1 H^T r. The contact forces H^T r are handed to the
    * bodies for their equilibrium residual.
@@ -50,6 +51,19 @@ namespace glissade
 
     unsigned int
     n_active() const;
+
+    /** ContactPair::activate_penetrating_nodes over every pair. */
+    unsigned int
+    activate_penetrating_nodes();
+
+    /**
+     * The same at the state the free step would reach (u + du_lib): nodes
+     * that it would take behind the master join the active set before the
+     * step is taken, so that a small alert distance does not let a body
+     * fall through its support in one iteration. The state is restored.
+     */
+    unsigned int
+    activate_nodes_crossed_by(const std::vector<Vector<double>> &free_step);
 
     /** Sweeps and outcome of the last local solve. */
     const BiPotentialSolver::Result &

@@ -5,6 +5,7 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,23 @@ namespace glissade
     last_row() const
     {
       return rows.back();
+    }
+
+    /** Every recorded row, increment 0 first. */
+    const std::vector<std::vector<double>> &
+    all_rows() const
+    {
+      return rows;
+    }
+
+    /** The value of a column in a row; throws if there is no such column. */
+    double
+    value(const std::vector<double> &row, const std::string &column) const
+    {
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        if (columns[c] == column)
+          return row[c];
+      throw std::out_of_range("history has no column '" + column + "'");
     }
 
     /** The rows so far, for a checkpoint (Boost serialization). */

@@ -22,6 +22,7 @@ namespace glissade
     double       factorization_seconds = 0.;
     double       solve_seconds         = 0.;
     double       output_seconds        = 0.;
+    double       checkpoint_seconds    = 0.;
     double       wall_seconds          = 0.;
   };
 
@@ -89,6 +90,12 @@ namespace glissade
       return residual_history;
     }
 
+    const HistoryWriter &
+    history_writer() const
+    {
+      return *history;
+    }
+
     const RunStatistics &
     statistics() const
     {
@@ -98,6 +105,14 @@ namespace glissade
     /** "N increments, M Newton iterations, ... s wall" */
     std::string
     summary() const;
+
+    /**
+     * Where the wall time went: assembly, factorization, predictor solve,
+     * contact detection, master surface build, compliance matrix, local
+     * solve, output, checkpoints and the rest, in seconds and percent.
+     */
+    std::string
+    timing_table() const;
 
   private:
     /** One Newton solve from the stored state to t; false if it failed. */
