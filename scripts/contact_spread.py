@@ -3,6 +3,7 @@ contact force norms on the interface around their equilibrium value F_e
 (the mean over the interface at that increment), in %; the worst increment
 and its distribution. Usage: contact_spread.py <output dir> <pair> [label]"""
 import csv
+import os
 import glob
 import sys
 
@@ -10,6 +11,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save_atomically(fig, path, **options):
+    """Writes under a temporary name, then renames: never a half-written PNG."""
+    temporary = path[:-len(".png")] + ".tmp.png"
+    fig.savefig(temporary, **options)
+    os.replace(temporary, path)
 
 directory, pair = sys.argv[1], sys.argv[2]
 label = sys.argv[3] if len(sys.argv) > 3 else pair
@@ -41,4 +49,4 @@ axes[1].set_xlabel("interface node")
 axes[1].set_ylabel("(|F| - F_e) / F_e (%)")
 axes[1].set_title(f"worst increment {worst[0]} (fig 26)")
 fig.tight_layout()
-fig.savefig(f"{directory}/spread-{pair}.png", dpi=110)
+save_atomically(fig, f"{directory}/spread-{pair}.png", dpi=110)

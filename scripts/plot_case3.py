@@ -1,12 +1,20 @@
 """Case 3 (figs 26-27): spread of the contact forces per increment, the
 distribution at the worst increment, and the force on node (1.25, 0)."""
 import csv
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save_atomically(fig, path, **options):
+    """Writes under a temporary name, then renames: never a half-written PNG."""
+    temporary = path[:-len(".png")] + ".tmp.png"
+    fig.savefig(temporary, **options)
+    os.replace(temporary, path)
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/case3_spread.csv")))
@@ -35,5 +43,5 @@ axes[2].set_xlabel("increment")
 for ax in axes:
     ax.legend()
 fig.tight_layout()
-fig.savefig(f"{directory}/case3.png", dpi=110)
+save_atomically(fig, f"{directory}/case3.png", dpi=110)
 print(f"wrote {directory}/case3.png")

@@ -11,6 +11,13 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save_atomically(fig, path, **options):
+    """Writes under a temporary name, then renames: never a half-written PNG."""
+    temporary = path[:-len(".png")] + ".tmp.png"
+    fig.savefig(temporary, **options)
+    os.replace(temporary, path)
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 directory = sys.argv[1]
@@ -47,7 +54,7 @@ def deformed_meshes(scene):
         ax.set_aspect("equal")
         ax.set_title(f"{scene}: {names.get(v, v)}, final state")
     fig.tight_layout()
-    fig.savefig(f"{directory}/{scene}_deformed.png", dpi=130)
+    save_atomically(fig, f"{directory}/{scene}_deformed.png", dpi=130)
     plt.close(fig)
 
 
@@ -82,7 +89,7 @@ for path in glob.glob(f"{directory}/*_history.csv"):
             ax.set_xlabel("increment")
             ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(f"{directory}/{scene}_histories.png", dpi=130)
+        save_atomically(fig, f"{directory}/{scene}_histories.png", dpi=130)
         plt.close(fig)
         # Zoom on the contact phase, as the paper's figs 21 and 23.
         fig, axes = plt.subplots(1, 2, figsize=(12, 4))
@@ -102,7 +109,7 @@ for path in glob.glob(f"{directory}/*_history.csv"):
             ax.set_xlabel("increment")
             ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(f"{directory}/{scene}_corner_zoom.png", dpi=130)
+        save_atomically(fig, f"{directory}/{scene}_corner_zoom.png", dpi=130)
         plt.close(fig)
     elif rows and rows[0]["min_obstacle_distance"] != "":
         fig, ax = plt.subplots(figsize=(6, 4))
@@ -117,6 +124,6 @@ for path in glob.glob(f"{directory}/*_history.csv"):
         ax.set_ylabel("m (negative: penetration)")
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(f"{directory}/{scene}_distance.png", dpi=130)
+        save_atomically(fig, f"{directory}/{scene}_distance.png", dpi=130)
         plt.close(fig)
 print(f"pictures written to {directory}")

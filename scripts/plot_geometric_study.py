@@ -2,12 +2,20 @@
 gap error and normal-orientation error along the two edges around
 theta = pi/2, one panel per discretisation, darker lines for larger n_e."""
 import csv
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save_atomically(fig, path, **options):
+    """Writes under a temporary name, then renames: never a half-written PNG."""
+    temporary = path[:-len(".png")] + ".tmp.png"
+    fig.savefig(temporary, **options)
+    os.replace(temporary, path)
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/geometric_study.csv")))
@@ -38,5 +46,5 @@ for column, label, name in [
     axes[0].set_ylabel(label)
     fig.suptitle(f"{label}, n_e = {counts[0]} ... {counts[-1]} (darker: larger n_e)")
     fig.tight_layout()
-    fig.savefig(f"{directory}/{name}", dpi=110)
+    save_atomically(fig, f"{directory}/{name}", dpi=110)
     print(f"wrote {directory}/{name}")

@@ -1,12 +1,20 @@
 """Figs 9-11 of the paper: the deformed top edge of three elements with a
 point force at the middle of each top edge, for Q4, Q8 and Hermite."""
 import csv
+import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save_atomically(fig, path, **options):
+    """Writes under a temporary name, then renames: never a half-written PNG."""
+    temporary = path[:-len(".png")] + ".tmp.png"
+    fig.savefig(temporary, **options)
+    os.replace(temporary, path)
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/top_edges.csv")))
@@ -24,5 +32,5 @@ for ax, (space, title) in zip(axes, [("q1", "Q4"), ("q8", "Q8"),
     ax.set_xlabel("x")
 axes[0].set_ylabel("y")
 fig.tight_layout()
-fig.savefig(f"{directory}/hermite_static_top_edges.png", dpi=110)
+save_atomically(fig, f"{directory}/hermite_static_top_edges.png", dpi=110)
 print(f"wrote {directory}/hermite_static_top_edges.png")

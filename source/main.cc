@@ -8,6 +8,7 @@
 #include <glissade/study/case3_study.h>
 #include <glissade/study/contact_case_study.h>
 #include <glissade/study/geometric_study.h>
+#include <glissade/study/trade_study.h>
 
 #include <cstring>
 #include <iostream>
@@ -78,6 +79,11 @@ main(int argc, char **argv)
       if (study == "case1" || study == "case2")
         {
           ContactCaseStudy::run(argv[1], overrides);
+          return 0;
+        }
+      if (study == "trade")
+        {
+          TradeStudy::run(argv[1], overrides);
           return 0;
         }
       if (study == "case3")

@@ -11,6 +11,8 @@ namespace glissade
     std::string         variant;
     unsigned int        dofs = 0;
     double              wall_seconds = 0.;
+    unsigned int        newton_iterations = 0;
+    unsigned int        active_nodes = 0; // at the end
     std::vector<double> spread_percent; // per rotation increment
     std::vector<double> node_force;     // |f| of node (1.25, 0), per increment
     double              worst_spread = 0.;
@@ -36,7 +38,10 @@ namespace glissade
 
     /**
      * Runs one variant of the scene file with `rotation_increments`
-     * increments over `rotation_degrees` after the 10 of compression.
+     * increments over `rotation_degrees` after the 10 of compression, with
+     * `outer_elements` around the outer ring (Hermite: that ring only, as
+     * in fig 29; Q4 and B-spline: both rings, radially refined alike) and
+     * the same 400 N of total load.
      */
     static Case3Result
     run_variant(const std::string &scene_file,
