@@ -187,8 +187,9 @@ namespace glissade
         "spline uses the spline's own weights (consistent, symmetric W).");
       prm.declare_entry("Alert distance", "0", Patterns::Double(0.),
                         "Slave nodes farther than this from the master at the "
-                        "start of an increment are left out of the condensed "
-                        "problem.");
+                        "start of an increment start it inactive; they join "
+                        "the condensed problem only if an iteration would "
+                        "take them behind the master.");
       prm.declare_entry(
         "Frame update",
         "iteration",
