@@ -16,3 +16,7 @@ endif()
 if(err MATCHES "Stacktrace|An error occurred in line")
   message(FATAL_ERROR "the message leaks a deal.II stack trace")
 endif()
+# One message, not the expression parser's own diagnosis printed before it.
+if(err MATCHES "Errc: +<")
+  message(FATAL_ERROR "muparser's diagnosis is printed besides the message")
+endif()

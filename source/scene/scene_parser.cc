@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace glissade
@@ -94,6 +95,18 @@ namespace glissade
     check_expressions(const std::vector<std::string> &expressions,
                       const std::string              &where)
     {
+      // deal.II's parser prints muparser's diagnosis to std::cerr before it
+      // throws; the user gets it once, in the InputError below.
+      std::ostringstream   diagnosis;
+      std::streambuf      *standard_error = std::cerr.rdbuf(diagnosis.rdbuf());
+      struct Restore
+      {
+        std::streambuf *buffer;
+        ~Restore()
+        {
+          std::cerr.rdbuf(buffer);
+        }
+      } restore{standard_error};
       try
         {
           FunctionParser<2> function(expressions.size());
