@@ -173,6 +173,13 @@ namespace glissade
                            " line where one is needed (a truncated or "
                            "damaged Gmsh file?)");
       };
+      // Every section that opens must close: deal.II reads a section up to
+      // its $End line and loops forever if there is none ($PhysicalNames
+      // without $EndPhysicalNames: found by the fuzzer).
+      for (std::size_t i = 0; i < lines.size(); ++i)
+        if (lines[i].size() > 1 && lines[i][0] == '$' &&
+            lines[i].rfind("$End", 0) != 0)
+          find("$End" + lines[i].substr(1), i + 1);
       const std::size_t format = find("$MeshFormat", 0);
       const std::size_t format_end = find("$EndMeshFormat", format);
       const bool version_2 = format + 1 < format_end &&

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -517,12 +518,27 @@ namespace glissade
     scene.load_program.stage_end_times.clear();
     for (const auto &t :
          Utilities::split_string_list(prm.get("Stage end times"), ','))
-      scene.load_program.stage_end_times.push_back(std::stod(t));
+      try
+        {
+          scene.load_program.stage_end_times.push_back(std::stod(t));
+        }
+      catch (const std::exception &)
+        {
+          throw InputError(source + ": Load program/Stage end times",
+                           "'" + t + "' is not a double-precision number "
+                                     "(out of range?)");
+        }
     scene.load_program.stage_increments.clear();
     for (const auto &n :
          Utilities::split_string_list(prm.get("Stage increments"), ','))
-      scene.load_program.stage_increments.push_back(
-        Utilities::string_to_int(n));
+      {
+        const long value = std::strtol(n.c_str(), nullptr, 10);
+        if (value < 1 || value > 100000000)
+          throw InputError(source + ": Load program/Stage increments",
+                           "'" + n + "' is not a number of increments "
+                                     "between 1 and 1e8");
+        scene.load_program.stage_increments.push_back(value);
+      }
     scene.load_program.max_cut_back_depth =
       prm.get_integer("Maximum cut-back depth");
     prm.leave_subsection();

@@ -463,7 +463,21 @@ namespace glissade
                            "is not set: every body of Scene/Bodies needs a "
                            "'subsection Body " +
                              name + "' with at least its Mesh/Type");
-    return parse_parameters(prm, body_names, contact_names, source);
+    try
+      {
+        return parse_parameters(prm, body_names, contact_names, source);
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        // A value that matches its pattern but does not convert (a
+        // denormal like 1e-320 for a double): deal.II's message names the
+        // entry. Found by the fuzzer.
+        throw InputError(source, text::essential_message(e));
+      }
   }
 
 
