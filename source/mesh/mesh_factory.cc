@@ -256,7 +256,8 @@ namespace glissade
               const auto q0 = name.find('"');
               const auto q1 = name.rfind('"');
               if (dimension == 1 && tag >= 0 &&
-                  tag < numbers::internal_face_boundary_id &&
+                  static_cast<unsigned int>(tag) <
+                    numbers::internal_face_boundary_id &&
                   q0 != std::string::npos && q1 > q0)
                 names[name.substr(q0 + 1, q1 - q0 - 1)] =
                   static_cast<types::boundary_id>(tag);
