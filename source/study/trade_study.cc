@@ -12,6 +12,11 @@
 #include <iostream>
 #include <cmath>
 #include <map>
+#include <stdexcept>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <utility>
 
 namespace glissade
@@ -29,6 +34,75 @@ namespace glissade
             return {family, digits.empty() ? "40" : digits};
           }
       return {label, "?"};
+    }
+
+    /**
+     * Runs one point of the sweep in a child process, so that the peak
+     * memory (wait4's ru_maxrss) is that point's alone and not the largest
+     * of the run so far. The figures come back through a pipe.
+     */
+    template <typename Point>
+    Case3Result
+    run_in_child(const Point &point, double &peak_megabytes)
+    {
+      int channel[2];
+      if (pipe(channel) != 0)
+        throw std::runtime_error("trade study: cannot create a pipe");
+      std::cout << std::flush;
+      const pid_t child = fork();
+      if (child < 0)
+        throw std::runtime_error("trade study: cannot fork");
+      if (child == 0)
+        {
+          close(channel[0]);
+          int status = 0;
+          try
+            {
+              const Case3Result r = point();
+              const double figures[5] = {double(r.dofs),
+                                         r.wall_seconds,
+                                         double(r.newton_iterations),
+                                         double(r.active_nodes),
+                                         r.worst_spread};
+              if (write(channel[1], figures, sizeof(figures)) !=
+                    sizeof(figures) ||
+                  write(channel[1], r.variant.c_str(), r.variant.size()) !=
+                    static_cast<ssize_t>(r.variant.size()))
+                status = 1;
+            }
+          catch (const std::exception &e)
+            {
+              std::cerr << "trade study: " << e.what() << std::endl;
+              status = 1;
+            }
+          close(channel[1]);
+          std::cout << std::flush;
+          _exit(status);
+        }
+      close(channel[1]);
+      double  figures[5] = {0., 0., 0., 0., 0.};
+      ssize_t got        = read(channel[0], figures, sizeof(figures));
+      std::string label;
+      char        buffer[64];
+      for (ssize_t k; (k = read(channel[0], buffer, sizeof(buffer))) > 0;)
+        label.append(buffer, k);
+      close(channel[0]);
+      int           status = 0;
+      struct rusage usage;
+      wait4(child, &status, 0, &usage);
+      if (got != sizeof(figures) || !WIFEXITED(status) ||
+          WEXITSTATUS(status) != 0)
+        throw std::runtime_error("trade study: a point of the sweep failed "
+                                 "(see the message above)");
+      peak_megabytes = usage.ru_maxrss / 1024.; // Linux: kilobytes
+      Case3Result r;
+      r.variant           = label;
+      r.dofs              = static_cast<unsigned int>(figures[0]);
+      r.wall_seconds      = figures[1];
+      r.newton_iterations = static_cast<unsigned int>(figures[2]);
+      r.active_nodes      = static_cast<unsigned int>(figures[3]);
+      r.worst_spread      = figures[4];
+      return r;
     }
 
     std::vector<unsigned int>
@@ -93,6 +167,7 @@ namespace glissade
     std::filesystem::create_directories(directory);
 
     std::vector<Case3Result> points;
+    std::vector<double>      peak_memory; // MB, per point
     for (const std::string variant : {"q4", "bspline", "hermite"})
       for (const unsigned int n : sweep.at(variant))
         {
@@ -104,23 +179,32 @@ namespace glissade
           std::cout << "trade study: " << variant << ", " << n
                     << " elements around, " << increments
                     << " rotation increments ..." << std::flush;
-          points.push_back(Case3Study::run_variant(
-            scene, variant, angle, increments, directory, n));
+          double peak_megabytes = 0.;
+          points.push_back(run_in_child(
+            [&]() {
+              return Case3Study::run_variant(
+                scene, variant, angle, increments, directory, n);
+            },
+            peak_megabytes));
+          peak_memory.push_back(peak_megabytes);
           const Case3Result &p = points.back();
           std::cout << " spread " << std::setprecision(3) << p.worst_spread
-                    << " %, " << p.dofs << " dofs, " << p.wall_seconds << " s"
-                    << std::endl;
+                    << " %, " << p.dofs << " dofs, " << p.wall_seconds
+                    << " s, peak " << peak_megabytes << " MB" << std::endl;
         }
 
     AtomicFile csv(directory + "/trade_case3.csv");
     csv.stream() << "discretisation,elements,dofs,newton_iterations,"
-                    "active_nodes,wall_seconds,worst_spread_percent\n";
-    for (const auto &p : points)
+                    "active_nodes,wall_seconds,peak_memory_mb,"
+                    "worst_spread_percent\n";
+    for (unsigned int i = 0; i < points.size(); ++i)
       {
+        const Case3Result &p = points[i];
         const auto [family, elements] = family_and_elements(p.variant);
         csv.stream() << family << ',' << elements << ',' << p.dofs << ',' << p.newton_iterations << ','
                      << p.active_nodes << ',' << std::setprecision(6)
-                     << p.wall_seconds << ',' << p.worst_spread << '\n';
+                     << p.wall_seconds << ',' << peak_memory[i] << ','
+                     << p.worst_spread << '\n';
       }
     csv.commit();
 
@@ -130,17 +214,21 @@ namespace glissade
                  "cost\n"
               << std::setw(12) << "method" << std::setw(8) << "dofs"
               << std::setw(10) << "Newton" << std::setw(9) << "active"
-              << std::setw(11) << "wall (s)" << std::setw(13) << "spread (%)"
-              << '\n';
+              << std::setw(11) << "wall (s)" << std::setw(11) << "peak (MB)"
+              << std::setw(13) << "spread (%)" << '\n';
     const auto name = [](const Case3Result &p) {
       const auto [family, elements] = family_and_elements(p.variant);
       return family + " " + elements;
     };
-    for (const auto &p : points)
-      std::cout << std::setw(12) << name(p) << std::setw(8) << p.dofs
-                << std::setw(10) << p.newton_iterations << std::setw(9)
-                << p.active_nodes << std::setw(11) << std::setprecision(3)
-                << p.wall_seconds << std::setw(13) << p.worst_spread << '\n';
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const Case3Result &p = points[i];
+        std::cout << std::setw(12) << name(p) << std::setw(8) << p.dofs
+                  << std::setw(10) << p.newton_iterations << std::setw(9)
+                  << p.active_nodes << std::setw(11) << std::setprecision(3)
+                  << p.wall_seconds << std::setw(11) << peak_memory[i]
+                  << std::setw(13) << p.worst_spread << '\n';
+      }
     // spread = a n^b and time = c n^d over the Q4 points (least squares in
     // log-log): the rates at which Q4 buys accuracy and pays for it.
     struct
