@@ -553,3 +553,76 @@ GLISSADE_TEST(extreme_nearly_incompressible_locking)
                 label + ": more than 4 % from beam theory");
       }
 }
+
+
+
+// Grazing contact: a block whose bottom lies exactly on a rigid flat (gap
+// 0) is slid 0.5 m along it by its top, with no normal load, without and
+// with friction. The exact answer is a rigid translation: no contact force,
+// no vertical displacement, every bottom node on the flat.
+GLISSADE_TEST(extreme_grazing_contact)
+{
+  for (const double mu : {0., 0.3})
+    {
+      const std::string scene = R"(
+subsection Scene
+  set Bodies        = block
+  set Contact pairs = floor
+end
+subsection Body block
+  subsection Mesh
+    set Type         = rectangle
+    set Corner 1     = 0, 0
+    set Corner 2     = 1, 0.5
+    set Subdivisions = 8, 4
+  end
+  subsection Material
+    set Young modulus = 1e6
+    set Poisson ratio = 0.3
+  end
+  subsection Boundary conditions
+    set Prescribed displacement = top: xy: 0.5*t, 0
+  end
+end
+subsection Contact floor
+  set Slave body           = block
+  set Slave boundary       = bottom
+  set Master body          = rigid
+  set Alert distance       = 0.01
+  set Friction coefficient = )" + exact(mu) + R"(
+  subsection Obstacle
+    set Type   = line
+    set Point  = 0, 0
+    set Normal = 0, 1
+  end
+end
+subsection Load program
+  set Stage end times  = 1
+  set Stage increments = 10
+end
+subsection Output
+  set History = contact_force(floor); max_displacement(block)
+end
+)";
+      const std::string label = "grazing_mu_" + exact(mu);
+      const Run         r     = run(label, scene, {}, true);
+      check(r.converged, label + " must converge");
+      double worst_gap = 0., largest_uy = 0.;
+      const Body &block = r.simulation->body("block");
+      for (const auto &node : r.simulation->contact().contact_pairs()[0]->nodes())
+        {
+          worst_gap  = std::max(worst_gap, std::abs(node.gap));
+          largest_uy = std::max(largest_uy,
+                                std::abs(block.displacement()(node.dofs[1])));
+        }
+      const double force = std::hypot(r.last("floor:Fx"), r.last("floor:Fy"));
+      std::cout << "    contact force " << force << " N, largest |gap| "
+                << worst_gap << ", largest bottom |u_y| " << largest_uy
+                << ", max |u| " << r.last("block:max|u|") << std::endl;
+      check(force < 1e-6, label + ": a contact force without a normal load");
+      check(worst_gap < 1e-12 && largest_uy < 1e-12,
+            label + ": the bottom left the flat");
+      check(std::abs(r.last("block:max|u|") - 0.5) < 1e-10,
+            label + ": the block must translate by 0.5");
+    }
+}
