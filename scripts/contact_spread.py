@@ -3,7 +3,6 @@ contact force norms on the interface around their equilibrium value F_e
 (the mean over the interface at that increment), in %; the worst increment
 and its distribution. Usage: contact_spread.py <output dir> <pair> [label]"""
 import csv
-import os
 import glob
 import sys
 
@@ -11,13 +10,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def save_atomically(fig, path, **options):
-    """Writes under a temporary name, then renames: never a half-written PNG."""
-    temporary = path[:-len(".png")] + ".tmp.png"
-    fig.savefig(temporary, **options)
-    os.replace(temporary, path)
+from atomic_png import save_atomically  # noqa: E402
 
 directory, pair = sys.argv[1], sys.argv[2]
 label = sys.argv[3] if len(sys.argv) > 3 else pair

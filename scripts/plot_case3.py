@@ -1,20 +1,13 @@
 """Case 3 (figs 26-27): spread of the contact forces per increment, the
 distribution at the worst increment, and the force on node (1.25, 0)."""
 import csv
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def save_atomically(fig, path, **options):
-    """Writes under a temporary name, then renames: never a half-written PNG."""
-    temporary = path[:-len(".png")] + ".tmp.png"
-    fig.savefig(temporary, **options)
-    os.replace(temporary, path)
+from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/case3_spread.csv")))

@@ -11,13 +11,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def save_atomically(fig, path, **options):
-    """Writes under a temporary name, then renames: never a half-written PNG."""
-    temporary = path[:-len(".png")] + ".tmp.png"
-    fig.savefig(temporary, **options)
-    os.replace(temporary, path)
+from atomic_png import save_atomically  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 directory = sys.argv[1]

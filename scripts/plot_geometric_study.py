@@ -2,20 +2,13 @@
 gap error and normal-orientation error along the two edges around
 theta = pi/2, one panel per discretisation, darker lines for larger n_e."""
 import csv
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def save_atomically(fig, path, **options):
-    """Writes under a temporary name, then renames: never a half-written PNG."""
-    temporary = path[:-len(".png")] + ".tmp.png"
-    fig.savefig(temporary, **options)
-    os.replace(temporary, path)
+from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/geometric_study.csv")))

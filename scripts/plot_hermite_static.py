@@ -1,20 +1,13 @@
 """Figs 9-11 of the paper: the deformed top edge of three elements with a
 point force at the middle of each top edge, for Q4, Q8 and Hermite."""
 import csv
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def save_atomically(fig, path, **options):
-    """Writes under a temporary name, then renames: never a half-written PNG."""
-    temporary = path[:-len(".png")] + ".tmp.png"
-    fig.savefig(temporary, **options)
-    os.replace(temporary, path)
+from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/top_edges.csv")))

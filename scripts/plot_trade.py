@@ -2,13 +2,13 @@
 wall time (and against dofs), one line per discretisation of the interface,
 each point labelled with its number of elements around."""
 import csv
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
 rows = list(csv.DictReader(open(f"{directory}/trade_case3.csv")))
@@ -34,7 +34,4 @@ for ax in axes:
     ax.legend()
 fig.suptitle("Case 3: accuracy against cost (labels: elements around the ring)")
 fig.tight_layout()
-# Written under a temporary name and renamed: never a half-written picture.
-temporary = f"{directory}/trade_case3.tmp.png"
-fig.savefig(temporary, dpi=120)
-os.replace(temporary, f"{directory}/trade_case3.png")
+save_atomically(fig, f"{directory}/trade_case3.png", dpi=120)

@@ -119,6 +119,61 @@ namespace
     check(deviation <= tolerance, what + " is out of tolerance");
   }
 
+  /**
+   * A 1 m x 0.5 m block of 8 x 4 cells (E = 1 MPa) held by its top, whose
+   * bottom is the slave of a rigid flat at height flat_y, moving by motion.
+   */
+  std::string
+  block_on_flat(const std::string &top_condition,
+                const std::string &flat_y,
+                const std::string &motion,
+                const double       friction,
+                const unsigned int increments,
+                const std::string &history)
+  {
+    return R"(
+subsection Scene
+  set Bodies        = block
+  set Contact pairs = floor
+end
+subsection Body block
+  subsection Mesh
+    set Type         = rectangle
+    set Corner 1     = 0, 0
+    set Corner 2     = 1, 0.5
+    set Subdivisions = 8, 4
+  end
+  subsection Material
+    set Young modulus = 1e6
+    set Poisson ratio = 0.3
+  end
+  subsection Boundary conditions
+    set )" + top_condition + R"(
+  end
+end
+subsection Contact floor
+  set Slave body           = block
+  set Slave boundary       = bottom
+  set Master body          = rigid
+  set Alert distance       = 0.01
+  set Friction coefficient = )" + exact(friction) + R"(
+  subsection Obstacle
+    set Type   = line
+    set Point  = 0, )" + flat_y + R"(
+    set Normal = 0, 1
+    set Motion = )" + motion + R"(
+  end
+end
+subsection Load program
+  set Stage end times  = 1
+  set Stage increments = )" + std::to_string(increments) + R"(
+end
+subsection Output
+  set History = )" + history + R"(
+end
+)";
+  }
+
   const std::string rigid_ring = "prm/case1_rigid_ring.prm";
   const std::string beam_ring  = "prm/case1_beam_ring.prm";
   const std::string rings      = "prm/case3_rings.prm";
@@ -438,46 +493,9 @@ GLISSADE_TEST(extreme_bipotential_beta)
 // equals the clamp's; when open, the block is back to zero displacement.
 GLISSADE_TEST(extreme_contact_opens_and_closes_every_increment)
 {
-  const std::string scene = R"(
-subsection Scene
-  set Bodies        = block
-  set Contact pairs = floor
-end
-subsection Body block
-  subsection Mesh
-    set Type         = rectangle
-    set Corner 1     = 0, 0
-    set Corner 2     = 1, 0.5
-    set Subdivisions = 8, 4
-  end
-  subsection Material
-    set Young modulus = 1e6
-    set Poisson ratio = 0.3
-  end
-  subsection Boundary conditions
-    set Fixed = top: xy
-  end
-end
-subsection Contact floor
-  set Slave body     = block
-  set Slave boundary = bottom
-  set Master body    = rigid
-  set Alert distance = 0.01
-  subsection Obstacle
-    set Type   = line
-    set Point  = 0, -0.001
-    set Normal = 0, 1
-    set Motion = 0, 0.002*(1 + cos(20*pi*t))
-  end
-end
-subsection Load program
-  set Stage end times  = 1
-  set Stage increments = 20
-end
-subsection Output
-  set History = contact_force(floor); reaction(block, top); max_displacement(block)
-end
-)";
+  const std::string scene = block_on_flat(
+    "Fixed = top: xy", "-0.001", "0, 0.002*(1 + cos(20*pi*t))", 0., 20,
+    "contact_force(floor); reaction(block, top); max_displacement(block)");
   // t_k = k/20: cos(pi k) = -1, 1, -1, ...: the flat at y = -0.001 (open,
   // 1 mm below) for odd k and at y = 0.003 (3 mm into the block) for even k.
   const Run r = run("open_close", scene, {}, true);
@@ -564,46 +582,9 @@ GLISSADE_TEST(extreme_grazing_contact)
 {
   for (const double mu : {0., 0.3})
     {
-      const std::string scene = R"(
-subsection Scene
-  set Bodies        = block
-  set Contact pairs = floor
-end
-subsection Body block
-  subsection Mesh
-    set Type         = rectangle
-    set Corner 1     = 0, 0
-    set Corner 2     = 1, 0.5
-    set Subdivisions = 8, 4
-  end
-  subsection Material
-    set Young modulus = 1e6
-    set Poisson ratio = 0.3
-  end
-  subsection Boundary conditions
-    set Prescribed displacement = top: xy: 0.5*t, 0
-  end
-end
-subsection Contact floor
-  set Slave body           = block
-  set Slave boundary       = bottom
-  set Master body          = rigid
-  set Alert distance       = 0.01
-  set Friction coefficient = )" + exact(mu) + R"(
-  subsection Obstacle
-    set Type   = line
-    set Point  = 0, 0
-    set Normal = 0, 1
-  end
-end
-subsection Load program
-  set Stage end times  = 1
-  set Stage increments = 10
-end
-subsection Output
-  set History = contact_force(floor); max_displacement(block)
-end
-)";
+      const std::string scene = block_on_flat(
+        "Prescribed displacement = top: xy: 0.5*t, 0", "0", "0, 0", mu, 10,
+        "contact_force(floor); max_displacement(block)");
       const std::string label = "grazing_mu_" + exact(mu);
       const Run         r     = run(label, scene, {}, true);
       check(r.converged, label + " must converge");

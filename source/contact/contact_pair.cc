@@ -493,13 +493,18 @@ namespace glissade
   bool
   ContactPair::can_react(const ContactNode &node) const
   {
-    // A slave node whose two dofs are prescribed, against a rigid obstacle,
-    // has no compliance at all (W_kk = 0): no reaction can change its gap.
-    // Such a node (a supported corner inside a large alert distance) is left
-    // out rather than handed to the local solver, which would refuse it.
-    return master_body != nullptr ||
-           !(slave_body.dof_is_prescribed(node.dofs[0]) &&
-             slave_body.dof_is_prescribed(node.dofs[1]));
+    // A node whose gap depends only on prescribed dofs (a supported slave
+    // corner against a rigid obstacle, or against a supported part of the
+    // master) has no compliance at all, W_kk = 0: no reaction can change
+    // its gap. It is left out rather than handed to the local solver, which
+    // would refuse it. The dofs are those of the node's last projection.
+    for (const auto &e : node.kinematics)
+      {
+        const Body &b = e.body == 0 ? slave_body : *master_body;
+        if (e.weight != 0. && !b.dof_is_prescribed(e.dof))
+          return true;
+      }
+    return false;
   }
 
 
@@ -514,11 +519,11 @@ namespace glissade
     unsigned int activated = 0;
     for (auto &node : slave_nodes)
       {
-        if (node.active || !can_react(node))
+        if (node.active)
           continue;
         ContactNode trial = node;
         trial.segment     = -1;
-        if (!project(trial) || trial.gap >= -tolerance)
+        if (!project(trial) || trial.gap >= -tolerance || !can_react(trial))
           continue;
         // The gap at the start of the increment that the linear follow-up
         // of Frame update = increment needs: g_0 = g - n . (motion since).

@@ -118,17 +118,19 @@ namespace glissade
   ContactProblem::activate_nodes_crossed_by(
     const std::vector<Vector<double>> &free_step)
   {
-    std::vector<Vector<double>> current(bodies.size());
+    // Each body holds u + du_lib while the nodes are projected, then gets
+    // its own u back unchanged (a swap, not u + du - du). The master curve
+    // is left at the trial state: the next update rebuilds it.
+    std::vector<Vector<double>> other(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        current[b]           = bodies[b]->displacement();
-        Vector<double> trial = current[b];
-        trial += free_step[b];
-        bodies[b]->set_displacement(trial);
+        other[b] = bodies[b]->displacement();
+        other[b] += free_step[b];
+        bodies[b]->swap_displacement(other[b]);
       }
     const unsigned int n = activate_penetrating_nodes();
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->set_displacement(current[b]);
+      bodies[b]->swap_displacement(other[b]);
     return n;
   }
 

@@ -504,13 +504,8 @@ namespace glissade
         check_part([&]() { body.material = parse_material(prm, where); });
         check_part([&]() { parse_boundary_conditions(prm, body, where); });
         prm.leave_subsection();
-        if (body.mesh.type == "gmsh" && !body.mesh.file.empty() &&
-            body.mesh.file[0] != '/')
-          {
-            const auto slash = source.find_last_of('/');
-            if (slash != std::string::npos)
-              body.mesh.file = source.substr(0, slash + 1) + body.mesh.file;
-          }
+        if (body.mesh.type == "gmsh")
+          body.mesh.file = text::path_beside(source, body.mesh.file);
         scene.bodies.push_back(body);
       }
 

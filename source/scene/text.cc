@@ -90,5 +90,17 @@ namespace glissade
           }
       return compact;
     }
+
+
+
+    std::string
+    path_beside(const std::string &file, const std::string &path)
+    {
+      if (path.empty() || path[0] == '/')
+        return path;
+      const auto slash = file.find_last_of('/');
+      return slash == std::string::npos ? path :
+                                          file.substr(0, slash + 1) + path;
+    }
   } // namespace text
 } // namespace glissade

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -155,13 +156,7 @@ namespace glissade
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
     prm.enter_subsection("Case 3 study");
-    std::string scene = prm.get("Scene");
-    if (!scene.empty() && scene[0] != '/')
-      {
-        const auto slash = prm_file.find_last_of('/');
-        if (slash != std::string::npos)
-          scene = prm_file.substr(0, slash + 1) + scene;
-      }
+    const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
     const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
     const double       angle      = prm.get_double("Rotation angle");
     const unsigned int increments = prm.get_integer("Rotation increments");

@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -463,10 +464,9 @@ namespace glissade
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
     prm.enter_subsection("Contact case study");
-    const std::string folder = std::filesystem::path(prm_file).parent_path().string();
     std::vector<std::string> scenes;
     for (const auto &name : Utilities::split_string_list(prm.get("Scenes"), ','))
-      scenes.push_back(name[0] == '/' || folder.empty() ? name : folder + "/" + name);
+      scenes.push_back(text::path_beside(prm_file, name));
     if (scenes.empty())
       throw InputError(prm_file + ": Contact case study/Scenes", "no scene given");
     const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');

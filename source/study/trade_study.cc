@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/study/case3_study.h>
@@ -149,13 +150,7 @@ namespace glissade
     SceneReader::parse_study(prm, prm_file, overrides);
 
     prm.enter_subsection("Trade study");
-    std::string scene = prm.get("Scene");
-    if (!scene.empty() && scene[0] != '/')
-      {
-        const auto slash = prm_file.find_last_of('/');
-        if (slash != std::string::npos)
-          scene = prm_file.substr(0, slash + 1) + scene;
-      }
+    const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
     const std::map<std::string, std::vector<unsigned int>> sweep = {
       {"q4", integer_list(prm.get("Q4 elements"))},
       {"bspline", integer_list(prm.get("B-spline elements"))},

@@ -30,5 +30,12 @@ namespace glissade
      */
     std::string
     essential_message(const std::exception &e);
+
+    /**
+     * A path named in `file` (a mesh in a scene, a scene in a study), taken
+     * relative to the folder of that file unless it is absolute or empty.
+     */
+    std::string
+    path_beside(const std::string &file, const std::string &path);
   } // namespace text
 } // namespace glissade

@@ -159,11 +159,14 @@ namespace glissade
     void
     update(const Vector<double> &increment);
 
-    /** Replaces the displacement (a trial state; see ContactProblem). */
+    /**
+     * Exchanges the displacement with u, without copying (a trial state;
+     * see ContactProblem::activate_nodes_crossed_by).
+     */
     void
-    set_displacement(const Vector<double> &u)
+    swap_displacement(Vector<double> &u)
     {
-      solution = u;
+      solution.swap(u);
     }
 
     /**
