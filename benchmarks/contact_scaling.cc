@@ -39,7 +39,7 @@ main(int argc, char **argv)
     "subsection Output\n set Progress = false\nend\n";
   Simulation simulation(SceneReader::read_string(prm, "contact benchmark"));
   simulation.advance_to(1., "increment 1");
-  const RunStatistics &s = simulation.statistics();
+  const RunStatistics  s = simulation.statistics();
   const ContactProblem &c = simulation.contact();
   const double         n  = s.newton_iterations;
   std::printf("%6u active nodes %9u dofs  Newton its %2u  per iteration: "
@@ -49,9 +49,9 @@ main(int argc, char **argv)
               simulation.body("strip").n_dofs(),
               s.newton_iterations,
               s.factorization_seconds / n,
-              c.detection_seconds / n,
-              c.compliance_seconds / n,
-              c.local_solve_seconds / n,
+              s.detection_seconds / n,
+              s.compliance_seconds / n,
+              s.local_solve_seconds / n,
               c.last_result().sweeps);
   const DirectSolver &solver = simulation.body("strip").direct_solver();
   std::printf("       factorisations: %u Cholesky (contact dofs last), %u LU; "

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/contact/bspline_curve.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/faceted_curve.h>
@@ -18,10 +19,12 @@ namespace glissade
   ContactPair::ContactPair(const ContactDescription &description,
                            Body                     &slave,
                            Body                     *master,
-                           const std::string        &source)
+                           const std::string        &source,
+                           TimerOutput              &timer)
     : description(description)
     , slave_body(slave)
     , master_body(master)
+    , timer(timer)
   {
     const std::string entry = description.entry;
     if (master_body == nullptr)
@@ -228,10 +231,7 @@ namespace glissade
   void
   ContactPair::update_master_curve()
   {
-    Timer                           timer;
-    const auto                      account = [&]() {
-      surface_build_seconds += timer.wall_time();
-    };
+    TimerOutput::Scope              scope(timer, timing::surface);
     std::vector<MasterCurve::Point> points;
     for (unsigned int j = 0; j < master_points.size(); ++j)
       {
@@ -242,7 +242,6 @@ namespace glissade
     if (description.surface != "hermite")
       {
         curve->update(points);
-        account();
         return;
       }
     // Deformed tangents d = (I + grad u) T at both ends of each segment.
@@ -262,7 +261,6 @@ namespace glissade
         tangents.push_back(pair);
       }
     static_cast<HermiteCurve &>(*curve).update(points, tangents);
-    account();
   }
 
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/contact/contact_problem.h>
 
 #include <cstdlib>
@@ -10,8 +11,10 @@ namespace glissade
 {
   ContactProblem::ContactProblem(
     const SceneDescription                   &scene,
-    const std::vector<std::unique_ptr<Body>> &bodies)
+    const std::vector<std::unique_ptr<Body>> &bodies,
+    TimerOutput                              &timer)
     : bodies(bodies)
+    , timer(timer)
     , columns(bodies.size())
   {
     const auto find = [&](const std::string &name) -> Body * {
@@ -29,7 +32,8 @@ namespace glissade
           c,
           *find(c.slave_body),
           c.master_body == "rigid" ? nullptr : find(c.master_body),
-          scene.source);
+          scene.source,
+          timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
       });
@@ -64,12 +68,11 @@ namespace glissade
   void
   ContactProblem::begin_step(const double time)
   {
-    Timer timer;
+    TimerOutput::Scope scope(timer, timing::detection);
     for (auto &pair : pairs)
       pair->begin_step(time);
     for (auto &c : columns)
       c.clear();
-    detection_seconds += timer.wall_time();
   }
 
 
@@ -104,11 +107,10 @@ namespace glissade
   unsigned int
   ContactProblem::activate_penetrating_nodes()
   {
-    Timer        timer;
-    unsigned int n = 0;
+    TimerOutput::Scope scope(timer, timing::detection);
+    unsigned int       n = 0;
     for (auto &pair : pairs)
       n += pair->activate_penetrating_nodes();
-    detection_seconds += timer.wall_time();
     return n;
   }
 
@@ -147,7 +149,7 @@ namespace glissade
     for (auto &c : columns)
       c.clear();
 
-    Timer detection;
+    timer.enter_subsection(timing::detection);
     // The active nodes of all pairs form one condensed problem: nodes of
     // different pairs couple through the bodies they share.
     struct Active
@@ -168,7 +170,7 @@ namespace glissade
                               pair->master() ? body_index(pair->master()) :
                                                numbers::invalid_unsigned_int});
       }
-    detection_seconds += detection.wall_time();
+    timer.leave_subsection(timing::detection);
 
     std::vector<Vector<double>> contact_forces(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -191,7 +193,7 @@ namespace glissade
 
     // W_kl = H_kin,k K^-1 H_force,l^T from the cached columns of K^-1, and
     // u_free_k, summing over the bodies that nodes k and l share.
-    Timer                                   compliance_timer;
+    timer.enter_subsection(timing::compliance);
     const unsigned int                      n = active.size();
     ComplianceMatrix                        W;
     std::vector<BiPotentialSolver::Vector2> u_free(n), r(n);
@@ -315,9 +317,9 @@ namespace glissade
                 }
             }
       }
-    compliance_seconds += compliance_timer.wall_time();
+    timer.leave_subsection(timing::compliance);
 
-    Timer                       local_timer;
+    timer.enter_subsection(timing::local_solve);
     BiPotentialSolver::Settings settings;
     const auto &first = active[0].pair->settings();
     settings.beta               = first.beta;
@@ -327,7 +329,7 @@ namespace glissade
     settings.rho_choice =
       BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
     result = BiPotentialSolver(settings).solve(W, u_free, mu, r);
-    local_solve_seconds += local_timer.wall_time();
+    timer.leave_subsection(timing::local_solve);
     if (!result.converged)
       return false;
 

@@ -11,6 +11,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
 
@@ -21,7 +22,7 @@ namespace glissade
   namespace
   {
     // Raised when the layout of the file changes: an old file is refused.
-    const std::string checkpoint_format = "glissade checkpoint 1";
+    const std::string checkpoint_format = "glissade checkpoint 2";
   } // namespace
 
 
@@ -39,10 +40,17 @@ namespace glissade
   Simulation::serialize_state(Archive &archive)
   {
     archive &current_time;
-    archive &stats.increments &stats.newton_iterations &stats.cut_backs
-      &stats.assembly_seconds &stats.factorization_seconds
-        &stats.solve_seconds &stats.output_seconds &stats.checkpoint_seconds
-          &stats.wall_seconds;
+    // Written: the totals so far (restored times plus this process's
+    // TimerOutput sections); read: they become the restored times.
+    RunStatistics totals = Archive::is_saving::value ? statistics() : stats;
+    archive &totals.increments &totals.newton_iterations &totals.cut_backs
+      &totals.assembly_seconds &totals.factorization_seconds
+        &totals.solve_seconds &totals.detection_seconds
+          &totals.surface_build_seconds &totals.compliance_seconds
+            &totals.local_solve_seconds &totals.output_seconds
+              &totals.checkpoint_seconds &totals.wall_seconds;
+    if (Archive::is_loading::value)
+      stats = totals;
     archive &pvd_records;
     history->serialize_rows(archive);
     for (auto &b : all_bodies)
@@ -76,8 +84,8 @@ namespace glissade
   void
   Simulation::write_checkpoint(const unsigned int increment)
   {
-    Timer timer;
-    AtomicFile file(checkpoint_file());
+    TimerOutput::Scope scope(timer, timing::checkpoints);
+    AtomicFile         file(checkpoint_file());
     {
       boost::archive::binary_oarchive archive(file.stream());
       std::string  format      = checkpoint_format;
@@ -87,7 +95,6 @@ namespace glissade
       serialize_state(archive);
     }
     file.commit();
-    stats.checkpoint_seconds += timer.wall_time();
   }
 
 

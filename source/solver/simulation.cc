@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
 
@@ -11,12 +12,14 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace glissade
 {
   Simulation::Simulation(const SceneDescription &scene)
     : scene(scene)
+    , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     // Every body is built, and its boundary names checked against its mesh,
     // before the first mistake is reported: all of them in one message.
@@ -27,7 +30,7 @@ namespace glissade
       });
     mistakes.throw_if_any();
     pvd_records.resize(all_bodies.size());
-    contact_problem = std::make_unique<ContactProblem>(scene, all_bodies);
+    contact_problem = std::make_unique<ContactProblem>(scene, all_bodies, timer);
     history         = std::make_unique<HistoryWriter>(
       scene.output.history,
       all_bodies,
@@ -69,16 +72,17 @@ namespace glissade
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
       {
-        Timer timer;
-        bool  admissible = true;
+        bool   admissible       = true;
         double residual_squared = 0., scale = 0.;
-        for (auto &b : all_bodies)
-          {
-            admissible = b->assemble() && admissible;
-            residual_squared += std::pow(b->residual_norm(), 2);
-            scale = std::max(scale, b->force_scale());
-          }
-        stats.assembly_seconds += timer.wall_time();
+        {
+          TimerOutput::Scope scope(timer, timing::assembly);
+          for (auto &b : all_bodies)
+            {
+              admissible = b->assemble() && admissible;
+              residual_squared += std::pow(b->residual_norm(), 2);
+              scale = std::max(scale, b->force_scale());
+            }
+        }
         const double residual = std::sqrt(residual_squared);
         if (!admissible || !std::isfinite(residual))
           return false;
@@ -124,12 +128,12 @@ namespace glissade
         std::vector<Vector<double>> du(all_bodies.size());
         for (unsigned int b = 0; b < all_bodies.size(); ++b)
           {
-            Timer factorization_timer;
-            all_bodies[b]->factorize();
-            stats.factorization_seconds += factorization_timer.wall_time();
-            Timer solve_timer;
+            {
+              TimerOutput::Scope scope(timer, timing::factorization);
+              all_bodies[b]->factorize();
+            }
+            TimerOutput::Scope scope(timer, timing::predictor);
             all_bodies[b]->solve(all_bodies[b]->right_hand_side(), du[b]);
-            stats.solve_seconds += solve_timer.wall_time();
           }
         if (!contact_problem->empty() && !contact_problem->correct(du))
           {
@@ -218,7 +222,7 @@ namespace glissade
   void
   Simulation::write_output(const unsigned int increment, const double t)
   {
-    Timer timer;
+    TimerOutput::Scope scope(timer, timing::output);
     for (unsigned int b = 0; b < all_bodies.size(); ++b)
       {
         const std::string vtu =
@@ -242,7 +246,6 @@ namespace glissade
       }
     if (scene.output.contact_table_interval == 0)
       write_contact_table(increment);
-    stats.output_seconds += timer.wall_time();
   }
 
 
@@ -388,67 +391,94 @@ namespace glissade
 
 
 
+  RunStatistics
+  Simulation::statistics() const
+  {
+    RunStatistics                       total = stats;
+    const std::map<std::string, double> sections =
+      timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto seconds = [&](const char *section) {
+      const auto found = sections.find(section);
+      return found == sections.end() ? 0. : found->second;
+    };
+    total.assembly_seconds += seconds(timing::assembly);
+    total.factorization_seconds += seconds(timing::factorization);
+    total.solve_seconds += seconds(timing::predictor);
+    total.detection_seconds += seconds(timing::detection);
+    total.surface_build_seconds += seconds(timing::surface);
+    total.compliance_seconds += seconds(timing::compliance);
+    total.local_solve_seconds += seconds(timing::local_solve);
+    total.output_seconds += seconds(timing::output);
+    total.checkpoint_seconds += seconds(timing::checkpoints);
+    return total;
+  }
+
+
+
   std::string
   Simulation::summary() const
   {
-    unsigned int dofs = 0;
+    const RunStatistics s = statistics();
+    unsigned int        dofs = 0;
     for (const auto &b : all_bodies)
       dofs += b->n_dofs();
-    std::ostringstream s;
-    s << std::setprecision(3) << "glissade: " << stats.increments
-      << " increments, " << stats.newton_iterations << " Newton iterations, "
-      << stats.cut_backs << " cut-backs, " << dofs << " dofs, "
-      << stats.wall_seconds << " s wall (assembly " << stats.assembly_seconds
-      << " s, factorization " << stats.factorization_seconds << " s";
+    std::ostringstream out;
+    out << std::setprecision(3) << "glissade: " << s.increments
+        << " increments, " << s.newton_iterations << " Newton iterations, "
+        << s.cut_backs << " cut-backs, " << dofs << " dofs, "
+        << s.wall_seconds << " s wall (assembly " << s.assembly_seconds
+        << " s, factorization " << s.factorization_seconds << " s";
     if (!contact_problem->empty())
-      s << ", contact detection " << contact_problem->detection_seconds
-        << " s, compliance " << contact_problem->compliance_seconds
-        << " s, local solve " << contact_problem->local_solve_seconds << " s";
-    s << ")";
-    return s.str();
+      out << ", contact detection " << s.detection_seconds << " s, compliance "
+          << s.compliance_seconds << " s, local solve "
+          << s.local_solve_seconds << " s";
+    out << ")";
+    return out.str();
   }
 
 
   std::string
   Simulation::timing_table() const
   {
-    double surface = 0.;
-    for (const auto &pair : contact_problem->contact_pairs())
-      surface += pair->surface_build_seconds;
-    const ContactProblem &c = *contact_problem;
+    const RunStatistics s = statistics();
     std::vector<std::pair<std::string, double>> rows = {
-      {"assembly of residual and tangent", stats.assembly_seconds},
-      {"factorization", stats.factorization_seconds},
-      {"predictor solve", stats.solve_seconds}};
-    if (!c.empty())
+      {timing::assembly, s.assembly_seconds},
+      {timing::factorization, s.factorization_seconds},
+      {timing::predictor, s.solve_seconds}};
+    if (!contact_problem->empty())
       {
-        rows.emplace_back("contact detection and projection",
-                          c.detection_seconds - surface);
-        rows.emplace_back("master surface build", surface);
-        rows.emplace_back("compliance matrix W", c.compliance_seconds);
-        rows.emplace_back("local bi-potential solve", c.local_solve_seconds);
+        // The detection section contains the surface build: shown apart.
+        rows.emplace_back(timing::detection,
+                          s.detection_seconds - s.surface_build_seconds);
+        rows.emplace_back(timing::surface, s.surface_build_seconds);
+        rows.emplace_back(timing::compliance, s.compliance_seconds);
+        rows.emplace_back(timing::local_solve, s.local_solve_seconds);
       }
-    rows.emplace_back("output (VTU, PVD, CSV)", stats.output_seconds);
-    if (stats.checkpoint_seconds > 0.)
-      rows.emplace_back("checkpoints", stats.checkpoint_seconds);
+    rows.emplace_back(timing::output, s.output_seconds);
+    if (s.checkpoint_seconds > 0.)
+      rows.emplace_back(timing::checkpoints, s.checkpoint_seconds);
     double accounted = 0.;
     for (const auto &row : rows)
       accounted += row.second;
     rows.emplace_back("other (corrector, bookkeeping)",
-                      std::max(0., stats.wall_seconds - accounted));
+                      std::max(0., s.wall_seconds - accounted));
 
     std::ostringstream table;
-    const double       total = std::max(stats.wall_seconds, 1e-300);
-    table << std::fixed << "  " << std::left << std::setw(36) << "part of the run"
-          << std::right << std::setw(11) << "wall (s)" << std::setw(8) << "%"
-          << '\n';
+    const double       total = std::max(s.wall_seconds, 1e-300);
+    const double       per   = 1000. / std::max(1u, s.increments);
+    table << std::fixed << "  " << std::left << std::setw(36)
+          << "part of the run (deal.II TimerOutput)" << std::right
+          << std::setw(11) << "wall (s)" << std::setw(8) << "%"
+          << std::setw(20) << "per increment (ms)" << '\n';
     for (const auto &[name, seconds] : rows)
       table << "  " << std::left << std::setw(36) << name << std::right
             << std::setw(11) << std::setprecision(3) << seconds << std::setw(8)
-            << std::setprecision(1) << 100. * seconds / total << '\n';
+            << std::setprecision(1) << 100. * seconds / total << std::setw(20)
+            << std::setprecision(2) << seconds * per << '\n';
     table << "  " << std::left << std::setw(36) << "total" << std::right
-          << std::setw(11) << std::setprecision(3) << stats.wall_seconds
-          << std::setw(8) << "100.0" << '\n';
+          << std::setw(11) << std::setprecision(3) << s.wall_seconds
+          << std::setw(8) << "100.0" << std::setw(20) << std::setprecision(2)
+          << s.wall_seconds * per << '\n';
     return table.str();
   }
 } // namespace glissade

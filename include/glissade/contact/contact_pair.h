@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
 
 #include <glissade/body/body.h>
 #include <glissade/contact/bipotential_solver.h>
@@ -90,10 +91,12 @@ namespace glissade
   class ContactPair
   {
   public:
+    /** `timer` receives the master surface build section. */
     ContactPair(const ContactDescription &description,
                 Body                     &slave,
                 Body                     *master,
-                const std::string        &source);
+                const std::string        &source,
+                TimerOutput              &timer);
 
     const std::string &
     name() const
@@ -173,9 +176,6 @@ namespace glissade
     std::vector<types::global_dof_index>
     contact_dofs(const Body &body) const;
 
-    /** Wall time spent rebuilding the master curve, accumulated. */
-    double surface_build_seconds = 0.;
-
     /** Sum of the forces on the slave nodes (global frame). */
     Tensor<1, 2>
     total_force() const;
@@ -228,6 +228,7 @@ namespace glissade
     const ContactDescription       description;
     Body                          &slave_body;
     Body                          *master_body;
+    TimerOutput                   &timer;
     std::unique_ptr<RigidObstacle> obstacle;
     std::unique_ptr<MasterCurve>   curve;
     std::vector<ContactNode>       slave_nodes;

@@ -28,8 +28,10 @@ namespace glissade
   class ContactProblem
   {
   public:
+    /** `timer` receives the detection, W and local solve sections. */
     ContactProblem(const SceneDescription                   &scene,
-                   const std::vector<std::unique_ptr<Body>> &bodies);
+                   const std::vector<std::unique_ptr<Body>> &bodies,
+                   TimerOutput                              &timer);
 
     bool
     empty() const
@@ -78,11 +80,6 @@ namespace glissade
       return pairs;
     }
 
-    /** Local solve and compliance timings, accumulated. */
-    double compliance_seconds = 0.;
-    double local_solve_seconds = 0.;
-    double detection_seconds = 0.;
-
   private:
     /** Index of a body in the simulation's list. */
     unsigned int
@@ -97,6 +94,7 @@ namespace glissade
     column(const unsigned int body, const types::global_dof_index dof);
 
     const std::vector<std::unique_ptr<Body>> &bodies;
+    TimerOutput                              &timer;
     std::vector<std::map<types::global_dof_index, Vector<double>>> columns;
     std::vector<std::unique_ptr<ContactPair>> pairs;
     BiPotentialSolver::Result                 result;

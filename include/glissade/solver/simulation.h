@@ -12,7 +12,12 @@
 
 namespace glissade
 {
-  /** Counters and timings of a run, for the summary line and benchmarks. */
+  /**
+   * Counters and timings of a run, for the summary line, the timing table
+   * and benchmarks. The times are the sections of the run's deal.II
+   * TimerOutput (base/timing_sections.h); detection includes the surface
+   * build.
+   */
   struct RunStatistics
   {
     unsigned int increments        = 0;
@@ -21,6 +26,10 @@ namespace glissade
     double       assembly_seconds      = 0.;
     double       factorization_seconds = 0.;
     double       solve_seconds         = 0.;
+    double       detection_seconds     = 0.;
+    double       surface_build_seconds = 0.;
+    double       compliance_seconds    = 0.;
+    double       local_solve_seconds   = 0.;
     double       output_seconds        = 0.;
     double       checkpoint_seconds    = 0.;
     double       wall_seconds          = 0.;
@@ -96,11 +105,12 @@ namespace glissade
       return *history;
     }
 
-    const RunStatistics &
-    statistics() const
-    {
-      return stats;
-    }
+    /**
+     * Counters and times so far: those restored from a checkpoint plus
+     * this process's TimerOutput sections.
+     */
+    RunStatistics
+    statistics() const;
 
     /** "N increments, M Newton iterations, ... s wall" */
     std::string
@@ -109,7 +119,8 @@ namespace glissade
     /**
      * Where the wall time went: assembly, factorization, predictor solve,
      * contact detection, master surface build, compliance matrix, local
-     * solve, output, checkpoints and the rest, in seconds and percent.
+     * solve, output, checkpoints and the rest, in seconds, in percent and
+     * per increment (from the TimerOutput sections).
      */
     std::string
     timing_table() const;
@@ -149,11 +160,14 @@ namespace glissade
     serialize_state(Archive &archive);
 
     const SceneDescription             scene;
+    /** Every timed part of the run (never printed by itself). */
+    mutable TimerOutput                timer;
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
     std::vector<double>                residual_history;
+    /** Counters; times restored from a checkpoint (0 in a fresh run). */
     RunStatistics                      stats;
     unsigned int                       iterations_of_step = 0;
     double                             current_time       = 0.;
