@@ -1,7 +1,9 @@
-"""The speed-accuracy trade on case 3: worst contact-force spread against
-wall time (and against dofs), one line per discretisation of the interface,
-each point labelled with its number of elements around."""
+"""The speed-accuracy trade: for every measure swept (trade_<measure>.csv),
+its error against wall time and against dofs, one line per discretisation,
+each point labelled with its mesh parameter n. One PNG per measure."""
 import csv
+import glob
+import os
 import sys
 
 import matplotlib
@@ -11,27 +13,46 @@ import matplotlib.pyplot as plt  # noqa: E402
 from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
-rows = list(csv.DictReader(open(f"{directory}/trade_case3.csv")))
-names = {"q4": "Q4 (faceted)", "bspline": "Q4 + B-spline", "hermite": "Hermite"}
-fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
-for family, label in names.items():
-    pts = sorted((r for r in rows if r["discretisation"] == family),
-                 key=lambda r: int(r["elements"]))
-    if not pts:
+titles = {
+    "geometric_gap": "Geometric study: largest gap error (% of R)",
+    "geometric_normal": "Geometric study: largest normal error (degrees)",
+    "table1": "Table 1: largest displacement, error against the reference (%)",
+    "case1": "Case 1: tip displacement, error against the reference (%)",
+    "case2": "Case 2: roughness of the corner's contact force",
+    "case3": "Case 3: worst contact-force spread (%)",
+}
+names = {"q4": "Q4 (faceted)", "q8": "Q8", "q9": "Q9", "q12": "Q12",
+         "q16": "Q16", "bspline": "Q4 + B-spline (segment transfer)",
+         "bspline-spline": "Q4 + B-spline (spline transfer)",
+         "hermite": "Hermite"}
+for path in sorted(glob.glob(f"{directory}/trade_*.csv")):
+    measure = os.path.basename(path)[len("trade_"):-len(".csv")]
+    rows = list(csv.DictReader(open(path)))
+    if not rows:
         continue
-    spread = [max(float(r["worst_spread_percent"]), 1e-6) for r in pts]
-    for ax, key in zip(axes, ["wall_seconds", "dofs"]):
-        x = [float(r[key]) for r in pts]
-        ax.loglog(x, spread, marker="o", label=label)
-        for xi, yi, r in zip(x, spread, pts):
-            ax.annotate(r["elements"], (xi, yi), textcoords="offset points",
-                        xytext=(4, 4), fontsize=8)
-axes[0].set_xlabel("wall time (s, Release)")
-axes[1].set_xlabel("dofs")
-for ax in axes:
-    ax.set_ylabel("worst contact-force spread (%)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend()
-fig.suptitle("Case 3: accuracy against cost (labels: elements around the ring)")
-fig.tight_layout()
-save_atomically(fig, f"{directory}/trade_case3.png", dpi=120)
+    # The geometric measures involve no solve: their cost is the dofs.
+    keys = ["dofs"] if measure.startswith("geometric") else ["wall_seconds", "dofs"]
+    fig, axes = plt.subplots(1, len(keys), figsize=(6 * len(keys), 4.5),
+                             squeeze=False)
+    for family, label in names.items():
+        pts = sorted((r for r in rows if r["discretisation"] == family),
+                     key=lambda r: int(r["n"]))
+        if not pts:
+            continue
+        error = [max(float(r["error"]), 1e-12) for r in pts]
+        for ax, key in zip(axes[0], keys):
+            x = [float(r[key]) for r in pts]
+            ax.loglog(x, error, marker="o", label=label)
+            for xi, yi, r in zip(x, error, pts):
+                ax.annotate(r["n"], (xi, yi), textcoords="offset points",
+                            xytext=(4, 4), fontsize=8)
+    for ax, key in zip(axes[0], keys):
+        ax.set_xlabel("wall time (s, Release)" if key == "wall_seconds"
+                      else "dofs")
+        ax.set_ylabel("error")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle(titles.get(measure, measure) + " (labels: n)")
+    fig.tight_layout()
+    save_atomically(fig, f"{directory}/trade_{measure}.png", dpi=120)
+    plt.close(fig)

@@ -76,6 +76,11 @@ namespace glissade
       overrides.push_back("Contact interface/Surface=faceted");
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
+    else if (variant == "bspline-spline")
+      {
+        overrides.push_back("Contact interface/Surface=bspline");
+        overrides.push_back("Contact interface/Force transfer=spline");
+      }
     else if (variant == "hermite")
       {
         overrides.push_back("Body outer/Element/Space=hermite");
@@ -85,7 +90,7 @@ namespace glissade
     else
       throw InputError("Case 3 study/Variants",
                        "unknown variant '" + variant +
-                         "' (known: q4, bspline, hermite)");
+                         "' (known: q4, bspline, bspline-spline, hermite)");
 
     Simulation simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;

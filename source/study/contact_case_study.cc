@@ -32,19 +32,27 @@ namespace glissade
     std::vector<std::string>
     variant_overrides(const SceneDescription &scene, const std::string &variant)
     {
-      if (variant != "q4" && variant != "bspline" && variant != "hermite")
+      if (variant != "q4" && variant != "bspline" &&
+          variant != "bspline-spline" && variant != "hermite")
         throw InputError("Contact case study/Variants",
                          "unknown variant '" + variant +
-                           "' (known: q4, bspline, hermite)");
+                           "' (known: q4, bspline, bspline-spline, hermite)");
       std::vector<std::string> overrides;
       if (variant == "hermite")
         for (const auto &body : scene.bodies)
           overrides.push_back("Body " + body.name + "/Element/Space=hermite");
+      // bspline-spline: the B-spline master with the spline's own force
+      // transfer weights instead of the paper's segment hand-over.
       const std::string surface =
-        variant == "q4" ? "faceted" : variant == "bspline" ? "bspline" : "hermite";
+        variant == "q4" ? "faceted" : variant == "hermite" ? "hermite" : "bspline";
       for (const auto &contact : scene.contacts)
         if (contact.master_body != "rigid")
-          overrides.push_back("Contact " + contact.name + "/Surface=" + surface);
+          {
+            overrides.push_back("Contact " + contact.name + "/Surface=" + surface);
+            if (variant == "bspline-spline")
+              overrides.push_back("Contact " + contact.name +
+                                  "/Force transfer=spline");
+          }
       return overrides;
     }
 
@@ -110,10 +118,13 @@ namespace glissade
                                 const unsigned int increments,
                                 const double       load_fraction,
                                 const std::string &output_directory,
-                                const bool         progress)
+                                const bool         progress,
+                                const std::vector<std::string> &extra_overrides)
   {
-    const SceneDescription base = SceneReader::read_file(scene_file);
-    std::vector<std::string> overrides = variant_overrides(base, variant);
+    const SceneDescription base = SceneReader::read_file(scene_file, extra_overrides);
+    std::vector<std::string> overrides = extra_overrides;
+    for (const auto &o : variant_overrides(base, variant))
+      overrides.push_back(o);
     overrides.push_back(std::string("Output/Progress=") +
                         (progress ? "true" : "false"));
     overrides.push_back("Output/Directory=" + output_directory + "/" +

@@ -1,50 +1,107 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
-#include <glissade/study/case3_study.h>
 #include <glissade/study/plotting.h>
+#include <glissade/study/trade_measures.h>
 #include <glissade/study/trade_study.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
-#include <cmath>
-#include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#include <utility>
 
 namespace glissade
 {
   namespace
   {
-    /** "q480" -> "q4 80", "hermite" -> "hermite 40" (Case3Result labels). */
-    std::pair<std::string, std::string>
-    family_and_elements(const std::string &label)
+    /** One discretisation at one mesh parameter, and what it gave. */
+    struct SweepPoint
     {
-      for (const std::string family : {"bspline", "hermite", "q4"})
-        if (label.rfind(family, 0) == 0)
-          {
-            const std::string digits = label.substr(family.size());
-            return {family, digits.empty() ? "40" : digits};
-          }
-      return {label, "?"};
+      std::string  discretisation;
+      unsigned int n = 0;
+      TradePoint   figures;
+      double       peak_megabytes = 0.;
+      double       error          = 0.;
+    };
+
+    /** The sections of the .prm, one per group of measures. */
+    std::string
+    section_of(const std::string &measure)
+    {
+      if (measure.rfind("geometric", 0) == 0)
+        return "Geometric";
+      if (measure == "table1")
+        return "Table 1";
+      return "Case " + measure.substr(4);
     }
 
     /**
-     * Runs one point of the sweep in a child process, so that the peak
-     * memory (wait4's ru_maxrss) is that point's alone and not the largest
-     * of the run so far. The figures come back through a pipe.
+     * "q4: 40 80 160; hermite: 20 40" -> {(q4, 40), (q4, 80), ...}, each
+     * discretisation checked against those the measure knows.
      */
-    template <typename Point>
-    Case3Result
-    run_in_child(const Point &point, double &peak_megabytes)
+    std::vector<std::pair<std::string, unsigned int>>
+    parse_sweep(const std::string &text,
+                const std::string &measure,
+                const std::string &entry)
+    {
+      std::vector<std::pair<std::string, unsigned int>> points;
+      const auto &known = TradeMeasures::discretisations(measure);
+      for (const std::string &group : text::split_top_level(text, ';'))
+        {
+          if (text::trim(group).empty())
+            continue;
+          const auto colon = group.find(':');
+          const std::string name =
+            text::trim(group.substr(0, colon == std::string::npos ? 0 : colon));
+          if (colon == std::string::npos ||
+              std::find(known.begin(), known.end(), name) == known.end())
+            {
+              std::string list;
+              for (const auto &k : known)
+                list += (list.empty() ? "" : ", ") + k;
+              throw InputError(entry, "'" + text::trim(group) +
+                                        "' is not 'discretisation: n n ...' "
+                                        "with a discretisation among " + list);
+            }
+          std::istringstream numbers(group.substr(colon + 1));
+          std::string        word;
+          while (numbers >> word)
+            {
+              const bool digits =
+                word.find_first_not_of("0123456789") == std::string::npos;
+              const long n = digits && word.size() < 7 ? std::stol(word) : 0;
+              const bool even = measure.rfind("geometric", 0) != 0 || n % 2 == 0;
+              if (n < 4 || !even)
+                throw InputError(entry, "'" + word + "' after '" + name +
+                                          "' is not a number of elements of "
+                                          "at least 4" +
+                                          (even ? "" : " and even"));
+              points.emplace_back(name, static_cast<unsigned int>(n));
+            }
+        }
+      return points;
+    }
+
+    /**
+     * Runs one point in a child process, so that its peak memory (wait4's
+     * ru_maxrss) is its own and not the largest of the sweep so far. The
+     * figures come back through a pipe; a failed point ends the study with
+     * the child's message above.
+     */
+    TradePoint
+    run_in_child(const std::function<TradePoint()> &point, double &peak_megabytes)
     {
       int channel[2];
       if (pipe(channel) != 0)
@@ -59,21 +116,14 @@ namespace glissade
           int status = 0;
           try
             {
-              const Case3Result r = point();
-              const double figures[5] = {double(r.dofs),
-                                         r.wall_seconds,
-                                         double(r.newton_iterations),
-                                         double(r.active_nodes),
-                                         r.worst_spread};
-              if (write(channel[1], figures, sizeof(figures)) !=
-                    sizeof(figures) ||
-                  write(channel[1], r.variant.c_str(), r.variant.size()) !=
-                    static_cast<ssize_t>(r.variant.size()))
+              const TradePoint p = point();
+              if (write(channel[1], &p, sizeof(p)) != sizeof(p))
                 status = 1;
             }
           catch (const std::exception &e)
             {
-              std::cerr << "trade study: " << e.what() << std::endl;
+              std::cerr << "\ntrade study: " << text::essential_message(e)
+                        << std::endl;
               status = 1;
             }
           close(channel[1]);
@@ -81,38 +131,138 @@ namespace glissade
           _exit(status);
         }
       close(channel[1]);
-      double  figures[5] = {0., 0., 0., 0., 0.};
-      ssize_t got        = read(channel[0], figures, sizeof(figures));
-      std::string label;
-      char        buffer[64];
-      for (ssize_t k; (k = read(channel[0], buffer, sizeof(buffer))) > 0;)
-        label.append(buffer, k);
+      TradePoint    p;
+      const ssize_t got = read(channel[0], &p, sizeof(p));
       close(channel[0]);
       int           status = 0;
       struct rusage usage;
       wait4(child, &status, 0, &usage);
-      if (got != sizeof(figures) || !WIFEXITED(status) ||
-          WEXITSTATUS(status) != 0)
+      if (got != sizeof(p) || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
         throw std::runtime_error("trade study: a point of the sweep failed "
                                  "(see the message above)");
       peak_megabytes = usage.ru_maxrss / 1024.; // Linux: kilobytes
-      Case3Result r;
-      r.variant           = label;
-      r.dofs              = static_cast<unsigned int>(figures[0]);
-      r.wall_seconds      = figures[1];
-      r.newton_iterations = static_cast<unsigned int>(figures[2]);
-      r.active_nodes      = static_cast<unsigned int>(figures[3]);
-      r.worst_spread      = figures[4];
-      return r;
+      return p;
     }
 
-    std::vector<unsigned int>
-    integer_list(const std::string &text)
+    /** y = factor n^exponent, least squares in log-log. */
+    struct PowerLaw
     {
-      std::vector<unsigned int> values;
-      for (const auto &n : Utilities::split_string_list(text, ','))
-        values.push_back(Utilities::string_to_int(n));
-      return values;
+      bool   valid = false;
+      double factor = 0., exponent = 0.;
+
+      PowerLaw(const std::vector<double> &n, const std::vector<double> &y)
+      {
+        std::vector<double> x, v;
+        for (unsigned int i = 0; i < n.size(); ++i)
+          if (y[i] > 0.)
+            {
+              x.push_back(std::log(n[i]));
+              v.push_back(std::log(y[i]));
+            }
+        const double m = x.size();
+        if (m < 2)
+          return;
+        double sx = 0., sy = 0., sxx = 0., sxy = 0.;
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            sx += x[i];
+            sy += v[i];
+            sxx += x[i] * x[i];
+            sxy += x[i] * v[i];
+          }
+        if (m * sxx - sx * sx <= 0.)
+          return;
+        exponent = (m * sxy - sx * sy) / (m * sxx - sx * sx);
+        factor   = std::exp((sy - exponent * sx) / m);
+        valid    = true;
+      }
+
+      double
+      operator()(const double n) const
+      {
+        return factor * std::pow(n, exponent);
+      }
+    };
+
+    std::string
+    figure(const double x, const int digits = 3)
+    {
+      std::ostringstream s;
+      s << std::setprecision(digits) << x;
+      return s.str();
+    }
+
+    /**
+     * The markdown table of one measure and its cross-overs: for each
+     * point that is not plain Q4, the cheapest Q4 point of the sweep at
+     * least as accurate, or, beyond the sweep, the power laws fitted to the
+     * Q4 points (labelled as an extrapolation).
+     */
+    std::string
+    report(const std::string             &measure,
+           const std::vector<SweepPoint> &points,
+           const std::string             &reference)
+    {
+      std::ostringstream out;
+      out << "### " << measure << ": " << TradeMeasures::error_name(measure)
+          << "\n\n";
+      if (!reference.empty())
+        out << "Reference: " << reference << ".\n\n";
+      out << "| discretisation | n | dofs | Newton | active | wall (s) | "
+             "peak (MB) | error |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+      for (const auto &p : points)
+        out << "| " << p.discretisation << " | " << p.n << " | "
+            << p.figures.dofs << " | " << p.figures.newton_iterations
+            << " | " << p.figures.active_nodes << " | "
+            << figure(p.figures.wall_seconds) << " | "
+            << figure(p.peak_megabytes) << " | " << figure(p.error) << " |\n";
+
+      std::vector<double> n, error, time, dofs;
+      for (const auto &p : points)
+        if (p.discretisation == "q4")
+          {
+            n.push_back(p.n);
+            error.push_back(p.error);
+            time.push_back(p.figures.wall_seconds);
+            dofs.push_back(p.figures.dofs);
+          }
+      const PowerLaw error_law(n, error), time_law(n, time), dofs_law(n, dofs);
+      out << '\n';
+      if (error_law.valid)
+        out << "Q4 over the sweep: error ~ n^" << figure(error_law.exponent)
+            << ", wall time ~ n^" << figure(time_law.exponent) << ", dofs ~ n^"
+            << figure(dofs_law.exponent) << ".\n\n";
+      out << "| point | its error | its time (s) | the Q4 that matches | "
+             "Q4 time (s) | Q4 dofs |\n|---|---:|---:|---|---:|---:|\n";
+      for (const auto &p : points)
+        {
+          if (p.discretisation == "q4")
+            continue;
+          const SweepPoint *match = nullptr;
+          for (const auto &q : points)
+            if (q.discretisation == "q4" && q.error <= p.error &&
+                (!match || q.figures.wall_seconds < match->figures.wall_seconds))
+              match = &q;
+          out << "| " << p.discretisation << ' ' << p.n << " | "
+              << figure(p.error) << " | " << figure(p.figures.wall_seconds)
+              << " | ";
+          if (match)
+            out << "q4 " << match->n << " (in the sweep) | "
+                << figure(match->figures.wall_seconds) << " | "
+                << match->figures.dofs << " |\n";
+          else if (error_law.valid && error_law.exponent < 0. && p.error > 0.)
+            {
+              const double needed =
+                std::pow(p.error / error_law.factor, 1. / error_law.exponent);
+              out << "about " << figure(needed, 2) << " (fit, beyond the sweep) | "
+                  << figure(time_law(needed), 2) << " | "
+                  << figure(dofs_law(needed), 2) << " |\n";
+            }
+          else
+            out << "none in the sweep, no fit | | |\n";
+        }
+      out << '\n';
+      return out.str();
     }
   } // namespace
 
@@ -125,182 +275,176 @@ namespace glissade
     ParameterHandler prm;
     prm.declare_entry("Study", "trade", Patterns::Selection("trade"));
     prm.enter_subsection("Trade study");
-    prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
-                      "Case 3's scene (relative to this file's folder).");
-    prm.declare_entry("Q4 elements", "40, 80, 160",
-                      Patterns::List(Patterns::Integer(4)),
-                      "Elements around both rings for plain Q4 (multiples "
-                      "of 4: the supports sit at 0, 90, 180, 270 degrees).");
-    prm.declare_entry("B-spline elements", "40, 80",
-                      Patterns::List(Patterns::Integer(4)),
-                      "Elements around both rings for Q4 + B-spline.");
-    prm.declare_entry("Hermite elements", "20, 40",
-                      Patterns::List(Patterns::Integer(4)),
-                      "Elements around the Hermite outer ring (the inner Q4 "
-                      "ring keeps 40, as in the paper's fig 29).");
-    prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
-                      "Degrees of rotation after the compression: the same "
-                      "for every point (9: one element at 40).");
-    prm.declare_entry("Increments per element", "50", Patterns::Integer(1),
-                      "Rotation increments per element crossed, so that every "
-                      "mesh samples its ripple alike (the paper: 50).");
-    prm.declare_entry("Output directory", "output/trade_study",
-                      Patterns::Anything(), "Where the CSV and PNG go.");
+    {
+      std::string measures;
+      for (const auto &m : TradeMeasures::names())
+        measures += (measures.empty() ? "" : "|") + m;
+      prm.declare_entry("Measures",
+                        "geometric_gap, geometric_normal, table1, case1, "
+                        "case2, case3",
+                        Patterns::List(Patterns::Selection(measures)),
+                        "The paper's measures of accuracy to sweep.");
+      prm.declare_entry("Output directory", "output/trade_study",
+                        Patterns::Anything(), "Where the CSVs, PNGs and "
+                                              "trade_tables.md go.");
+      const auto sweep = [&](const std::string &default_value,
+                             const std::string &what) {
+        prm.declare_entry("Sweep", default_value, Patterns::Anything(),
+                          "'discretisation: n n ...; ...': " + what);
+      };
+      prm.enter_subsection("Geometric");
+      sweep("q4: 8 16 32 64 128 256; q8: 8 16 32 64; q12: 8 16 32 64; "
+            "bspline: 8 16 32 64; hermite: 8 16 32 64",
+            "elements along the half ring's outer edge (even).");
+      prm.leave_subsection();
+      prm.enter_subsection("Table 1");
+      prm.declare_entry("Scene", "table1_beam.prm", Patterns::Anything(),
+                        "Table 1's beam (relative to this file's folder).");
+      sweep("q4: 30 60 120 240 480; q8: 30 60 120; q9: 30 60 120; "
+            "q12: 30 60 120; hermite: 30 60 120",
+            "elements along the beam (n/15 across).");
+      prm.declare_entry("Reference", "q16: 240", Patterns::Anything(),
+                        "'discretisation: n': the run the errors are taken "
+                        "against.");
+      prm.leave_subsection();
+      prm.enter_subsection("Case 1");
+      prm.declare_entry("Scene", "case1_beam_ring.prm", Patterns::Anything(),
+                        "Case 1 with the deformable ring.");
+      sweep("q4: 30 60 120; bspline: 30 60 120; bspline-spline: 60; "
+            "hermite: 30 60",
+            "elements along the beam and the ring (n/15 across).");
+      prm.declare_entry("Reference", "hermite: 120", Patterns::Anything(),
+                        "'discretisation: n': the run the errors are taken "
+                        "against.");
+      prm.leave_subsection();
+      prm.enter_subsection("Case 2");
+      prm.declare_entry("Scene", "case2_sliding.prm", Patterns::Anything(),
+                        "Case 2's scene.");
+      sweep("q4: 60 120 240; bspline: 60 120; bspline-spline: 120; "
+            "hermite: 60 120",
+            "elements around each ring (n/15 across; the square about n/12 a side, even).");
+      prm.declare_entry("Increments", "250", Patterns::Integer(1),
+                        "Increments of the push (250 over half the scene's "
+                        "load: the paper's 1e-4 m each, the contact phase).");
+      prm.declare_entry("Load fraction", "0.5", Patterns::Double(0., 1.),
+                        "Share of the scene's load program that is run.");
+      prm.leave_subsection();
+      prm.enter_subsection("Case 3");
+      prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
+                        "Case 3's scene.");
+      sweep("q4: 40 80 160; bspline: 40 80; bspline-spline: 40; "
+            "hermite: 20 40 80",
+            "elements around the rings (multiples of 4; Hermite: the outer "
+            "ring, the inner Q4 ring keeps 40).");
+      prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
+                        "Degrees of rotation after the compression: the same "
+                        "for every point (9: one element at 40).");
+      prm.declare_entry("Increments per element", "50", Patterns::Integer(1),
+                        "Rotation increments per element crossed, so that "
+                        "every mesh samples its ripple alike (the paper: 50).");
+      prm.leave_subsection();
+    }
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
 
     prm.enter_subsection("Trade study");
-    const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
-    const std::map<std::string, std::vector<unsigned int>> sweep = {
-      {"q4", integer_list(prm.get("Q4 elements"))},
-      {"bspline", integer_list(prm.get("B-spline elements"))},
-      {"hermite", integer_list(prm.get("Hermite elements"))}};
-    const double       angle     = prm.get_double("Rotation angle");
-    const unsigned int per_element = prm.get_integer("Increments per element");
-    const std::string  directory = prm.get("Output directory");
-    prm.leave_subsection();
+    const std::vector<std::string> measures =
+      Utilities::split_string_list(prm.get("Measures"), ',');
+    const std::string directory = prm.get("Output directory");
     std::filesystem::create_directories(directory);
 
-    std::vector<Case3Result> points;
-    std::vector<double>      peak_memory; // MB, per point
-    for (const std::string variant : {"q4", "bspline", "hermite"})
-      for (const unsigned int n : sweep.at(variant))
-        {
-          // The rotation crosses angle / (360 / n) elements of the finer of
-          // the two rings (Hermite: its inner ring keeps 40).
-          const unsigned int finest = variant == "hermite" ? std::max(n, 40u) : n;
-          const unsigned int increments = static_cast<unsigned int>(
-            std::ceil(angle / (360. / finest) * per_element));
-          std::cout << "trade study: " << variant << ", " << n
-                    << " elements around, " << increments
-                    << " rotation increments ..." << std::flush;
-          double peak_megabytes = 0.;
-          points.push_back(run_in_child(
+    std::string tables =
+      "# The speed-accuracy trade: the figures of this run\n\n"
+      "Errors: smaller is better. Wall time of the point alone (Release "
+      "build wanted); peak memory of its process. Cross-overs: the "
+      "cheapest plain Q4 mesh that is as accurate.\n\n";
+    for (const std::string &measure : measures)
+      {
+        const std::string section = section_of(measure);
+        prm.enter_subsection(section);
+        const std::string where = "Trade study/" + section + "/";
+        const auto points = parse_sweep(prm.get("Sweep"), measure, where + "Sweep");
+        std::string         scene;
+        std::vector<double> settings;
+        if (measure.rfind("geometric", 0) != 0)
+          scene = text::path_beside(prm_file, prm.get("Scene"));
+        if (measure == "case2")
+          settings = {double(prm.get_integer("Increments")),
+                      prm.get_double("Load fraction")};
+        if (measure == "case3")
+          settings = {prm.get_double("Rotation angle"),
+                      double(prm.get_integer("Increments per element"))};
+        std::vector<std::pair<std::string, unsigned int>> reference;
+        if (TradeMeasures::needs_reference(measure))
+          {
+            reference = parse_sweep(prm.get("Reference"), measure, where + "Reference");
+            if (reference.size() != 1)
+              throw InputError(where + "Reference",
+                               "give one 'discretisation: n'");
+          }
+        prm.leave_subsection();
+
+        const auto run_point = [&](const std::string &discretisation,
+                                   const unsigned int n) {
+          std::cout << "trade study, " << measure << ": " << discretisation
+                    << ", n = " << n << " ..." << std::flush;
+          SweepPoint p;
+          p.discretisation = discretisation;
+          p.n              = n;
+          p.figures        = run_in_child(
             [&]() {
-              return Case3Study::run_variant(
-                scene, variant, angle, increments, directory, n);
+              return TradeMeasures::run(measure, discretisation, n, scene,
+                                        settings, directory);
             },
-            peak_megabytes));
-          peak_memory.push_back(peak_megabytes);
-          const Case3Result &p = points.back();
-          std::cout << " spread " << std::setprecision(3) << p.worst_spread
-                    << " %, " << p.dofs << " dofs, " << p.wall_seconds
-                    << " s, peak " << peak_megabytes << " MB" << std::endl;
-        }
+            p.peak_megabytes);
+          std::cout << " value " << std::setprecision(6) << p.figures.value
+                    << ", " << p.figures.dofs << " dofs, " << std::setprecision(3)
+                    << p.figures.wall_seconds << " s, peak " << p.peak_megabytes
+                    << " MB" << std::endl;
+          return p;
+        };
 
-    AtomicFile csv(directory + "/trade_case3.csv");
-    csv.stream() << "discretisation,elements,dofs,newton_iterations,"
-                    "active_nodes,wall_seconds,peak_memory_mb,"
-                    "worst_spread_percent\n";
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Case3Result &p = points[i];
-        const auto [family, elements] = family_and_elements(p.variant);
-        csv.stream() << family << ',' << elements << ',' << p.dofs << ',' << p.newton_iterations << ','
-                     << p.active_nodes << ',' << std::setprecision(6)
-                     << p.wall_seconds << ',' << peak_memory[i] << ','
-                     << p.worst_spread << '\n';
-      }
-    csv.commit();
+        std::string reference_text;
+        double      reference_value = 0.;
+        if (!reference.empty())
+          {
+            const SweepPoint r = run_point(reference[0].first, reference[0].second);
+            reference_value    = r.figures.value;
+            reference_text     = reference[0].first + " at n = " +
+                             std::to_string(r.n) + ", value " +
+                             figure(r.figures.value, 8) + ", " +
+                             figure(r.figures.dofs) + " dofs, " +
+                             figure(r.figures.wall_seconds) + " s";
+          }
+        std::vector<SweepPoint> results;
+        for (const auto &[discretisation, n] : points)
+          {
+            results.push_back(run_point(discretisation, n));
+            results.back().error = TradeMeasures::error(
+              measure, results.back().figures.value, reference_value);
+          }
 
-    // The table, then the cross-overs: for each smoothed point, the
-    // cheapest Q4 point at least as accurate, if the sweep has one.
-    std::cout << "\nCase 3: accuracy (worst contact-force spread) against "
-                 "cost\n"
-              << std::setw(12) << "method" << std::setw(8) << "dofs"
-              << std::setw(10) << "Newton" << std::setw(9) << "active"
-              << std::setw(11) << "wall (s)" << std::setw(11) << "peak (MB)"
-              << std::setw(13) << "spread (%)" << '\n';
-    const auto name = [](const Case3Result &p) {
-      const auto [family, elements] = family_and_elements(p.variant);
-      return family + " " + elements;
-    };
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Case3Result &p = points[i];
-        std::cout << std::setw(12) << name(p) << std::setw(8) << p.dofs
-                  << std::setw(10) << p.newton_iterations << std::setw(9)
-                  << p.active_nodes << std::setw(11) << std::setprecision(3)
-                  << p.wall_seconds << std::setw(11) << peak_memory[i]
-                  << std::setw(13) << p.worst_spread << '\n';
+        AtomicFile csv(directory + "/trade_" + measure + ".csv");
+        csv.stream() << "discretisation,n,dofs,newton_iterations,active_nodes,"
+                        "wall_seconds,peak_memory_mb,value,error\n"
+                     << std::setprecision(8);
+        for (const auto &p : results)
+          csv.stream() << p.discretisation << ',' << p.n << ','
+                       << p.figures.dofs << ',' << p.figures.newton_iterations
+                       << ',' << p.figures.active_nodes << ','
+                       << p.figures.wall_seconds << ',' << p.peak_megabytes
+                       << ',' << p.figures.value << ',' << p.error << '\n';
+        csv.commit();
+
+        const std::string table = report(measure, results, reference_text);
+        std::cout << '\n' << table << std::flush;
+        tables += table;
       }
-    // spread = a n^b and time = c n^d over the Q4 points (least squares in
-    // log-log): the rates at which Q4 buys accuracy and pays for it.
-    struct
-    {
-      bool   valid = false;
-      double spread_factor, spread_exponent, time_factor, time_exponent;
-    } q4_fit;
-    {
-      std::vector<double> log_n, log_spread, log_time;
-      for (const auto &p : points)
-        if (p.variant.rfind("q4", 0) == 0 && p.worst_spread > 0.)
-          {
-            log_n.push_back(
-              std::log(std::stod(family_and_elements(p.variant).second)));
-            log_spread.push_back(std::log(p.worst_spread));
-            log_time.push_back(std::log(p.wall_seconds));
-          }
-      const auto fit = [&](const std::vector<double> &y, double &factor,
-                           double &exponent) {
-        const double m = log_n.size();
-        double sx = 0., sy = 0., sxx = 0., sxy = 0.;
-        for (unsigned int i = 0; i < m; ++i)
-          {
-            sx += log_n[i];
-            sy += y[i];
-            sxx += log_n[i] * log_n[i];
-            sxy += log_n[i] * y[i];
-          }
-        exponent = (m * sxy - sx * sy) / (m * sxx - sx * sx);
-        factor   = std::exp((sy - exponent * sx) / m);
-      };
-      if (log_n.size() >= 2)
-        {
-          fit(log_spread, q4_fit.spread_factor, q4_fit.spread_exponent);
-          fit(log_time, q4_fit.time_factor, q4_fit.time_exponent);
-          q4_fit.valid = q4_fit.spread_exponent < 0.;
-          std::cout << "\nQ4 over the sweep: spread ~ n^"
-                    << std::setprecision(3) << q4_fit.spread_exponent
-                    << ", wall time ~ n^" << q4_fit.time_exponent
-                    << " (n: elements around)\n";
-        }
-    }
-    std::cout << "\nCross-overs (the cheapest Q4 mesh of the sweep that is "
-                 "as accurate):\n";
-    for (const auto &smooth : points)
-      {
-        if (smooth.variant.rfind("q4", 0) == 0)
-          continue;
-        const Case3Result *match = nullptr;
-        for (const auto &q4 : points)
-          if (q4.variant.rfind("q4", 0) == 0 &&
-              q4.worst_spread <= smooth.worst_spread &&
-              (!match || q4.wall_seconds < match->wall_seconds))
-            match = &q4;
-        std::cout << "  " << std::setw(10) << name(smooth) << " ("
-                  << std::setprecision(3) << smooth.worst_spread << " %, "
-                  << smooth.wall_seconds << " s): ";
-        if (match)
-          std::cout << name(*match) << ", " << match->wall_seconds << " s, "
-                    << match->dofs << " dofs\n";
-        else if (q4_fit.valid)
-          {
-            // Beyond the sweep: the power laws fitted to the Q4 points.
-            const double n = std::pow(smooth.worst_spread / q4_fit.spread_factor,
-                                      1. / q4_fit.spread_exponent);
-            std::cout << "no Q4 mesh of the sweep is as accurate; the fit "
-                         "extrapolates to about "
-                      << std::setprecision(2) << std::scientific << n
-                      << " elements around and "
-                      << q4_fit.time_factor * std::pow(n, q4_fit.time_exponent)
-                      << " s" << std::defaultfloat << std::setprecision(6)
-                      << '\n';
-          }
-        else
-          std::cout << "no Q4 mesh of the sweep is as accurate\n";
-      }
-    std::cout << std::flush;
+    prm.leave_subsection();
+
+    AtomicFile markdown(directory + "/trade_tables.md");
+    markdown.stream() << tables;
+    markdown.commit();
     plot_with_python("plot_trade.py", directory);
   }
 } // namespace glissade

@@ -58,8 +58,9 @@ namespace glissade
   /**
    * Cases 1 and 2 of the paper (sections 4.1, 4.2): runs scenes for the
    * discretisations q4 (faceted masters), bspline (Q4 bodies, B-spline
-   * masters) and hermite (every body Hermite, Hermite masters), measures
-   * what the paper claims, and writes CSV, PNG and the runs' VTU.
+   * masters; bspline-spline with the spline's own force transfer) and
+   * hermite (every body Hermite, Hermite masters), measures what the paper
+   * claims, and writes CSV, PNG and the runs' VTU.
    */
   class ContactCaseStudy
   {
@@ -68,6 +69,8 @@ namespace glissade
      * Runs one scene with one discretisation. increments = 0 keeps the
      * scene's load program; otherwise its single stage is cut to
      * `load_fraction` of its end time in `increments` increments.
+     * `extra_overrides` ("Section/Entry=value") change the scene first,
+     * e.g. its meshes (the trade study).
      */
     static ContactCaseResult
     run_variant(const std::string &scene_file,
@@ -75,7 +78,8 @@ namespace glissade
                 const unsigned int increments,
                 const double       load_fraction,
                 const std::string &output_directory,
-                const bool         progress = false);
+                const bool         progress = false,
+                const std::vector<std::string> &extra_overrides = {});
 
     /**
      * max over vertices of |u_a - u_b| / max |u_a|: how far two runs of

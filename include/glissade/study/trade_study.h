@@ -8,15 +8,16 @@ namespace glissade
   /**
    * The speed-accuracy trade (`Study = trade`): the paper's question "how
    * fine must plain Q4 be to match B-spline or Hermite", answered in
-   * figures. On case 3 (the concentric rings) it runs every discretisation
-   * of the interface (Q4, Q4 + B-spline, Hermite) at every number of
-   * elements around the rings it is given, over the same rotation, and
-   * records for each point the dofs, the Newton iterations, the active
-   * contact nodes, the wall time and the accuracy (the worst spread of the
-   * contact forces around their equilibrium value, which is 0 for the
-   * exact circle). It writes trade_case3.csv, a Pareto picture (spread
-   * against time) and prints the cross-overs: the cheapest Q4 mesh that
-   * matches each smoothed discretisation, and what it costs.
+   * figures on each of the paper's measures of accuracy (TradeMeasures):
+   * the geometric gap and normal errors, Table 1's displacement, case 1's
+   * tip displacement, case 2's force smoothness and case 3's force spread.
+   * For every measure it sweeps the discretisations and mesh sizes the
+   * .prm gives; each point runs in its own process, so that its peak
+   * memory is its own. It writes trade_<measure>.csv, a Pareto picture per
+   * measure (error against wall time and dofs), trade_tables.md, and
+   * prints the tables and the cross-overs: the cheapest Q4 mesh that
+   * matches each other point, or beyond the sweep the power laws fitted to
+   * the Q4 points.
    */
   class TradeStudy
   {
