@@ -9,6 +9,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 
 #include <glissade/solver/direct_solver.h>
+#include <glissade/solver/schur_cholesky.h>
 
 #include "test_tools.h"
 
@@ -86,28 +87,45 @@ GLISSADE_TEST(contact_compliance_block_matches_solves)
   lu.factorize(A);
   check(cholesky.has_inverse_block() && cholesky.n_cholesky == 1,
         "an SPD matrix is factorised by Cholesky");
-  cholesky.cholesky().compute_inverse_block();
-
-  double worst = 0., largest = 0.;
-  for (const long j : last)
-    {
-      Vector<double> column(A.m());
-      column(j) = 1.;
-      lu.solve(column);
-      for (const long i : last)
-        {
-          const double block = cholesky.cholesky().inverse_entry(
-            cholesky.cholesky().last_position(i),
-            cholesky.cholesky().last_position(j));
-          worst   = std::max(worst, std::abs(block - column(i)));
-          largest = std::max(largest, std::abs(column(i)));
-        }
-    }
-  std::cout << "  block of A^-1 on " << last.size()
-            << " last unknowns (1600 in all): largest entry " << largest
-            << ", largest difference to LU back-substitutions " << worst
-            << std::endl;
-  check(worst <= 1e-10 * largest, "inverse block differs from LU solves");
+  // The columns of C at the unknowns `columns` against LU solves.
+  SchurCholesky &factor        = cholesky.cholesky();
+  const auto     check_columns = [&](const std::vector<long> &columns,
+                                 const std::string       &how) {
+    double worst = 0., largest = 0.;
+    for (const long j : columns)
+      {
+        Vector<double> column(A.m());
+        column(j) = 1.;
+        lu.solve(column);
+        for (const long i : last)
+          {
+            const double block = factor.inverse_entry(factor.last_position(i),
+                                                      factor.last_position(j));
+            worst   = std::max(worst, std::abs(block - column(i)));
+            largest = std::max(largest, std::abs(column(i)));
+          }
+      }
+    std::cout << "  " << how << ": columns of A^-1 on " << last.size()
+              << " last unknowns (1600 in all): largest entry " << largest
+              << ", largest difference to LU back-substitutions " << worst
+              << std::endl;
+    check(worst <= 1e-10 * largest, how + ": differs from LU solves");
+  };
+  const auto positions = [&](const std::vector<long> &unknowns) {
+    std::vector<long> p;
+    for (const long j : unknowns)
+      p.push_back(factor.last_position(j));
+    return p;
+  };
+  // Both ways of forming C: a few columns by triangular solves (fewer
+  // than a third of them), then the whole block by dpotri.
+  const std::vector<long> few = {3, 777, 1599};
+  factor.compute_inverse_columns(positions(few));
+  check(factor.n_inverse_columns() == 3, "three columns formed");
+  check_columns(few, "3 columns by dpotrs");
+  factor.compute_inverse_columns(positions(last));
+  check(factor.n_inverse_columns() == long(last.size()), "the whole block formed");
+  check_columns(last, "the whole block by dpotri");
 
   Vector<double> b(A.m()), x(A.m());
   for (unsigned int i = 0; i < b.size(); ++i)

@@ -366,16 +366,20 @@ namespace glissade
 
 
   bool
-  Body::prepare_contact_compliance()
+  Body::prepare_contact_compliance(const std::vector<long> &positions)
   {
     if (contact_rows.empty() || !factorization.has_inverse_block())
       return false;
     SchurCholesky &cholesky = factorization.cholesky();
-    cholesky.compute_inverse_block();
-    contact_rows_resolved = contact_rows;
+    contact_rows_resolved   = contact_rows;
     for (auto &row : contact_rows_resolved)
       for (auto &[j, w] : row)
         j = cholesky.last_position(j);
+    std::vector<long> columns;
+    for (const long a : positions)
+      for (const auto &[j, w] : contact_rows_resolved[a])
+        columns.push_back(j);
+    cholesky.compute_inverse_columns(columns);
     return true;
   }
 

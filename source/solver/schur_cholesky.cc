@@ -12,6 +12,9 @@
 
 extern "C" void
 dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+extern "C" void
+dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
+        const int *lda, double *b, const int *ldb, int *info);
 
 namespace glissade
 {
@@ -159,6 +162,7 @@ namespace glissade
     cholmod_l_factorize(&A, cholmod->factor, &cholmod->common);
     factorization_seconds += timer.wall_time();
     inverse_block.clear();
+    column_of.clear();
     return cholmod->common.status == CHOLMOD_OK && factorized();
   }
 
@@ -188,21 +192,43 @@ namespace glissade
 
 
   void
-  SchurCholesky::compute_inverse_block()
+  SchurCholesky::compute_inverse_columns(const std::vector<long> &positions)
   {
-    if (n_last > 0 && inverse_block.size() == std::size_t(n_last * n_last))
-      return; // already formed for this factorisation
+    if (n_last == 0)
+      return;
+    // The columns wanted: those asked for and those already formed.
+    std::vector<long> wanted;
+    if (column_of.size() != std::size_t(n_last))
+      column_of.assign(n_last, -1);
+    for (long j = 0; j < n_last; ++j)
+      if (column_of[j] >= 0)
+        wanted.push_back(j);
+    const std::size_t formed = wanted.size();
+    for (const long j : positions)
+      if (j >= 0 && column_of[j] < 0)
+        {
+          column_of[j] = -2; // marked, so that a repeated j is added once
+          wanted.push_back(j);
+        }
+    if (wanted.size() == formed)
+      return; // every column is there already
+    std::sort(wanted.begin(), wanted.end());
+    const bool whole_block = 3 * long(wanted.size()) >= n_last;
+    if (whole_block)
+      {
+        wanted.resize(n_last);
+        for (long j = 0; j < n_last; ++j)
+          wanted[j] = j;
+      }
+
     Timer                 timer;
     const cholmod_factor &L     = *cholmod->factor;
     const long            n     = L.n;
     const long            first = n - n_last;
-    inverse_block.assign(n_last * n_last, 0.);
-    if (n_last == 0)
-      return;
-
     // Copy the trailing block L_cc out of the supernodes that hold it:
     // supernode s has columns super[s] .. super[s+1]-1, rows Ls[pi[s]..],
     // values column major from px[s] with leading dimension = its rows.
+    std::vector<double> trailing(std::size_t(n_last) * n_last, 0.);
     const long   *super = static_cast<const long *>(L.super);
     const long   *pi    = static_cast<const long *>(L.pi);
     const long   *px    = static_cast<const long *>(L.px);
@@ -218,21 +244,37 @@ namespace glissade
           {
             const long column = k - k1;
             for (long i = column; i < n_rows; ++i)
-              inverse_block[(rows[pi[s] + i] - first) + (k - first) * n_last] =
+              trailing[(rows[pi[s] + i] - first) + (k - first) * n_last] =
                 x[px[s] + i + column * n_rows];
           }
       }
 
-    // (L_cc L_cc^T)^-1 in the lower triangle, then mirrored.
-    const int m = n_last;
+    const int m    = n_last;
     int       info = 0;
-    dpotri_("L", &m, inverse_block.data(), &m, &info);
+    if (whole_block)
+      {
+        // (L_cc L_cc^T)^-1 in the lower triangle, then mirrored.
+        dpotri_("L", &m, trailing.data(), &m, &info);
+        for (long j = 0; j < n_last && info == 0; ++j)
+          for (long i = j + 1; i < n_last; ++i)
+            trailing[j + i * n_last] = trailing[i + j * n_last];
+        inverse_block.swap(trailing);
+      }
+    else
+      {
+        // C e_j = (L_cc L_cc^T)^-1 e_j for each wanted column j.
+        const int k = wanted.size();
+        inverse_block.assign(std::size_t(n_last) * k, 0.);
+        for (int c = 0; c < k; ++c)
+          inverse_block[wanted[c] + std::size_t(c) * n_last] = 1.;
+        dpotrs_("L", &m, &k, trailing.data(), &m, inverse_block.data(), &m, &info);
+      }
     if (info != 0)
-      throw std::runtime_error("LAPACK dpotri failed with info " +
+      throw std::runtime_error("LAPACK dpotri/dpotrs failed with info " +
                                std::to_string(info));
-    for (long j = 0; j < n_last; ++j)
-      for (long i = j + 1; i < n_last; ++i)
-        inverse_block[j + i * n_last] = inverse_block[i + j * n_last];
+    std::fill(column_of.begin(), column_of.end(), -1);
+    for (std::size_t c = 0; c < wanted.size(); ++c)
+      column_of[wanted[c]] = c;
     inverse_seconds += timer.wall_time();
   }
 } // namespace glissade

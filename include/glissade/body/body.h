@@ -103,12 +103,14 @@ namespace glissade
     set_contact_dofs(const std::vector<types::global_dof_index> &contact_dofs);
 
     /**
-     * Makes the contact compliance of the current factorisation available;
-     * false if it is not (LU fall-back, or no contact dofs set): the caller
+     * Makes the contact compliance of the current factorisation available
+     * between any contact dof and those at `positions` (the dofs that
+     * touch in this iteration: only their columns are formed); false if it
+     * is not available (LU fall-back, or no contact dofs set): the caller
      * then uses solve_homogeneous().
      */
     bool
-    prepare_contact_compliance();
+    prepare_contact_compliance(const std::vector<long> &positions);
 
     /** Position of a dof among the contact dofs, or -1. */
     long
@@ -119,7 +121,8 @@ namespace glissade
 
     /**
      * Compliance between the contact dofs at positions a and b, that is
-     * x_a for x = solve_homogeneous(e_b), after prepare_contact_compliance().
+     * x_a for x = solve_homogeneous(e_b), after prepare_contact_compliance()
+     * with b among its positions.
      */
     double
     contact_compliance(const long a, const long b) const;

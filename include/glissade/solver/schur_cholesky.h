@@ -61,9 +61,17 @@ namespace glissade
     void
     solve(Vector<double> &x) const;
 
-    /** Forms C, the block of A^-1 on the last unknowns (after factorize). */
+    /**
+     * Makes the columns of C, the block of A^-1 on the last unknowns, at
+     * the given positions available (after factorize). When contact
+     * touches only part of the declared area, few columns are needed: each
+     * costs two triangular solves with L_cc (LAPACK dpotrs, 2 m^2 flops).
+     * From a third of the m columns on, the whole block by dpotri
+     * ((2/3) m^3) is cheaper and is formed instead. Columns already formed
+     * for this factorisation are kept.
+     */
     void
-    compute_inverse_block();
+    compute_inverse_columns(const std::vector<long> &positions);
 
     /** Position of an unknown among the last unknowns, or -1. */
     long
@@ -73,11 +81,18 @@ namespace glissade
                                                             -1;
     }
 
-    /** C between the last unknowns at positions i and j. */
+    /** C between the last unknowns at positions i and j (column j formed). */
     double
     inverse_entry(const long i, const long j) const
     {
-      return inverse_block[i + j * n_last];
+      return inverse_block[i + column_of[j] * n_last];
+    }
+
+    /** Columns of C formed for the current factorisation. */
+    long
+    n_inverse_columns() const
+    {
+      return n_last > 0 ? inverse_block.size() / n_last : 0;
     }
 
     double analysis_seconds      = 0.;
@@ -91,6 +106,9 @@ namespace glissade
     std::vector<long>        position;
     long                     n_last = 0;
     bool                     analysed = false;
-    std::vector<double>      inverse_block; // column major, n_last^2
+    /** Formed columns of C, column major, n_last rows. */
+    std::vector<double>      inverse_block;
+    /** Column of inverse_block holding C's column j, or -1. */
+    std::vector<long>        column_of;
   };
 } // namespace glissade
