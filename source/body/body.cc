@@ -44,8 +44,7 @@ namespace glissade
     boundary_conditions =
       std::make_unique<BoundaryConditions>(description,
                                            boundary_names,
-                                           mesh,
-                                           source);
+                                           mesh);
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());

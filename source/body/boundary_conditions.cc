@@ -193,15 +193,14 @@ namespace glissade
 
   BoundaryConditions::BoundaryConditions(const BodyDescription  &body,
                                          const BoundaryNames    &names,
-                                         const Triangulation<2> &tria,
-                                         const std::string      &source)
+                                         const Triangulation<2> &tria)
   {
-    const std::string prefix = source + ": ";
+    // The entries name their file already ("scene.prm: Body b/...").
     for (const auto &d : body.dirichlet)
       {
         DirichletItem item;
         item.where = resolve(d.location, names, tria, body.name,
-                             prefix + d.entry);
+                             d.entry);
         item.components      = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
         switch (d.kind)
@@ -235,7 +234,7 @@ namespace glissade
                   names,
                   tria,
                   body.name,
-                  prefix + n.entry,
+                  n.entry,
                   n.kind == NeumannDescription::Kind::point_load);
         if (n.kind == NeumannDescription::Kind::point_load)
           point_loads.push_back({where, make_parser(n.expressions)});

@@ -45,8 +45,7 @@ namespace glissade
   public:
     BoundaryConditions(const BodyDescription  &body,
                        const BoundaryNames    &boundary_names,
-                       const Triangulation<2> &triangulation,
-                       const std::string      &source);
+                       const Triangulation<2> &triangulation);
 
     /**
      * Fills `constraints` for a Newton correction: the element space's own
