@@ -201,6 +201,69 @@ end
                 1e-8,
                 label + ": y balance of the beam");
   }
+
+  /**
+   * Case 3's rings: the inner ring's balance (its support and the
+   * interface force add up to zero, on the scale of the total load).
+   */
+  void
+  check_inner_ring_balance(const Run         &r,
+                           const std::string &label,
+                           const double       total_load = 400.)
+  {
+    for (const char *c : {"x", "y"})
+      check_close(r.last(std::string("inner:R") + c + "(inner)") +
+                    r.last(std::string("interface:F") + c),
+                  0., total_load, 1e-9,
+                  label + ": " + c + " balance of the inner ring");
+  }
+
+  /** The interface's nodal forces against the circle's symmetry. */
+  struct InterfaceForces
+  {
+    double       mean = 0., smallest = 1e300, largest = 0.;
+    double       spread     = 0.; // max |f - mean| / mean
+    double       non_radial = 0.; // max |f x radial| / |f|
+    unsigned int active     = 0;
+  };
+
+  /**
+   * The forces on case 3's slave nodes, with the inner ring turned by
+   * `degrees` (a node's radial direction is its reference one, turned).
+   */
+  InterfaceForces
+  interface_forces(const Run &r, const double degrees = 0.)
+  {
+    const double    angle = degrees * M_PI / 180.;
+    const auto     &nodes = r.simulation->contact().contact_pairs()[0]->nodes();
+    InterfaceForces result;
+    for (const auto &node : nodes)
+      {
+        const double f = node.force().norm();
+        result.mean += f / nodes.size();
+        result.smallest = std::min(result.smallest, f);
+        result.largest  = std::max(result.largest, f);
+        result.active += node.active;
+        const Point<2>    &X = node.reference_position;
+        const Tensor<1, 2> radial(
+          {std::cos(angle) * X[0] - std::sin(angle) * X[1],
+           std::sin(angle) * X[0] + std::cos(angle) * X[1]});
+        if (f > 0.)
+          result.non_radial =
+            std::max(result.non_radial,
+                     std::abs(cross_product_2d(radial / radial.norm()) *
+                              node.force()) / f);
+      }
+    for (const auto &node : nodes)
+      result.spread = std::max(result.spread,
+                               std::abs(node.force().norm() - result.mean) /
+                                 result.mean);
+    std::cout << "    " << result.active << " active nodes of " << nodes.size()
+              << ", forces from " << result.smallest << " to " << result.largest
+              << " N (mean " << result.mean << "), spread " << result.spread
+              << ", largest non-radial share " << result.non_radial << std::endl;
+    return result;
+  }
 } // namespace
 
 
@@ -310,32 +373,13 @@ GLISSADE_TEST(extreme_coarse_rings_4_elements)
                            "Output/History=contact_force(interface); "
                            "reaction(inner, inner)"});
       check(r.converged, label + " must converge");
-      for (const char *c : {"x", "y"})
-        check_close(r.last(std::string("inner:R") + c + "(inner)") +
-                      r.last(std::string("interface:F") + c),
-                    0., 40., 1e-9, label + ": " + c + " balance of the inner ring");
-      double smallest = 1e300, largest = 0., tangential = 0.;
-      for (const auto &node : r.simulation->contact().contact_pairs()[0]->nodes())
-        {
-          const double f = node.force().norm();
-          smallest       = std::min(smallest, f);
-          largest        = std::max(largest, f);
-          // The force against the radial direction of the node.
-          const Tensor<1, 2> radial = node.reference_position /
-                                      node.reference_position.norm();
-          tangential = std::max(tangential,
-                                std::abs(cross_product_2d(radial) *
-                                         node.force()));
-        }
-      std::cout << "    nodal forces from " << smallest << " to " << largest
-                << " N, largest non-radial part " << tangential << " N"
-                << std::endl;
+      check_inner_ring_balance(r, label, 40.); // 4 nodes of 10 N
+      const InterfaceForces f = interface_forces(r);
       if (surface == "bspline")
         {
-          check(largest > 0., label + ": the rings must touch");
-          check((largest - smallest) <= 1e-9 * largest,
-                label + ": four equal nodal forces");
-          check(tangential <= 1e-9 * largest, label + ": radial nodal forces");
+          check(f.largest > 0., label + ": the rings must touch");
+          check(f.spread <= 1e-9, label + ": four equal nodal forces");
+          check(f.non_radial <= 1e-9, label + ": radial nodal forces");
         }
     }
 }
@@ -647,50 +691,31 @@ GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
         "nodes_on_seam_" + surface + "_" + std::to_string(int(degrees)) + "_degrees";
       const Run r = run(label, rings, overrides);
       check(r.converged, label + " must converge");
-      for (const char *c : {"x", "y"})
-        check_close(r.last(std::string("inner:R") + c + "(inner)") +
-                      r.last(std::string("interface:F") + c),
-                    0., 400., 1e-9, label + ": " + c + " balance of the inner ring");
+      check_inner_ring_balance(r, label);
+      const InterfaceForces f = interface_forces(r, degrees);
 
-      // The inner ring turned: a node's radial direction is its reference
-      // one, turned alike.
-      const double angle = degrees * M_PI / 180.;
-      const auto  &nodes = r.simulation->contact().contact_pairs()[0]->nodes();
-      int          last_segment = 0;
+      // The node on the seam: at the start of the first segment or the end
+      // of the last (to the accuracy of the contact solve, 1e-9 here).
+      const auto &nodes        = r.simulation->contact().contact_pairs()[0]->nodes();
+      int         last_segment = 0;
       for (const auto &node : nodes)
         last_segment = std::max(last_segment, node.segment);
-      double mean = 0., spread = 0., non_radial = 0.;
       const ContactNode *on_seam = nullptr;
       for (const auto &node : nodes)
-        mean += node.force().norm() / nodes.size();
-      for (const auto &node : nodes)
-        {
-          const Point<2> &X = node.reference_position;
-          const Tensor<1, 2> radial({std::cos(angle) * X[0] - std::sin(angle) * X[1],
-                                     std::sin(angle) * X[0] + std::cos(angle) * X[1]});
-          const double f = node.force().norm();
-          spread = std::max(spread, std::abs(f - mean) / mean);
-          non_radial = std::max(non_radial,
-                                std::abs(cross_product_2d(radial / radial.norm()) *
-                                         node.force()) / f);
-          // On the seam: at the start of the first segment or the end of
-          // the last (to the accuracy of the contact solve, 1e-9 here).
-          if ((node.segment == 0 && node.s < 1e-6) ||
-              (node.segment == last_segment && node.s > 1. - 1e-6))
-            on_seam = &node;
-        }
+        if ((node.segment == 0 && node.s < 1e-6) ||
+            (node.segment == last_segment && node.s > 1. - 1e-6))
+          on_seam = &node;
       check(on_seam != nullptr, label + ": a slave node must sit on the seam");
-      const double seam_deviation = std::abs(on_seam->force().norm() - mean) / mean;
-      std::cout << "    " << nodes.size() << " nodes, mean force " << mean
-                << " N, spread " << spread << ", largest non-radial share "
-                << non_radial << "; the node on the seam (segment "
-                << on_seam->segment << ", s " << on_seam->s << ") is off the mean by "
+      const double seam_deviation =
+        std::abs(on_seam->force().norm() - f.mean) / f.mean;
+      std::cout << "    the node on the seam (segment " << on_seam->segment
+                << ", s " << on_seam->s << ") is off the mean by "
                 << seam_deviation << std::endl;
-      check(mean > 0., label + ": the rings must touch");
+      check(f.mean > 0., label + ": the rings must touch");
       if (surface != "faceted")
         {
-          check(spread <= 1e-6, label + ": equal nodal forces");
-          check(non_radial <= 1e-6, label + ": radial nodal forces");
+          check(f.spread <= 1e-6, label + ": equal nodal forces");
+          check(f.non_radial <= 1e-6, label + ": radial nodal forces");
           check(seam_deviation <= 1e-6, label + ": the seam is not seen");
         }
     }
@@ -721,24 +746,10 @@ GLISSADE_TEST(extreme_fine_mesh_320_elements)
                            "Output/History=contact_force(interface); "
                            "reaction(inner, inner)"});
       check(r.converged, label + " must converge");
-      for (const char *c : {"x", "y"})
-        check_close(r.last(std::string("inner:R") + c + "(inner)") +
-                      r.last(std::string("interface:F") + c),
-                    0., 400., 1e-9, label + ": " + c + " balance of the inner ring");
-      const auto &nodes = r.simulation->contact().contact_pairs()[0]->nodes();
-      double      mean = 0., spread = 0.;
-      unsigned int active = 0;
-      for (const auto &node : nodes)
-        {
-          mean += node.force().norm() / nodes.size();
-          active += node.active;
-        }
-      for (const auto &node : nodes)
-        spread = std::max(spread, std::abs(node.force().norm() - mean) / mean);
-      std::cout << "    " << active << " active nodes of " << nodes.size()
-                << ", spread " << spread * 100. << " %" << std::endl;
-      check(active == 320, label + ": every interface node touches");
+      check_inner_ring_balance(r, label);
+      const InterfaceForces f = interface_forces(r);
+      check(f.active == 320, label + ": every interface node touches");
       if (surface == "bspline")
-        check(spread <= 1e-6, label + ": equal nodal forces");
+        check(f.spread <= 1e-6, label + ": equal nodal forces");
     }
 }
