@@ -149,7 +149,8 @@ namespace glissade
     for (auto &c : columns)
       c.clear();
 
-    timer.enter_subsection(timing::detection);
+    // Scopes, stopped by hand: an exception still closes the section.
+    TimerOutput::Scope detection_scope(timer, timing::detection);
     // The active nodes of all pairs form one condensed problem: nodes of
     // different pairs couple through the bodies they share.
     struct Active
@@ -170,7 +171,7 @@ namespace glissade
                               pair->master() ? body_index(pair->master()) :
                                                numbers::invalid_unsigned_int});
       }
-    timer.leave_subsection(timing::detection);
+    detection_scope.stop();
 
     std::vector<Vector<double>> contact_forces(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
@@ -193,7 +194,7 @@ namespace glissade
 
     // W_kl = H_kin,k K^-1 H_force,l^T from the cached columns of K^-1, and
     // u_free_k, summing over the bodies that nodes k and l share.
-    timer.enter_subsection(timing::compliance);
+    TimerOutput::Scope compliance_scope(timer, timing::compliance);
     const unsigned int                      n = active.size();
     ComplianceMatrix                        W;
     std::vector<BiPotentialSolver::Vector2> u_free(n), r(n);
@@ -321,9 +322,9 @@ namespace glissade
                 }
             }
       }
-    timer.leave_subsection(timing::compliance);
+    compliance_scope.stop();
 
-    timer.enter_subsection(timing::local_solve);
+    TimerOutput::Scope local_solve_scope(timer, timing::local_solve);
     BiPotentialSolver::Settings settings;
     const auto &first = active[0].pair->settings();
     settings.beta               = first.beta;
@@ -333,7 +334,7 @@ namespace glissade
     settings.rho_choice =
       BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
     result = BiPotentialSolver(settings).solve(W, u_free, mu, r);
-    timer.leave_subsection(timing::local_solve);
+    local_solve_scope.stop();
     if (!result.converged)
       return false;
 
