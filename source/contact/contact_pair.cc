@@ -30,6 +30,22 @@ namespace glissade
     if (master_body == nullptr)
       obstacle = std::make_unique<RigidObstacle>(description);
 
+    // Node-to-segment contact works on the vertices of the contact
+    // boundaries (and, for Hermite masters, their derivatives). Elements
+    // with nodes along their edges (q2, q3, q8, q12) would have those nodes
+    // left out of contact: refused rather than answered wrongly.
+    for (const auto &[body, role] :
+         {std::pair<const Body *, const char *>{&slave, "/Slave body"},
+          std::pair<const Body *, const char *>{master, "/Master body"}})
+      if (body != nullptr &&
+          body->space().finite_element().n_dofs_per_line() > 0)
+        throw InputError(entry + role,
+                         "body '" + body->name() + "' uses the element space '" +
+                           body->space().name() +
+                           "', whose nodes along the element edges "
+                           "node-to-segment contact would leave out; contact "
+                           "bodies must use q1 or hermite");
+
     // The slave nodes: the vertices of the declared contact area.
     const types::boundary_id slave_id =
       slave.boundary_id(description.slave_boundary, entry + "/Slave boundary");
