@@ -4,6 +4,10 @@
 #include <cmath>
 #include <sstream>
 
+extern "C" void
+dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv,
+       double *b, const int *ldb, int *info);
+
 namespace glissade
 {
   namespace
@@ -23,6 +27,14 @@ namespace glissade
     // A diagonal entry below this fraction of the largest one is round-off
     // of an assembly in which both bodies are rigid.
     constexpr double singular_fraction = 1e-14;
+
+    // Sweeps with unchanged statuses after which the linear law on the
+    // closed nodes is solved (the polish), then four times as many again
+    // while they stay unchanged.
+    constexpr unsigned int first_polish_after_stable_sweeps = 5;
+
+    // Restarts of Gauss-Seidel from a projected polish at most, per solve.
+    constexpr unsigned int max_polish_restarts = 20;
 
     // Reactions this many times larger than the problem's own force scale
     // mean that the fixed-point iteration is running away.
@@ -95,44 +107,19 @@ namespace glissade
       return result;
     }
 
-    // Solves the dense system A x = b in place by LU with partial pivoting;
-    // false if A is singular to working precision.
+    // Solves the dense system A x = b (A column major, m x m) in place by
+    // LAPACK's LU with partial pivoting; false if A is singular to working
+    // precision.
     bool
     solve_dense(std::vector<double> &A, std::vector<double> &b,
                 const std::size_t m)
     {
-      for (std::size_t c = 0; c < m; ++c)
-        {
-          std::size_t pivot = c;
-          for (std::size_t i = c + 1; i < m; ++i)
-            if (std::abs(A[i * m + c]) > std::abs(A[pivot * m + c]))
-              pivot = i;
-          if (!(std::abs(A[pivot * m + c]) > 0.))
-            return false;
-          if (pivot != c)
-            {
-              for (std::size_t j = 0; j < m; ++j)
-                std::swap(A[c * m + j], A[pivot * m + j]);
-              std::swap(b[c], b[pivot]);
-            }
-          const double inverse = 1. / A[c * m + c];
-          for (std::size_t i = c + 1; i < m; ++i)
-            {
-              const double factor = A[i * m + c] * inverse;
-              if (factor == 0.)
-                continue;
-              for (std::size_t j = c + 1; j < m; ++j)
-                A[i * m + j] -= factor * A[c * m + j];
-              b[i] -= factor * b[c];
-            }
-        }
-      for (std::size_t c = m; c-- > 0;)
-        {
-          double sum = b[c];
-          for (std::size_t j = c + 1; j < m; ++j)
-            sum -= A[c * m + j] * b[j];
-          b[c] = sum / A[c * m + c];
-        }
+      const int        size = m, one = 1;
+      int              info = 0;
+      std::vector<int> pivots(m);
+      dgesv_(&size, &one, A.data(), &size, pivots.data(), b.data(), &size, &info);
+      if (info != 0)
+        return false;
       for (std::size_t c = 0; c < m; ++c)
         if (!std::isfinite(b[c]))
           return false;
@@ -186,10 +173,10 @@ namespace glissade
                 if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
                   continue;
                 const ComplianceMatrix::Block w = W.block(k, l);
-                A[row * m + normal_unknown[l]] +=
+                A[normal_unknown[l] * m + row] +=
                   w[component][n] + slip_sign[l] * mu[l] * w[component][t];
                 if (tangential_unknown[l] >= 0)
-                  A[row * m + tangential_unknown[l]] += w[component][t];
+                  A[tangential_unknown[l] * m + row] += w[component][t];
               }
           }
       if (!solve_dense(A, b, m))
@@ -403,9 +390,15 @@ namespace glissade
     std::vector<Vector2> u;
     compute_displacement(W, u_free, r, u);
 
-    // 3. Gauss-Seidel sweeps.
-    bool u_is_exact = true;
-    result.outcome  = Outcome::max_sweeps_reached;
+    // 3. Gauss-Seidel sweeps. Gauss-Seidel finds the statuses (open,
+    // stick, slip) long before the values; once they have not changed for
+    // a few sweeps, the law is linear and is solved directly (the polish).
+    bool                    u_is_exact = true;
+    std::vector<NodeStatus> statuses(n_nodes), previous_statuses;
+    unsigned int            stable_sweeps = 0;
+    unsigned int            polish_after  = first_polish_after_stable_sweeps;
+    unsigned int            restarts      = 0;
+    result.outcome                        = Outcome::max_sweeps_reached;
     for (unsigned int sweep = 1; sweep <= settings.max_sweeps; ++sweep)
       {
         result.sweeps     = sweep;
@@ -438,6 +431,20 @@ namespace glissade
               }
           }
 
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          statuses[k] = classify(r[k], mu[k]);
+        if (statuses == previous_statuses)
+          ++stable_sweeps;
+        else
+          {
+            stable_sweeps = 0;
+            polish_after  = first_polish_after_stable_sweeps;
+            previous_statuses = statuses;
+          }
+        const bool statuses_settled = stable_sweeps == polish_after;
+        if (statuses_settled)
+          polish_after *= 4;
+
         const double max_reaction   = max_norm(r);
         result.last_reaction_change = max_change;
         if (!std::isfinite(max_change) || !std::isfinite(max_reaction) ||
@@ -469,11 +476,11 @@ namespace glissade
               }
           }
         else if (settings.polish_period > 0 &&
-                 (sweep % settings.polish_period == 0 ||
+                 (statuses_settled || sweep % settings.polish_period == 0 ||
                   sweep == settings.max_sweeps))
           {
-            // Gauss-Seidel finds the statuses long before the values when W
-            // is ill-conditioned (a stiff slave on a soft master: the
+            // Gauss-Seidel finds the statuses long before the values, the
+            // more so when W is ill-conditioned (a stiff slave on a soft master: the
             // reactions of neighbouring nodes trade off along an almost
             // null direction of W). With the statuses fixed the law is
             // linear: solve it, and keep the answer if it satisfies the law.
@@ -497,6 +504,38 @@ namespace glissade
                     result.polished       = true;
                     result.outcome        = Outcome::converged;
                     break;
+                  }
+                // Not the answer yet (some statuses were wrong), but the
+                // right values on the nodes whose statuses were. Projected
+                // on the admissible cones it is a new starting point for
+                // Gauss-Seidel: taken if it satisfies the law better than
+                // the iterate, a bounded number of times, so that a W that
+                // is not positive semi-definite still shows its divergence.
+                if (restarts < max_polish_restarts)
+                  {
+                    std::vector<Vector2> projected(n_nodes), projected_u;
+                    for (unsigned int k = 0; k < n_nodes; ++k)
+                      projected[k] =
+                        mu[k] == 0. ?
+                          Vector2{{0., std::max(0., candidate[k][n])}} :
+                          project_on_coulomb_cone(candidate[k], mu[k]);
+                    compute_displacement(W, u_free, projected, projected_u);
+                    if (!u_is_exact)
+                      {
+                        compute_displacement(W, u_free, r, u);
+                        u_is_exact = true;
+                      }
+                    const auto merit = [&](const std::vector<Vector2> &uu,
+                                           const std::vector<Vector2> &rr) {
+                      const Residuals e = residuals_of(uu, rr, mu, scale);
+                      return e.complementarity + e.friction;
+                    };
+                    if (merit(projected_u, projected) < merit(u, r))
+                      {
+                        r = std::move(projected);
+                        u = std::move(projected_u);
+                        ++restarts;
+                      }
                   }
               }
           }

@@ -140,13 +140,14 @@ namespace glissade
        */
       double force_to_length_scale = 0.;
       /**
-       * Every this many sweeps without convergence (and at the last), fix
-       * the statuses of the iterate and solve the then linear contact law
-       * exactly on the closed nodes (a dense LU of their W block); the
-       * answer is kept only if it satisfies the law's residual test. 0:
-       * never.
+       * The polish: fix the statuses of the iterate and solve the then
+       * linear contact law exactly on the closed nodes (a LAPACK LU of
+       * their W block); the answer is kept only if it satisfies the law's
+       * residual test. It is tried once the statuses have not changed for
+       * 5 sweeps (then 20, 80, ... while they stay unchanged), every this
+       * many sweeps without convergence, and at the last sweep. 0: never.
        */
-      unsigned int polish_period = 100;
+      unsigned int polish_period = 25;
     };
 
     enum class NodeStatus
