@@ -522,6 +522,40 @@ namespace glissade
 
 
 
+  double
+  SceneReader::get_double(const ParameterHandler &prm,
+                          const std::string      &entry,
+                          const std::string      &filename)
+  {
+    try
+      {
+        return prm.get_double(entry);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(filename, text::essential_message(e));
+      }
+  }
+
+
+
+  long int
+  SceneReader::get_integer(const ParameterHandler &prm,
+                           const std::string      &entry,
+                           const std::string      &filename)
+  {
+    try
+      {
+        return prm.get_integer(entry);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError(filename, text::essential_message(e));
+      }
+  }
+
+
+
   std::string
   SceneReader::study_type(const std::string &filename)
   {

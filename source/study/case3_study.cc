@@ -163,8 +163,8 @@ namespace glissade
     prm.enter_subsection("Case 3 study");
     const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
     const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
-    const double       angle      = prm.get_double("Rotation angle");
-    const unsigned int increments = prm.get_integer("Rotation increments");
+    const double       angle      = SceneReader::get_double(prm, "Rotation angle", prm_file);
+    const unsigned int increments = SceneReader::get_integer(prm, "Rotation increments", prm_file);
     const std::string  directory  = prm.get("Output directory");
     std::vector<unsigned int> outer_elements;
     for (const auto &n :

@@ -481,8 +481,8 @@ namespace glissade
     if (scenes.empty())
       throw InputError(prm_file + ": Contact case study/Scenes", "no scene given");
     const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
-    const unsigned int increments = prm.get_integer("Increments");
-    const double       fraction   = prm.get_double("Load fraction");
+    const unsigned int increments = SceneReader::get_integer(prm, "Increments", prm_file);
+    const double       fraction   = SceneReader::get_double(prm, "Load fraction", prm_file);
     const std::string  directory  = prm.get("Output directory");
     prm.leave_subsection();
     std::filesystem::create_directories(directory);

@@ -235,7 +235,7 @@ namespace glissade
       counts.push_back(Utilities::string_to_int(c));
     const auto methods =
       Utilities::split_string_list(prm.get("Methods"), ',');
-    const unsigned int samples   = prm.get_integer("Samples per edge");
+    const unsigned int samples   = SceneReader::get_integer(prm, "Samples per edge", prm_file);
     const std::string  directory = prm.get("Output directory");
     prm.leave_subsection();
     std::filesystem::create_directories(directory);

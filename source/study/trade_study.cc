@@ -369,11 +369,11 @@ namespace glissade
         if (measure.rfind("geometric", 0) != 0)
           scene = text::path_beside(prm_file, prm.get("Scene"));
         if (measure == "case2")
-          settings = {double(prm.get_integer("Increments")),
-                      prm.get_double("Load fraction")};
+          settings = {double(SceneReader::get_integer(prm, "Increments", prm_file)),
+                      SceneReader::get_double(prm, "Load fraction", prm_file)};
         if (measure == "case3")
-          settings = {prm.get_double("Rotation angle"),
-                      double(prm.get_integer("Increments per element"))};
+          settings = {SceneReader::get_double(prm, "Rotation angle", prm_file),
+                      double(SceneReader::get_integer(prm, "Increments per element", prm_file))};
         std::vector<std::pair<std::string, unsigned int>> reference;
         if (TradeMeasures::needs_reference(measure))
           {

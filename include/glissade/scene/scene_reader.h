@@ -51,6 +51,22 @@ namespace glissade
      * declared) and applies the command line's overrides, with the same
      * messages as for scenes.
      */
+    /**
+     * prm.get_double() and get_integer() for study drivers: a value that
+     * matches its pattern but does not convert (a denormal, an integer out
+     * of range) is an InputError that names the file and the entry, like
+     * any other mistake in the input.
+     */
+    static double
+    get_double(const ParameterHandler &prm,
+               const std::string      &entry,
+               const std::string      &filename);
+
+    static long int
+    get_integer(const ParameterHandler &prm,
+                const std::string      &entry,
+                const std::string      &filename);
+
     static void
     parse_study(ParameterHandler               &prm,
                 const std::string              &filename,
