@@ -266,17 +266,19 @@ namespace glissade
 
         // The columns of C at the force dofs (m x m, column major): from
         // the body's Cholesky factor when it has one, else by solves.
-        // Only the columns of the dofs that touch in this iteration are
-        // formed, not those of the whole declared area.
+        // Only the columns at the force dofs of this iteration's active
+        // nodes are formed, not those of the whole declared area.
         bool              from_factor = true;
-        std::vector<long> position(m, -1);
+        std::vector<long> position(m, -1), force_positions;
         for (unsigned int i = 0; i < m && from_factor; ++i)
           {
             position[i] = bodies[b]->contact_dof_position(dofs[i]);
             from_factor = position[i] >= 0;
+            if (is_force_dof[i])
+              force_positions.push_back(position[i]);
           }
-        from_factor =
-          from_factor && bodies[b]->prepare_contact_compliance(position);
+        from_factor = from_factor &&
+                      bodies[b]->prepare_contact_compliance(force_positions);
         std::vector<double> C(std::size_t(m) * m, 0.);
         for (unsigned int j = 0; j < m; ++j)
           if (is_force_dof[j])

@@ -522,19 +522,32 @@ namespace glissade
 
 
 
+  namespace
+  {
+    /** A value read from prm, with a failed conversion as an InputError. */
+    template <typename Read>
+    auto
+    converted(const Read &read, const std::string &filename)
+    {
+      try
+        {
+          return read();
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(filename, text::essential_message(e));
+        }
+    }
+  } // namespace
+
+
+
   double
   SceneReader::get_double(const ParameterHandler &prm,
                           const std::string      &entry,
                           const std::string      &filename)
   {
-    try
-      {
-        return prm.get_double(entry);
-      }
-    catch (const std::exception &e)
-      {
-        throw InputError(filename, text::essential_message(e));
-      }
+    return converted([&]() { return prm.get_double(entry); }, filename);
   }
 
 
@@ -544,14 +557,7 @@ namespace glissade
                            const std::string      &entry,
                            const std::string      &filename)
   {
-    try
-      {
-        return prm.get_integer(entry);
-      }
-    catch (const std::exception &e)
-      {
-        throw InputError(filename, text::essential_message(e));
-      }
+    return converted([&]() { return prm.get_integer(entry); }, filename);
   }
 
 

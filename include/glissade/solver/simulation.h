@@ -161,7 +161,7 @@ namespace glissade
 
     const SceneDescription             scene;
     /** Every timed part of the run (never printed by itself). */
-    mutable TimerOutput                timer;
+    TimerOutput                        timer;
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
