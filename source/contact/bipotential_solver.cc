@@ -264,7 +264,10 @@ namespace glissade
         problem << "W has non-finite entries. ";
       else
         for (unsigned int k = 0; k < n_nodes; ++k)
-          if (W.diagonal_block(k)[t][t] < 0.)
+          // A frictionless node never uses its tangential compliance (with
+          // the contact tangent it may be negative: a node on a locally
+          // convex master is in unstable tangential equilibrium).
+          if (mu[k] > 0. && W.diagonal_block(k)[t][t] < 0.)
             {
               problem << "W_kk[t][t] < 0 at node " << k
                       << ": W is not positive semi-definite. ";

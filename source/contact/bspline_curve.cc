@@ -331,16 +331,17 @@ namespace glissade
 
 
   void
-  BSplineCurve::weights(const unsigned int segment,
-                        const double       s,
-                        NodeWeights       &node_weights) const
+  BSplineCurve::weights_and_derivatives(const unsigned int         segment,
+                                        const double               s,
+                                        NodeWeightsAndDerivatives &weights) const
   {
     assert(segment < n_segments());
-    node_weights.clear();
+    weights.clear();
     const unsigned int n = n_nodes();
 
-    double b[4];
+    double b[4], db[4];
     basis(s, b);
+    basis_derivative(s, db);
     unsigned int slot[4];
     for (int k = 0; k < 4; ++k)
       slot[k] = control_index(int(segment) - 1 + k);
@@ -363,24 +364,19 @@ namespace glissade
       for (int j = std::max(first, 0); j <= std::min(last, int(n) - 1); ++j)
         columns.push_back(j);
 
-    double largest = 0.;
-    node_weights.reserve(columns.size());
+    weights.reserve(columns.size());
     for (const unsigned int j : columns)
       {
-        double phi = 0.;
+        double phi = 0., dphi = 0.;
         for (int k = 0; k < 4; ++k)
-          phi += b[k] * inverse_entry(slot[k], j);
-        node_weights.emplace_back(j, phi);
-        largest = std::max(largest, std::abs(phi));
+          {
+            const double a = inverse_entry(slot[k], j);
+            phi += b[k] * a;
+            dphi += db[k] * a;
+          }
+        weights.push_back({j, phi, dphi});
       }
-
-    node_weights.erase(std::remove_if(node_weights.begin(),
-                                      node_weights.end(),
-                                      [largest](const auto &w) {
-                                        return !(std::abs(w.second) >
-                                                 1e-14 * largest);
-                                      }),
-                       node_weights.end());
+    keep_significant(weights);
   }
 
 

@@ -2,8 +2,10 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/contact/condensed_problem.h>
 #include <glissade/contact/contact_problem.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 
@@ -15,7 +17,6 @@ namespace glissade
     TimerOutput                              &timer)
     : bodies(bodies)
     , timer(timer)
-    , columns(bodies.size())
   {
     const auto find = [&](const std::string &name) -> Body * {
       for (const auto &b : bodies)
@@ -32,7 +33,6 @@ namespace glissade
           c,
           *find(c.slave_body),
           c.master_body == "rigid" ? nullptr : find(c.master_body),
-          scene.source,
           timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
@@ -50,6 +50,19 @@ namespace glissade
         if (!dofs.empty())
           body->set_contact_dofs(dofs);
       }
+
+    // The active nodes of all pairs form one local problem, solved with
+    // the settings of the first pair.
+    if (!pairs.empty())
+      {
+        const auto &first                  = pairs[0]->settings();
+        solver_settings.beta               = first.beta;
+        solver_settings.residual_tolerance = first.tolerance;
+        solver_settings.change_tolerance   = first.tolerance;
+        solver_settings.max_sweeps         = first.max_sweeps;
+        solver_settings.rho_choice =
+          BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
+      }
   }
 
 
@@ -66,29 +79,11 @@ namespace glissade
 
 
   void
-  ContactProblem::begin_step(const double time)
+  ContactProblem::begin_step(const double step_start_time, const double time)
   {
     TimerOutput::Scope scope(timer, timing::detection);
     for (auto &pair : pairs)
-      pair->begin_step(time);
-    for (auto &c : columns)
-      c.clear();
-  }
-
-
-
-  const Vector<double> &
-  ContactProblem::column(const unsigned int             body,
-                         const types::global_dof_index dof)
-  {
-    auto found = columns[body].find(dof);
-    if (found != columns[body].end())
-      return found->second;
-    Vector<double> unit(bodies[body]->n_dofs());
-    unit(dof) = 1.;
-    Vector<double> &x = columns[body][dof];
-    bodies[body]->solve_homogeneous(unit, x);
-    return x;
+      pair->begin_step(step_start_time, time);
   }
 
 
@@ -141,233 +136,248 @@ namespace glissade
   bool
   ContactProblem::correct(std::vector<Vector<double>> &increments)
   {
-    activate_nodes_crossed_by(increments);
+    // Nodes that the free step would take behind the master join now,
+    // linearised at the current state like the others (update_state()).
+    if (activate_nodes_crossed_by(increments) > 0)
+      {
+        TimerOutput::Scope scope(timer, timing::detection);
+        for (auto &pair : pairs)
+          pair->update_geometry();
+      }
 
-    // Columns of the current tangent: a W frozen at the increment's first
-    // iteration lets a sliding mode of faceted masters grow slowly (seen on
-    // the concentric rings), so W is formed afresh each iteration.
-    for (auto &c : columns)
-      c.clear();
-
-    // Scopes, stopped by hand: an exception still closes the section.
-    TimerOutput::Scope detection_scope(timer, timing::detection);
     // The active nodes of all pairs form one condensed problem: nodes of
-    // different pairs couple through the bodies they share.
-    struct Active
-    {
-      ContactPair *pair;
-      ContactNode *node;
-      unsigned int slave, master; // body indices (master: invalid if rigid)
-    };
-    std::vector<Active> active;
+    // different pairs couple through the bodies they share. Per node the
+    // forces of unit reactions and the slip and gap rows, and the terms of
+    // the contact tangent.
+    std::vector<ContactNode *> active;
+    std::vector<double>        mu;
+    std::vector<PairVector>    forces, rows;
+    std::vector<BiPotentialSolver::Vector2> initial;
+    std::vector<RankOneTerm>   tangent_terms;
     for (auto &pair : pairs)
       {
-        pair->update_geometry();
+        const std::array<unsigned int, 2> b = {
+          {body_index(&pair->slave()),
+           pair->master() ? body_index(pair->master()) :
+                            numbers::invalid_unsigned_int}};
         for (auto &node : pair->nodes())
           if (node.active)
-            active.push_back({pair.get(),
-                              &node,
-                              body_index(&pair->slave()),
-                              pair->master() ? body_index(pair->master()) :
-                                               numbers::invalid_unsigned_int});
+            {
+              const ContactLinearization &l = node.linearization;
+              active.push_back(&node);
+              mu.push_back(pair->settings().friction);
+              initial.push_back({{l.slip, l.gap}});
+              forces.push_back({&l.tangential_force, b});
+              forces.push_back({&l.normal_force, b});
+              rows.push_back({&l.slip_row, b});
+              rows.push_back({&l.gap_row, b});
+              for (const auto &[load, row] :
+                   {std::make_pair(&l.sliding_load, &l.sliding_row),
+                    std::make_pair(&l.rotation_load, &l.rotation_row)})
+                if (!load->empty() && !row->empty())
+                  tangent_terms.push_back({{load, b}, {row, b}});
+            }
       }
-    detection_scope.stop();
-
-    std::vector<Vector<double>> contact_forces(bodies.size());
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      contact_forces[b].reinit(bodies[b]->n_dofs());
+    result           = BiPotentialSolver::Result();
+    result.converged = true;
     if (active.empty())
-      {
-        for (unsigned int b = 0; b < bodies.size(); ++b)
-          bodies[b]->set_contact_forces(contact_forces[b]);
-        result = BiPotentialSolver::Result();
-        result.converged = true;
-        return true;
-      }
+      return true;
+    const unsigned int n = active.size();
 
-    const auto body_of = [&](const Active &a, const unsigned int which) {
-      return which == 0 ? a.slave : a.master;
-    };
-    const auto frame = [](const ContactNode &node, const unsigned int row) {
-      return row == 0 ? node.tangent : node.normal;
-    };
-
-    // W_kl = H_kin,k K^-1 H_force,l^T from the cached columns of K^-1, and
-    // u_free_k, summing over the bodies that nodes k and l share.
-    TimerOutput::Scope compliance_scope(timer, timing::compliance);
-    const unsigned int                      n = active.size();
-    ComplianceMatrix                        W;
-    std::vector<BiPotentialSolver::Vector2> u_free(n), r(n);
-    std::vector<double>                     mu(n);
-    W.reinit(n);
+    // The local problem on the condensed system, first as it is; if it
+    // fails (a tangent that is indefinite or singular without the contact
+    // that holds it), again with the closed constraints augmented
+    // (theory.md, section 4.5): exact once the augmented nodes stay closed.
+    std::vector<BiPotentialSolver::Vector2> start(n), r(n);
     for (unsigned int k = 0; k < n; ++k)
+      start[k] = {{active[k]->reaction[0], active[k]->reaction[1]}};
+    std::vector<std::array<bool, 2>> augmented(n, {{false, false}});
+    std::vector<DofVector>           scaled;
+    std::unique_ptr<CondensedProblem> condensed;
+    std::vector<double>               stiffness(n, 0.);
+    bool                              consistent = false;
+    // (The condensed problem refers to these: they live as long as it.)
+    std::vector<RankOneTerm> terms;
+    std::vector<PairVector>  extra;
+    for (unsigned int attempt = 0; attempt < 8 && !consistent; ++attempt)
       {
-        const ContactNode &node = *active[k].node;
-        mu[k]                   = active[k].pair->settings().friction;
-        r[k]                    = {{node.reaction[0], node.reaction[1]}};
-        // Free relative displacement of this iteration, and the slip
-        // accumulated since the increment began (for friction).
-        Tensor<1, 2> free_motion, slip;
-        for (const auto &e : node.kinematics)
-          {
-            const unsigned int b = body_of(active[k], e.body);
-            free_motion[e.component] += e.weight * increments[b](e.dof);
-            slip[e.component] +=
-              e.weight * (bodies[b]->displacement()(e.dof) -
-                          bodies[b]->stored_displacement()(e.dof));
-          }
-        u_free[k] = {{node.tangent * (slip + free_motion),
-                      node.gap + node.normal * free_motion}};
-      }
-    // W = H_kin C H_force^T with C the block of K_b^-1 on the contact dofs
-    // of body b: first T_l = C H_force,l^T (one vector over the contact
-    // dofs per node and direction), then W_kl = H_kin,k T_l. This costs
-    // O(n e m + n^2 e) instead of O(n^2 e^2) for e map entries per node,
-    // which matters for B-spline masters (e ~ 50).
-    struct LocalEntry
-    {
-      unsigned int index; // among the body's contact dofs of this iteration
-      unsigned int component;
-      double       weight;
-    };
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        std::map<types::global_dof_index, unsigned int> index;
-        for (const auto &a : active)
-          for (const auto *map : {&a.node->kinematics, &a.node->forces})
-            for (const auto &e : *map)
-              if (body_of(a, e.body) == b)
-                index.emplace(e.dof, 0);
-        if (index.empty())
-          continue;
-        std::vector<types::global_dof_index> dofs;
-        for (auto &[dof, i] : index)
-          {
-            i = dofs.size();
-            dofs.push_back(dof);
-          }
-        const unsigned int m = dofs.size();
+        terms = tangent_terms;
+        extra.clear();
+        scaled.clear();
+        scaled.reserve(4 * n);
+        for (unsigned int k = 0; k < n; ++k)
+          for (unsigned int c = 0; c < 2; ++c)
+            if (augmented[k][c])
+              {
+                // K + E row (x) row and the right-hand side - E u_0 row:
+                // the constraint row . du + u_0 = 0 of a closed direction.
+                const double       E   = stiffness[k];
+                const PairVector  &row = rows[2 * k + c];
+                const double u0 = c == 0 ? active[k]->linearization.slip :
+                                           active[k]->linearization.gap;
+                scaled.push_back(*row.coefficients);
+                for (auto &e : scaled.back())
+                  e.value *= -E;
+                terms.push_back({{&scaled.back(), row.bodies}, row});
+                scaled.push_back(*row.coefficients);
+                for (auto &e : scaled.back())
+                  e.value *= -E * u0;
+                extra.push_back({&scaled.back(), row.bodies});
+              }
 
-        // The maps of every node restricted to this body, by local index.
-        std::vector<std::vector<LocalEntry>> kinematics(n), forces(n);
-        std::vector<bool>                    is_force_dof(m, false);
+        TimerOutput::Scope compliance_scope(timer, timing::compliance);
+        condensed = std::make_unique<CondensedProblem>(
+          initial, forces, rows, terms, extra, bodies, increments);
+        compliance_scope.stop();
+
+        bool solved = condensed->regular();
+        if (solved)
+          {
+            TimerOutput::Scope local_solve_scope(timer, timing::local_solve);
+            r      = start;
+            result = BiPotentialSolver(solver_settings)
+                       .solve(condensed->compliance(),
+                              condensed->free_displacement(), mu, r);
+            solved = result.converged;
+          }
+        else
+          {
+            result.converged = false;
+            result.message   = "the Newton matrix with the contact terms is "
+                             "singular on the contact dofs";
+          }
+
+        if (attempt == 0)
+          {
+            // The augmentation's stiffness: the inverse of each node's
+            // compliance through its bodies alone (without the contact
+            // terms), a scale at which S stays well conditioned.
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                const double w = condensed->base_normal_compliance(k);
+                stiffness[k] = w > 0. ? 1. / w : 0.;
+              }
+            double largest = *std::max_element(stiffness.begin(), stiffness.end());
+            for (auto &E : stiffness)
+              if (!(E > 0.))
+                E = largest;
+          }
+
+        // Augmented directions must end closed (normal) or sticking
+        // (tangential): then the answer is exact. The others are released.
+        consistent = solved;
+        if (solved)
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              const auto status = result.status[k];
+              if (augmented[k][1] && status == BiPotentialSolver::NodeStatus::open)
+                augmented[k] = {{false, false}}, consistent = false;
+              if (augmented[k][0] && status != BiPotentialSolver::NodeStatus::stick)
+                augmented[k][0] = false, consistent = false;
+            }
+        if (std::getenv("GLISSADE_DEBUG"))
+          {
+            unsigned int n_augmented = 0;
+            for (const auto &a : augmented)
+              n_augmented += a[0] + a[1];
+            std::cerr << "    contact attempt " << attempt << ": "
+                      << n_augmented << " augmented directions, "
+                      << (solved ? (consistent ? "solved" : "inconsistent") :
+                                   "failed")
+                      << std::endl;
+          }
+        if (solved)
+          continue; // done, or the same problem with fewer augmented directions
+
+        if (std::getenv("GLISSADE_DEBUG"))
+          std::cerr << "    augmentation, attempt " << attempt + 1 << ": "
+                    << result.message << std::endl;
+        // Failed: augment every node that pushes (or, once that failed
+        // too, every active node), in the directions its status holds.
+        if (attempt >= 4)
+          return false;
         for (unsigned int k = 0; k < n; ++k)
           {
-            for (const auto &e : active[k].node->kinematics)
-              if (body_of(active[k], e.body) == b)
-                kinematics[k].push_back({index[e.dof], e.component, e.weight});
-            for (const auto &e : active[k].node->forces)
-              if (body_of(active[k], e.body) == b)
-                {
-                  forces[k].push_back({index[e.dof], e.component, e.weight});
-                  is_force_dof[index[e.dof]] = true;
-                }
+            const auto status =
+              BiPotentialSolver::classify(start[k], mu[k]);
+            const bool closed =
+              attempt >= 1 || status != BiPotentialSolver::NodeStatus::open;
+            augmented[k][1] = closed;
+            augmented[k][0] =
+              closed && mu[k] > 0. &&
+              (attempt >= 1 || status == BiPotentialSolver::NodeStatus::stick);
           }
-
-        // The columns of C at the force dofs (m x m, column major): from
-        // the body's Cholesky factor when it has one, else by solves.
-        // Only the columns at the force dofs of this iteration's active
-        // nodes are formed, not those of the whole declared area.
-        bool              from_factor = true;
-        std::vector<long> position(m, -1), force_positions;
-        for (unsigned int i = 0; i < m && from_factor; ++i)
-          {
-            position[i] = bodies[b]->contact_dof_position(dofs[i]);
-            from_factor = position[i] >= 0;
-            if (is_force_dof[i])
-              force_positions.push_back(position[i]);
-          }
-        from_factor = from_factor &&
-                      bodies[b]->prepare_contact_compliance(force_positions);
-        std::vector<double> C(std::size_t(m) * m, 0.);
-        for (unsigned int j = 0; j < m; ++j)
-          if (is_force_dof[j])
-            {
-              double *c = &C[std::size_t(j) * m];
-              if (from_factor)
-                for (unsigned int i = 0; i < m; ++i)
-                  c[i] = bodies[b]->contact_compliance(position[i], position[j]);
-              else
-                {
-                  const Vector<double> &x = column(b, dofs[j]);
-                  for (unsigned int i = 0; i < m; ++i)
-                    c[i] = x(dofs[i]);
-                }
-            }
-
-        std::vector<double> t(m);
-        for (unsigned int l = 0; l < n; ++l)
-          for (unsigned int col = 0; col < 2 && !forces[l].empty(); ++col)
-            {
-              std::fill(t.begin(), t.end(), 0.);
-              for (const auto &f : forces[l])
-                {
-                  const double coefficient =
-                    f.weight * frame(*active[l].node, col)[f.component];
-                  const double *c = &C[std::size_t(f.index) * m];
-                  for (unsigned int i = 0; i < m; ++i)
-                    t[i] += coefficient * c[i];
-                }
-              for (unsigned int k = 0; k < n; ++k)
-                {
-                  if (kinematics[k].empty())
-                    continue;
-                  ComplianceMatrix::Block block = {{{{0., 0.}}, {{0., 0.}}}};
-                  for (const auto &e : kinematics[k])
-                    {
-                      const double v = e.weight * t[e.index];
-                      for (unsigned int row = 0; row < 2; ++row)
-                        block[row][col] +=
-                          frame(*active[k].node, row)[e.component] * v;
-                    }
-                  W.add_block(k, l, block);
-                }
-            }
+        if (attempt >= 2)
+          for (auto &E : stiffness)
+            E *= 10.;
       }
-    compliance_scope.stop();
+    if (!consistent)
+      {
+        result.converged = false;
+        return false;
+      }
 
-    TimerOutput::Scope local_solve_scope(timer, timing::local_solve);
-    BiPotentialSolver::Settings settings;
-    const auto &first = active[0].pair->settings();
-    settings.beta               = first.beta;
-    settings.residual_tolerance = first.tolerance;
-    settings.change_tolerance   = first.tolerance;
-    settings.max_sweeps         = first.max_sweeps;
-    settings.rho_choice =
-      BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
-    result = BiPotentialSolver(settings).solve(W, u_free, mu, r);
-    local_solve_scope.stop();
-    if (!result.converged)
-      return false;
-
-    // Corrector du = du_lib + K^-1 H^T r with the current tangent, and the
-    // contact forces H^T r.
     for (unsigned int k = 0; k < n; ++k)
       {
-        ContactNode &node = *active[k].node;
-        node.reaction     = {{r[k][0], r[k][1]}};
-        node.status       = result.status[k];
-        const Tensor<1, 2> force = node.force();
-        for (const auto &e : node.forces)
-          contact_forces[body_of(active[k], e.body)](e.dof) +=
-            e.weight * force[e.component];
+        active[k]->reaction = {{r[k][0], r[k][1]}};
+        active[k]->status   = result.status[k];
       }
     if (const char *debug = std::getenv("GLISSADE_DEBUG");
         debug != nullptr && std::string(debug) == "2")
-      for (unsigned int k = 0; k < n; ++k)
-        std::cerr << "      node " << active[k].node->vertex << " segment "
-                  << active[k].node->segment << " s " << active[k].node->s
-                  << " gap " << active[k].node->gap << " r "
-                  << r[k][0] << ' ' << r[k][1] << std::endl;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      if (contact_forces[b].linfty_norm() > 0.)
-        {
-          Vector<double> correction;
-          bodies[b]->solve_homogeneous(contact_forces[b], correction);
-          increments[b] += correction;
-        }
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      bodies[b]->set_contact_forces(contact_forces[b]);
+      for (const ContactNode *node : active)
+        std::cerr << "      node " << node->vertex << " segment "
+                  << node->segment << " s " << node->s << " gap " << node->gap
+                  << " r " << node->reaction[0] << ' ' << node->reaction[1]
+                  << std::endl;
+
+    // Corrector: the Newton step.
+    std::vector<Vector<double>> contact_forces(bodies.size());
+    condensed->correct(r, increments, contact_forces);
     return true;
+  }
+
+
+
+  void
+  ContactProblem::update_state()
+  {
+    {
+      TimerOutput::Scope scope(timer, timing::detection);
+      for (auto &pair : pairs)
+        pair->update_geometry();
+    }
+    // The forces of the reactions at the new state: the residual of the
+    // next iteration is then the true one, R(U, r).
+    std::vector<Vector<double>> forces(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      forces[b].reinit(bodies[b]->n_dofs());
+    for (auto &pair : pairs)
+      {
+        const auto pair_forces = pair->contact_forces();
+        forces[body_index(&pair->slave())] += pair_forces[0];
+        if (pair->master())
+          forces[body_index(pair->master())] += pair_forces[1];
+      }
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      bodies[b]->set_contact_forces(forces[b]);
+  }
+
+
+
+  void
+  ContactProblem::store_state()
+  {
+    stored_nodes.clear();
+    for (const auto &pair : pairs)
+      stored_nodes.push_back(pair->nodes());
+  }
+
+
+
+  void
+  ContactProblem::restore_state()
+  {
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      pairs[p]->nodes() = stored_nodes[p];
   }
 } // namespace glissade

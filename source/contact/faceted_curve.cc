@@ -107,22 +107,13 @@ namespace glissade
 
 
   void
-  FacetedCurve::weights(const unsigned int segment,
-                        const double       s,
-                        NodeWeights       &node_weights) const
+  FacetedCurve::weights_and_derivatives(const unsigned int         segment,
+                                        const double               s,
+                                        NodeWeightsAndDerivatives &weights) const
   {
-    node_weights.clear();
-    const auto   ends    = segment_nodes(segment);
-    const double w[2]    = {1. - s, s};
-    const double largest = std::max(std::abs(w[0]), std::abs(w[1]));
-    // Sorted by node index: only the closing segment N-1 -> 0 swaps them.
-    const unsigned int first = (ends[0] < ends[1] ? 0 : 1);
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const unsigned int i = (first + k) % 2;
-        if (std::abs(w[i]) > 1e-14 * largest)
-          node_weights.emplace_back(ends[i], w[i]);
-      }
+    const auto ends = segment_nodes(segment);
+    weights         = {{ends[0], 1. - s, -1.}, {ends[1], s, 1.}};
+    keep_significant(weights);
   }
 
 

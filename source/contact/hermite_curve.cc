@@ -218,22 +218,16 @@ namespace glissade
 
 
   void
-  HermiteCurve::weights(const unsigned int segment,
-                        const double       s,
-                        NodeWeights       &node_weights) const
+  HermiteCurve::weights_and_derivatives(const unsigned int         segment,
+                                        const double               s,
+                                        NodeWeightsAndDerivatives &weights) const
   {
-    node_weights.clear();
-    double h[4];
+    double h[4], dh[4];
     hermite(s, h);
-    const auto         ends    = segment_nodes(segment);
-    const double       largest = std::max(std::abs(h[0]), std::abs(h[1]));
-    const unsigned int first   = (ends[0] < ends[1] ? 0 : 1);
-    for (unsigned int k = 0; k < 2; ++k)
-      {
-        const unsigned int i = (first + k) % 2;
-        if (std::abs(h[i]) > 1e-14 * largest)
-          node_weights.emplace_back(ends[i], h[i]);
-      }
+    hermite_derivative(s, dh);
+    const auto ends = segment_nodes(segment);
+    weights         = {{ends[0], h[0], dh[0]}, {ends[1], h[1], dh[1]}};
+    keep_significant(weights);
   }
 
 
@@ -242,11 +236,22 @@ namespace glissade
   HermiteCurve::tangent_weights(const unsigned int segment,
                                 const double       s) const
   {
+    const auto both = tangent_weights_and_derivatives(segment, s);
+    return {{both[0], both[1]}};
+  }
+
+
+
+  std::array<double, 4>
+  HermiteCurve::tangent_weights_and_derivatives(const unsigned int segment,
+                                                const double       s) const
+  {
     (void)segment;
     assert(segment < n_segments());
-    double h[4];
+    double h[4], dh[4];
     hermite(s, h);
-    return {{h[2], h[3]}};
+    hermite_derivative(s, dh);
+    return {{h[2], h[3], dh[2], dh[3]}};
   }
 
 

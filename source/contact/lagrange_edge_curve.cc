@@ -199,19 +199,20 @@ namespace glissade
 
 
   void
-  LagrangeEdgeCurve::weights(const unsigned int segment,
-                             const double       s,
-                             NodeWeights       &node_weights) const
+  LagrangeEdgeCurve::weights_and_derivatives(
+    const unsigned int         segment,
+    const double               s,
+    NodeWeightsAndDerivatives &weights) const
   {
     std::vector<double> v, d1, d2;
     basis(s, v, d1, d2);
     const auto ends = segment_nodes(segment);
-    node_weights.clear();
-    node_weights.emplace_back(ends[0], v[0]);
+    weights.clear();
+    weights.push_back({ends[0], v[0], d1[0]});
     for (unsigned int j = 0; j + 1 < degree; ++j)
-      node_weights.emplace_back(n_nodes() + segment * (degree - 1) + j,
-                                v[j + 1]);
-    node_weights.emplace_back(ends[1], v[degree]);
-    std::sort(node_weights.begin(), node_weights.end());
+      weights.push_back(
+        {n_nodes() + segment * (degree - 1) + j, v[j + 1], d1[j + 1]});
+    weights.push_back({ends[1], v[degree], d1[degree]});
+    keep_significant(weights);
   }
 } // namespace glissade

@@ -83,6 +83,51 @@ namespace glissade
 
 
 
+  void
+  MasterCurve::weights(const unsigned int segment,
+                       const double       s,
+                       NodeWeights       &node_weights) const
+  {
+    NodeWeightsAndDerivatives both;
+    weights_and_derivatives(segment, s, both);
+    double largest = 0.;
+    for (const auto &w : both)
+      largest = std::max(largest, std::abs(w.value));
+    node_weights.clear();
+    for (const auto &w : both)
+      if (std::abs(w.value) > 1e-14 * largest)
+        node_weights.emplace_back(w.node, w.value);
+  }
+
+
+
+  void
+  MasterCurve::keep_significant(NodeWeightsAndDerivatives &weights)
+  {
+    double largest_value = 0., largest_derivative = 0.;
+    for (const auto &w : weights)
+      {
+        largest_value      = std::max(largest_value, std::abs(w.value));
+        largest_derivative = std::max(largest_derivative, std::abs(w.derivative));
+      }
+    weights.erase(std::remove_if(weights.begin(),
+                                 weights.end(),
+                                 [&](const WeightAndDerivative &w) {
+                                   return !(std::abs(w.value) >
+                                              1e-14 * largest_value ||
+                                            std::abs(w.derivative) >
+                                              1e-14 * largest_derivative);
+                                 }),
+                  weights.end());
+    std::sort(weights.begin(),
+              weights.end(),
+              [](const WeightAndDerivative &a, const WeightAndDerivative &b) {
+                return a.node < b.node;
+              });
+  }
+
+
+
   std::array<std::pair<unsigned int, double>, 2>
   MasterCurve::underlying_segment_weights(const unsigned int segment,
                                           const double       s) const

@@ -202,7 +202,14 @@ namespace glissade
       c.surface         = prm.get("Surface");
       c.force_transfer  = prm.get("Force transfer");
       c.alert_distance  = prm.get_double("Alert distance");
-      c.frame_update    = prm.get("Frame update");
+      if (prm.get("Frame update") == "increment")
+        throw InputError(
+          c.entry + "/Frame update",
+          "'increment' (the contact frame frozen over an increment) was "
+          "removed: the tangent now holds the contact's own terms, so the "
+          "frame is updated at every Newton iteration and converges "
+          "quadratically in the true frame (doc/contact.md); delete this "
+          "line");
       c.friction        = prm.get_double("Friction coefficient");
       c.beta            = prm.get_double("Beta");
       c.tolerance       = prm.get_double("Tolerance");

@@ -194,14 +194,10 @@ namespace glissade
         "Frame update",
         "iteration",
         Patterns::Selection("iteration|increment"),
-        "iteration: re-project the active nodes at every Newton iteration "
-        "(frame, gap, weights). increment: project them at the start of the "
-        "increment only and follow the gap linearly within it. The frame's "
-        "change is not part of the tangent, so with a very compliant master "
-        "surface (Hermite edges, whose tangents turn under a point force) "
-        "re-projecting can make the iteration diverge; freezing the frame "
-        "over small increments converges, at an error of the order of the "
-        "increment.");
+        "Kept for old scenes: the active nodes are re-projected at every "
+        "Newton iteration, with the contact's own terms in the tangent. "
+        "'increment' (the frame frozen over an increment) was removed and "
+        "is refused with a message.");
       prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
                         "Coulomb's mu (0: frictionless).");
       prm.declare_entry("Beta", "1", Patterns::Double(0.),

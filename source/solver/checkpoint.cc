@@ -22,7 +22,7 @@ namespace glissade
   namespace
   {
     // Raised when the layout of the file changes: an old file is refused.
-    const std::string checkpoint_format = "glissade checkpoint 2";
+    const std::string checkpoint_format = "glissade checkpoint 3";
   } // namespace
 
 

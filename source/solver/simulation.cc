@@ -53,13 +53,13 @@ namespace glissade
 
 
   bool
-  Simulation::newton(const double t)
+  Simulation::newton(const double t_start, const double t)
   {
     const NewtonSettings &settings = scene.newton;
     for (auto &b : all_bodies)
       b->set_time(t);
     // Detection at the start of the load step, from the current state.
-    contact_problem->begin_step(t);
+    contact_problem->begin_step(t_start, t);
 
     residual_history.clear();
     double first_residual = 0.;
@@ -151,6 +151,8 @@ namespace glissade
             displacement_norm += all_bodies[b]->displacement().norm_sqr();
           }
         last_increment    = std::sqrt(increment_squared);
+        if (!contact_problem->empty())
+          contact_problem->update_state();
         if (std::getenv("GLISSADE_DEBUG"))
           for (unsigned int b = 0; b < all_bodies.size(); ++b)
             std::cerr << "    body " << b << " |du| " << du[b].l2_norm()
@@ -178,10 +180,12 @@ namespace glissade
   {
     for (auto &b : all_bodies)
       b->store_state();
-    if (newton(t_end))
+    contact_problem->store_state();
+    if (newton(t_start, t_end))
       return true;
     for (auto &b : all_bodies)
       b->restore_state();
+    contact_problem->restore_state();
     if (depth >= scene.load_program.max_cut_back_depth)
       return false;
 

@@ -85,7 +85,6 @@ namespace glissade
       {
         overrides.push_back("Body outer/Element/Space=hermite");
         overrides.push_back("Contact interface/Surface=hermite");
-        overrides.push_back("Contact interface/Frame update=increment");
       }
     else
       throw InputError("Case 3 study/Variants",

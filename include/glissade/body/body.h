@@ -14,6 +14,7 @@
 #include <glissade/scene/scene_description.h>
 #include <glissade/solver/direct_solver.h>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -103,29 +104,18 @@ namespace glissade
     set_contact_dofs(const std::vector<types::global_dof_index> &contact_dofs);
 
     /**
-     * Makes the contact compliance of the current factorisation available
-     * between any contact dof and those at `positions` (the dofs that
-     * touch in this iteration: only their columns are formed); false if it
-     * is not available (LU fall-back, or no contact dofs set): the caller
-     * then uses solve_homogeneous().
+     * The compliance between contact dofs, the contact block of the body's
+     * K^-1 with its supports held: block[i + j rows.size()] is entry
+     * `rows[i]` of solve_homogeneous(e_{columns[j]}). With a Cholesky
+     * factorisation (contact dofs last) and every dof among the declared
+     * contact dofs, from the inverse of the factor's trailing block, whose
+     * columns at `columns` only are formed; otherwise one solve per column,
+     * kept for the current factorisation.
      */
-    bool
-    prepare_contact_compliance(const std::vector<long> &positions);
-
-    /** Position of a dof among the contact dofs, or -1. */
-    long
-    contact_dof_position(const types::global_dof_index dof) const
-    {
-      return contact_position[dof];
-    }
-
-    /**
-     * Compliance between the contact dofs at positions a and b, that is
-     * x_a for x = solve_homogeneous(e_b), after prepare_contact_compliance()
-     * with b among its positions.
-     */
-    double
-    contact_compliance(const long a, const long b) const;
+    void
+    compliance_block(const std::vector<types::global_dof_index> &rows,
+                     const std::vector<types::global_dof_index> &columns,
+                     std::vector<double>                        &block);
 
     /**
      * Contact forces acting on the body (from the last contact solve); the
@@ -296,6 +286,8 @@ namespace glissade
     std::vector<long>                                       contact_position;
     std::vector<std::vector<std::pair<long, double>>>       contact_rows;
     std::vector<std::vector<std::pair<long, double>>>       contact_rows_resolved;
+    /** solve_homogeneous(e_dof) of the current factorisation, by dof. */
+    std::map<types::global_dof_index, Vector<double>>       compliance_columns;
 
     Vector<double> solution;
     Vector<double> stored_solution;

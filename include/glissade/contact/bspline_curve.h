@@ -64,9 +64,10 @@ namespace glissade
      * so only about 25 nodes on each side survive the 1e-14 cut. See
      * inverse_entry() for how the entries are obtained.
      */
-    void weights(unsigned int segment,
-                 double       s,
-                 NodeWeights &node_weights) const override;
+    void weights_and_derivatives(
+      unsigned int               segment,
+      double                     s,
+      NodeWeightsAndDerivatives &weights) const override;
 
     void bounding_box(unsigned int segment,
                       Point       &low,

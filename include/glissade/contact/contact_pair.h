@@ -5,8 +5,8 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/bipotential_solver.h>
-#include <glissade/contact/master_curve.h>
-#include <glissade/contact/rigid_obstacle.h>
+#include <glissade/contact/contact_linearization.h>
+#include <glissade/contact/master_surface.h>
 #include <glissade/scene/scene_description.h>
 
 #include <memory>
@@ -14,19 +14,6 @@
 
 namespace glissade
 {
-  /**
-   * One term of a linear map from the bodies' dof increments to a 2D
-   * displacement: component `component` receives weight * du[dof] of body
-   * `body` (0: slave, 1: master).
-   */
-  struct DofWeight
-  {
-    unsigned int            body;
-    types::global_dof_index dof;
-    unsigned int            component;
-    double                  weight;
-  };
-
   /** A slave node and its contact state. */
   struct ContactNode
   {
@@ -34,38 +21,46 @@ namespace glissade
     std::array<types::global_dof_index, 2> dofs;
     Point<2>                               reference_position;
 
-    bool         active = false;
-    bool         projected = false; // has a counterpart on the master
-    /** Master segment of the last projection (-1: none or rigid). */
+    bool active    = false;
+    bool projected = false; // has a counterpart on the master
+    /** Master segment and s of the last projection (-1: none or rigid). */
     int          segment = -1;
     double       s       = 0.;
-    double       gap_at_step_start = 0.;
-    double       gap    = 0.;
+    double       gap     = 0.;
     Tensor<1, 2> tangent, normal;
     /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
     std::array<double, 2>         reaction = {{0., 0.}};
     BiPotentialSolver::NodeStatus status   = BiPotentialSolver::NodeStatus::open;
     /**
-     * The slave's displacement relative to the master point, as a map of
-     * the dofs (kinematics: how the gap moves), and the map that hands the
-     * reaction to the dofs (forces: the same, or the paper's two segment
-     * nodes for a B-spline master).
+     * Segment changes within the current increment. From the second on,
+     * the node keeps its segment (along its extension) for the rest of the
+     * increment: on a C1 curve whose curvature jumps at a node, a slave
+     * node whose equilibrium sits at that node would otherwise switch
+     * sides at every Newton iteration, each side's tangent pointing to the
+     * other. The point, the normal and the gap agree on both sides, so
+     * this changes how Newton gets there, not where.
      */
-    std::vector<DofWeight> kinematics, forces;
+    unsigned int segment_switches = 0;
+
+    /**
+     * Gap, slip, their derivatives, the forces of the reaction and the
+     * contact tangent at the last projection (rebuilt by every one).
+     */
+    ContactLinearization linearization;
 
     /**
      * The state a checkpoint holds (Boost serialization): the reactions and
      * statuses warm-start the local solver of the next increment, so a
-     * restart needs them to continue bit for bit; the maps are rebuilt by
-     * the next detection.
+     * restart needs them to continue bit for bit; the linearisation is
+     * rebuilt by the next detection.
      */
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       int status_code = static_cast<int>(status);
-      archive &active &projected &segment &s &gap_at_step_start &gap &tangent
-        &normal &reaction[0] &reaction[1] &status_code;
+      archive &active &projected &segment &s &gap &tangent &normal &reaction[0]
+        &reaction[1] &status_code;
       status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
     }
 
@@ -78,15 +73,16 @@ namespace glissade
 
   /**
    * A contact pair: the nodes of a slave boundary against a master surface
-   * (another body's boundary seen through a MasterCurve, or a rigid
-   * obstacle), node-to-segment.
+   * (a MasterSurface: another body's boundary seen through a smoothing, or
+   * a rigid obstacle), node-to-segment.
    *
    * At the start of each increment begin_step() builds the master surface
    * from the current positions and keeps, as the active set, the slave
    * nodes within the alert distance (paper, section 2.3): the others are
    * not part of the condensed problem of that increment. In every Newton
    * iteration update_geometry() rebuilds the surface and re-projects the
-   * active nodes: frame, gap and the dof maps.
+   * active nodes: frame, gap, and their linearisation with the contact
+   * tangent at the current reactions.
    */
   class ContactPair
   {
@@ -95,8 +91,9 @@ namespace glissade
     ContactPair(const ContactDescription &description,
                 Body                     &slave,
                 Body                     *master,
-                const std::string        &source,
                 TimerOutput              &timer);
+
+    ~ContactPair();
 
     const std::string &
     name() const
@@ -110,8 +107,9 @@ namespace glissade
       return description;
     }
 
+    /** Detection for the increment from step_start_time to time. */
     void
-    begin_step(const double time);
+    begin_step(const double step_start_time, const double time);
 
     /**
      * A pair that cannot make sense: at t = 0, slave nodes lie deeper behind
@@ -122,6 +120,7 @@ namespace glissade
     void
     check_initial_state();
 
+    /** Rebuilds the surface and re-projects and linearises the active nodes. */
     void
     update_geometry();
 
@@ -165,12 +164,18 @@ namespace glissade
       return master_body;
     }
 
+    const MasterSurface &
+    surface() const
+    {
+      return *master_surface;
+    }
+
     unsigned int
     n_active() const;
 
     /**
      * Every dof of `body` that this pair's dof maps can ever touch: the
-     * slave nodes' dofs, or the master curve's (with the Hermite
+     * slave nodes' dofs, or the master surface's (with the Hermite
      * derivatives). The bodies eliminate these last in their factorisation.
      */
     std::vector<types::global_dof_index>
@@ -184,64 +189,40 @@ namespace glissade
     const ContactNode &
     node_at(const Point<2> &reference_position) const;
 
-  private:
-    /** Ordered chain of the master boundary's vertices (master on the right). */
-    void
-    build_master_chain(const std::string &source);
-
-    /** Rebuilds the master curve from the current displacement. */
-    void
-    update_master_curve();
-
     /**
-     * Projects one slave node at the current state; false if no
-     * counterpart. With `keep_segment`, a node keeps the master segment of
-     * its last projection while it still has an orthogonal projection
-     * there: near a vertex of a faceted master two segments are about as
-     * close, and letting the choice flip between Newton iterations makes
-     * the contact constraint itself jump, so Newton would stall.
+     * The contact forces on the dofs at fixed reactions, F = sum_k
+     * H_k(U)^T Q_k(U) r_k, at the current state (the active nodes as
+     * projected last): body 0 the slave, 1 the master. For checking the
+     * contact tangent against finite differences.
+     */
+    std::array<Vector<double>, 2>
+    contact_forces() const;
+
+  private:
+    /**
+     * Projects one slave node at the current state and linearises it;
+     * false if it has no counterpart. With `keep_segment`, the node keeps
+     * the master segment of its last projection while it still has an
+     * orthogonal projection there (MasterSurface::project).
      */
     bool
     project(ContactNode &node, const bool keep_segment = false) const;
 
-    /**
-     * Orthogonal projection on one segment; false if s leaves
-     * [-margin, 1 + margin].
-     */
-    bool
-    project_on_segment(const Point<2> &x, const unsigned int segment,
-                       double &s, const double margin) const;
+    /** The surface at the current state (and the increment's end time). */
+    void
+    update_surface();
 
     /** False for a node that no reaction can move (see the definition). */
     bool
     can_react(const ContactNode &node) const;
 
-    /** Frame, gap and dof maps of a node at (segment, s). */
-    void
-    linearize(ContactNode &node, const Point<2> &x, const unsigned int segment,
-              const double s) const;
-
-    Point<2>
-    current_position(const Body &body, const std::array<types::global_dof_index, 2> &dofs,
-                     const Point<2> &X) const;
-
     const ContactDescription       description;
     Body                          &slave_body;
     Body                          *master_body;
     TimerOutput                   &timer;
-    std::unique_ptr<RigidObstacle> obstacle;
-    std::unique_ptr<MasterCurve>   curve;
+    std::unique_ptr<MasterSurface> master_surface;
     std::vector<ContactNode>       slave_nodes;
-    double                         time = 0.;
-
-    // Master chain: node vertices, their reference positions and value
-    // dofs; for Hermite masters also the derivative dofs (x/y, d/dx, d/dy
-    // per component) and, per segment, the reference tangents dX/ds at its
-    // two ends (s in [0, 1] along the segment).
-    bool                                                closed = false;
-    std::vector<Point<2>>                               master_points;
-    std::vector<std::array<types::global_dof_index, 2>> master_dofs;
-    std::vector<std::array<types::global_dof_index, 6>> master_hermite_dofs;
-    std::vector<std::array<Tensor<1, 2>, 2>>            segment_reference_tangents;
+    /** The increment being solved: its start and end times. */
+    double step_start = 0., step_end = 0.;
   };
 } // namespace glissade

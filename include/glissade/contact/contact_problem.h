@@ -5,7 +5,6 @@
 #include <glissade/contact/contact_pair.h>
 #include <glissade/scene/scene_description.h>
 
-#include <map>
 #include <memory>
 #include <vector>
 
@@ -13,17 +12,13 @@ namespace glissade
 {
   /**
    * The contact part of a Newton iteration, on the system condensed to the
-   * active contact nodes (paper eq. 8-10, shared/design/CONTACT_ALGORITHM.md):
-   *
-   * given each body's free step du_lib = K^-1 (F_ext - F_int), it
-   * re-projects the active nodes, forms their free relative displacement
-   * u_free = H du_lib (+ the gap, + the slip since the increment began), the
-   * compliance W = H K^-1 H^T (from the block of K^-1 on the contact dofs
-   * that the Cholesky factorisation gives, or one back-substitution per
-   * contact dof when the tangent needs LU), solves the bi-potential
-   * local problem for the reactions r, and returns the corrected step
-   * du = du_lib + K^-1 H^T r. The contact forces H^T r are handed to the
-   * bodies for their equilibrium residual.
+   * active contact nodes (paper eq. 8-10; theory.md section 4.3): given
+   * each body's free step du_lib = K^-1 (F_ext - F_int), it re-projects
+   * and linearises the active nodes, forms the condensed problem of the
+   * consistent tangent K - K_c (CondensedProblem: W and the free relative
+   * displacement), solves the bi-potential local problem for the
+   * reactions r, and returns the Newton step. The contact forces H^T r are
+   * handed to the bodies for their equilibrium residual.
    */
   class ContactProblem
   {
@@ -39,17 +34,32 @@ namespace glissade
       return pairs.empty();
     }
 
-    /** Detection at the start of an increment (alert distance). */
+    /** Detection for the increment from step_start_time to time. */
     void
-    begin_step(const double time);
+    begin_step(const double step_start_time, const double time);
 
     /**
-     * `increments[b]` holds body b's du_lib on entry and its corrected du on
+     * `increments[b]` holds body b's du_lib on entry and its Newton step on
      * exit; the bodies must be factorised. Returns false if the local
-     * solver failed (the step is then cut back).
+     * solver failed or the consistent tangent is singular (the step is
+     * then cut back).
      */
     bool
     correct(std::vector<Vector<double>> &increments);
+
+    /**
+     * After the bodies took the Newton step: re-projects and linearises
+     * the active nodes at the new state (the contact tangent at the new
+     * reactions) and hands the bodies the forces of the reactions there.
+     */
+    void
+    update_state();
+
+    /** Saves and restores the nodes' state (for cut-backs). */
+    void
+    store_state();
+    void
+    restore_state();
 
     unsigned int
     n_active() const;
@@ -85,18 +95,11 @@ namespace glissade
     unsigned int
     body_index(const Body *body) const;
 
-    /**
-     * K_b^-1 e_dof for a dof the contact maps touch, computed once per
-     * Newton iteration however many nodes share it (one back-substitution
-     * per contact dof and iteration).
-     */
-    const Vector<double> &
-    column(const unsigned int body, const types::global_dof_index dof);
-
     const std::vector<std::unique_ptr<Body>> &bodies;
     TimerOutput                              &timer;
-    std::vector<std::map<types::global_dof_index, Vector<double>>> columns;
     std::vector<std::unique_ptr<ContactPair>> pairs;
+    BiPotentialSolver::Settings               solver_settings;
     BiPotentialSolver::Result                 result;
+    std::vector<std::vector<ContactNode>>     stored_nodes;
   };
 } // namespace glissade

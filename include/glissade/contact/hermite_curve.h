@@ -69,9 +69,10 @@ namespace glissade
                       Point       &low,
                       Point       &high) const override;
 
-    void weights(unsigned int segment,
-                 double       s,
-                 NodeWeights &node_weights) const override;
+    void weights_and_derivatives(
+      unsigned int               segment,
+      double                     s,
+      NodeWeightsAndDerivatives &weights) const override;
 
     /**
      * {H10(s), H11(s)}: the coefficients of the tangents d_a, d_b of the
@@ -79,6 +80,10 @@ namespace glissade
      */
     std::array<double, 2> tangent_weights(unsigned int segment,
                                           double       s) const;
+
+    /** {H10(s), H11(s), H10'(s), H11'(s)}. */
+    std::array<double, 4>
+    tangent_weights_and_derivatives(unsigned int segment, double s) const;
 
   private:
     /** Throws unless there is one tangent pair per segment. */

@@ -40,9 +40,10 @@ namespace glissade
                       Point       &low,
                       Point       &high) const override;
 
-    void weights(unsigned int segment,
-                 double       s,
-                 NodeWeights &node_weights) const override;
+    void weights_and_derivatives(
+      unsigned int               segment,
+      double                     s,
+      NodeWeightsAndDerivatives &weights) const override;
 
   private:
     /** The p + 1 points of a segment, in order of s. */

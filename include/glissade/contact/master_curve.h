@@ -158,15 +158,38 @@ namespace glissade
                           Point       &first_derivative,
                           Point       &second_derivative) const;
 
+    /** A weight phi_j(s) of node j and its derivative d phi_j / ds. */
+    struct WeightAndDerivative
+    {
+      unsigned int node;
+      double       value;
+      double       derivative;
+    };
+    using NodeWeightsAndDerivatives = std::vector<WeightAndDerivative>;
+
     /**
      * Coefficients phi_j such that c(segment, s) = sum_j phi_j node_j, the
      * weights that hand a contact force at c(segment, s) to the master nodes.
      * Only entries with |phi_j| > 1e-14 max_k |phi_k| are returned, sorted by
-     * node index. The vector is cleared first.
+     * node index. The vector is cleared first. (Filters
+     * weights_and_derivatives().)
      */
-    virtual void weights(unsigned int segment,
-                         double       s,
-                         NodeWeights &node_weights) const = 0;
+    void weights(unsigned int segment,
+                 double       s,
+                 NodeWeights &node_weights) const;
+
+    /**
+     * The weights phi_j and their derivatives d phi_j / ds, so that also
+     * c'(segment, s) = sum_j phi_j' node_j: what the consistent
+     * linearisation of the contact needs (the master point slides along the
+     * curve, theory.md section 4.2). An entry is kept if its value or its
+     * derivative is above 1e-14 times the largest of its kind; sorted by
+     * node index; the vector is cleared first.
+     */
+    virtual void
+    weights_and_derivatives(unsigned int               segment,
+                            double                     s,
+                            NodeWeightsAndDerivatives &weights) const = 0;
 
     /**
      * The two linear hat weights {(node a, 1-s), (node b, s)} of the straight
@@ -290,6 +313,13 @@ namespace glissade
      * correct but slower.
      */
     void cache_bounding_boxes();
+
+    /**
+     * Drops the entries that are insignificant in both value and
+     * derivative (1e-14 of the largest of their kind) and sorts by node.
+     */
+    static void
+    keep_significant(NodeWeightsAndDerivatives &weights);
 
     /** Segment before / after a segment: false if none (open ends). */
     bool previous_segment(unsigned int segment, unsigned int &previous) const;

@@ -138,7 +138,6 @@ namespace glissade
     std::string surface        = "faceted"; // faceted | bspline | hermite
     std::string force_transfer = "segment"; // B-spline: segment | spline
     double      alert_distance = 0.;
-    std::string frame_update   = "iteration"; // iteration | increment
     double      friction       = 0.;
     double      beta           = 1.;
     double      tolerance      = 1e-10;

@@ -126,9 +126,9 @@ namespace glissade
     timing_table() const;
 
   private:
-    /** One Newton solve from the stored state to t; false if it failed. */
+    /** One Newton solve from the stored state (at t_start) to t; false if it failed. */
     bool
-    newton(const double t);
+    newton(const double t_start, const double t);
 
     bool
     advance(const double       t_start,

@@ -1,0 +1,106 @@
+#pragma once
+
+#include <glissade/contact/master_chain.h>
+#include <glissade/contact/master_curve.h>
+#include <glissade/contact/master_surface.h>
+
+#include <memory>
+#include <string>
+
+namespace glissade
+{
+  class Body;
+
+  /**
+   * The common part of the deformable master surfaces: a chain of master
+   * nodes (MasterChain) seen through a MasterCurve built from their current
+   * positions. The point of a slave node is the curve's closest point; its
+   * dof weights are the curve's node weights (with their derivatives along
+   * the curve) on the nodes' value dofs.
+   *
+   * A derived class creates the curve (set `curve` in its constructor) and
+   * may add what its curve needs beyond the node positions (the Hermite
+   * edge's tangents: rebuild(), add_kinematics(), dofs()), hand the
+   * reaction to other dofs than the kinematic ones (set_forces()), or let a
+   * node keep its segment beyond the segment's ends (extension()).
+   */
+  class CurveSurface : public MasterSurface
+  {
+  public:
+    CurveSurface(const Body &master, const std::string &boundary,
+                 const std::string &entry);
+
+    void
+    update(double step_start_time, double time) override;
+
+    SurfacePoint
+    project(const dealii::Point<2> &x, const SegmentHint &keep) const override;
+
+    std::vector<dealii::types::global_dof_index>
+    dofs() const override;
+
+    bool
+    is_rigid() const override
+    {
+      return false;
+    }
+
+    const MasterCurve &
+    master_curve() const
+    {
+      return *curve;
+    }
+
+    const MasterChain &
+    master_chain() const
+    {
+      return chain;
+    }
+
+  protected:
+    /** Rebuilds the curve from the current node positions. */
+    virtual void
+    rebuild(const std::vector<MasterCurve::Point> &positions);
+
+    /** Entries of c(s) beyond the node weights (none by default). */
+    virtual void
+    add_kinematics(unsigned int segment, double s,
+                   std::vector<SurfaceWeight> &kinematics) const;
+
+    /** The dofs that receive the reaction (by default the kinematic ones). */
+    virtual void
+    set_forces(SurfacePoint &point) const;
+
+    /**
+     * How far past its ends (in units of s) a node may keep its segment
+     * within an increment: 0 for smooth curves, where the neighbouring
+     * segment continues the curve.
+     */
+    virtual double
+    extension() const
+    {
+      return 0.;
+    }
+
+    const Body                  &master;
+    const MasterChain            chain;
+    std::unique_ptr<MasterCurve> curve;
+
+  private:
+    /** The point at (segment, s) for the slave position x. */
+    SurfacePoint
+    point_at(const dealii::Point<2> &x, unsigned int segment, double s) const;
+
+    /**
+     * Orthogonal projection on one segment by Newton from s; false if s
+     * leaves [-margin, 1 + margin].
+     */
+    bool
+    project_on_segment(const dealii::Point<2> &x, unsigned int segment,
+                       double &s, double margin) const;
+
+    /** The turn of the bisecting normal at a corner node. */
+    void
+    set_vertex_rotation(SurfacePoint &point) const;
+  };
+} // namespace glissade

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * One master dof's share in the point of the master surface under a
+   * slave node: component `component` of the surface point c(s) contains
+   * `value` times the dof's displacement, and c'(s) contains `derivative`
+   * (= d value / ds) times it. The same form hands the reaction to the
+   * dofs (then value is the share of the force).
+   */
+  struct SurfaceWeight
+  {
+    dealii::types::global_dof_index dof;
+    unsigned int                    component;
+    double                          value;
+    double                          derivative;
+  };
+
+  /**
+   * Where a slave node meets a master surface, with what the consistent
+   * linearisation needs (theory.md, section 4.2): the curve's first two
+   * derivatives at the point and the dof weights with their derivatives
+   * along the curve.
+   */
+  struct SurfacePoint
+  {
+    /** False if the node has no counterpart (beyond an open end). */
+    bool valid = false;
+
+    /** Segment and local coordinate s (in [0, 1], or a faceted extension). */
+    int    segment = -1;
+    double s       = 0.;
+
+    /** c(s), the unit tangent t = c'/|c'| and n = e3 x t (out of the master). */
+    dealii::Point<2>     point;
+    dealii::Tensor<1, 2> tangent, normal;
+
+    /** c'(s) and c''(s). */
+    dealii::Tensor<1, 2> first_derivative, second_derivative;
+
+    /** (x - c) . n for the slave node x. */
+    double gap = 0.;
+
+    /**
+     * The point is a corner node of the master curve (a convex vertex of a
+     * faceted master, see MasterCurve::Projection::on_vertex): it does not
+     * slide, and the normal bisects the corner; vertex_rotation gives the
+     * normal's turn, theta = sum w u (delta t = theta n, delta n = -theta t).
+     */
+    bool                       on_vertex = false;
+    std::vector<SurfaceWeight> vertex_rotation;
+
+    /** The master dofs in c(s) (value) and c'(s) (derivative). */
+    std::vector<SurfaceWeight> kinematics;
+
+    /**
+     * The master dofs that receive the reaction and their shares: the same
+     * as kinematics, or the two nodes of the straight segment under a
+     * B-spline point (the paper's hand-over), with the shares' derivatives
+     * along the curve.
+     */
+    std::vector<SurfaceWeight> forces;
+
+    /**
+     * The displacement of the master's material point since the start of
+     * the increment that no dof carries: a rigid obstacle's prescribed
+     * translation (zero for a deformable master, whose motion is in its
+     * dofs). The slip is measured against it.
+     */
+    dealii::Tensor<1, 2> motion_since_step_start;
+  };
+
+  /**
+   * A node's segment to keep (segment -1: none). `held`: the node has
+   * already switched segments back and forth within the increment, and
+   * keeps this one along its extension (up to half its length past either
+   * end) until the increment ends.
+   */
+  struct SegmentHint
+  {
+    int    segment = -1;
+    double s       = 0.;
+    bool   held    = false;
+  };
+
+  /**
+   * A master surface of a contact pair: a deformable body's boundary seen
+   * through a smoothing (faceted, B-spline, Hermite edges) or a rigid
+   * analytic obstacle. One class per kind, registered in
+   * SurfaceRegistry (surface_registry.cc); doc/adding_a_surface.md.
+   *
+   * A surface owns its data (the chain of master nodes and their dofs, the
+   * curve) and knows how its points depend on the master dofs. What is the
+   * same for every surface (gap, slip, their derivatives, the contact
+   * tangent) is written once, in contact_linearization.cc.
+   */
+  class MasterSurface
+  {
+  public:
+    virtual ~MasterSurface() = default;
+
+    /**
+     * The surface at the current state: rebuilt from the master body's
+     * current displacement, or moved to the obstacle's position at `time`.
+     * `step_start_time` is the time of the increment's starting state.
+     */
+    virtual void
+    update(double step_start_time, double time) = 0;
+
+    /**
+     * The counterpart of the point x. With a `keep` hint (the segment and
+     * s of the node's last projection in this increment), the node keeps
+     * that segment while it still has an orthogonal projection there (for a
+     * faceted master: on the segment's extension, up to half its length
+     * past either end), so that the contact constraint does not jump
+     * between two equally close segments from one Newton iteration to the
+     * next.
+     */
+    virtual SurfacePoint
+    project(const dealii::Point<2> &x, const SegmentHint &keep = {}) const = 0;
+
+    /**
+     * Every master dof that a point's weights can ever contain (empty for
+     * a rigid obstacle): the body eliminates them last.
+     */
+    virtual std::vector<dealii::types::global_dof_index>
+    dofs() const = 0;
+
+    /** True for an obstacle without dofs. */
+    virtual bool
+    is_rigid() const = 0;
+  };
+} // namespace glissade

@@ -1,0 +1,279 @@
+#include <glissade/body/body.h>
+#include <glissade/contact/condensed_problem.h>
+
+#include <algorithm>
+#include <map>
+
+extern "C" void
+dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
+        int *info);
+extern "C" void
+dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a,
+        const int *lda, const int *ipiv, double *b, const int *ldb, int *info);
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** v . u for a vector over the dofs of a pair's bodies. */
+    double
+    dot(const PairVector &v, const std::vector<Vector<double>> &u)
+    {
+      double sum = 0.;
+      for (const auto &e : *v.coefficients)
+        sum += e.value * u[v.bodies[e.body]](e.dof);
+      return sum;
+    }
+
+    /** u += factor v. */
+    void
+    add(const PairVector &v, const double factor, std::vector<Vector<double>> &u)
+    {
+      for (const auto &e : *v.coefficients)
+        u[v.bodies[e.body]](e.dof) += factor * e.value;
+    }
+  } // namespace
+
+
+
+  CondensedProblem::CondensedProblem(
+    const std::vector<Vector2>               &initial,
+    const std::vector<PairVector>            &forces,
+    const std::vector<PairVector>            &rows,
+    const std::vector<RankOneTerm>           &terms,
+    const std::vector<PairVector>            &extra_load,
+    const std::vector<std::unique_ptr<Body>> &bodies,
+    const std::vector<Vector<double>>        &predictor)
+    : forces(forces)
+    , terms(terms)
+    , extra_load(extra_load)
+    , bodies(bodies)
+    , n(forces.size() / 2)
+    , n_terms(terms.size())
+  {
+    // Rows: R (2n), then V (one per term). Loads: F (2n), U (one per
+    // term), then the extra load a (one column, a sum).
+    std::vector<PairVector> all_rows(rows);
+    std::vector<PairVector> all_loads(forces);
+    for (const auto &term : terms)
+      {
+        all_rows.push_back(term.row);
+        all_loads.push_back(term.load);
+      }
+    const std::size_t n_rows = all_rows.size(), n_loads = all_loads.size() + 1;
+    std::vector<double> P(n_rows * n_loads, 0.);
+    add_compliance_products(all_rows, all_loads, P);
+    if (!extra_load.empty())
+      {
+        // The column of a: the sum of its parts' products.
+        std::vector<double> Pa(n_rows * extra_load.size(), 0.);
+        add_compliance_products(all_rows, extra_load, Pa);
+        for (std::size_t j = 0; j < extra_load.size(); ++j)
+          for (std::size_t i = 0; i < n_rows; ++i)
+            P[i + (n_loads - 1) * n_rows] += Pa[i + j * n_rows];
+      }
+    const auto product = [&](const std::size_t i, const std::size_t j) {
+      return P[i + j * n_rows];
+    };
+
+    base_compliance.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      base_compliance[k] = product(2 * k + 1, 2 * k + 1);
+
+    // Every row applied to d = du_lib + K^-1 a.
+    std::vector<double> row_of_d(n_rows);
+    for (std::size_t i = 0; i < n_rows; ++i)
+      row_of_d[i] = dot(all_rows[i], predictor) + product(i, n_loads - 1);
+
+    // S = I - V C U, X = S^-1 V C F, y = S^-1 V d.
+    const int t = n_terms, size = 2 * n;
+    S.assign(std::size_t(t) * t, 0.);
+    X.assign(std::size_t(t) * size, 0.);
+    y.assign(t, 0.);
+    for (int i = 0; i < t; ++i)
+      {
+        for (int j = 0; j < t; ++j)
+          S[i + std::size_t(j) * t] =
+            (i == j ? 1. : 0.) - product(size + i, size + j);
+        for (int j = 0; j < size; ++j)
+          X[i + std::size_t(j) * t] = product(size + i, j);
+        y[i] = row_of_d[size + i];
+      }
+    if (t > 0)
+      {
+        pivots.resize(t);
+        int info = 0;
+        dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
+        is_regular = (info == 0);
+        if (!is_regular)
+          return;
+        const int one = 1;
+        dgetrs_("N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
+        dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
+      }
+
+    // W = R C F + (R C U) X and u_free = u_0 + R d + (R C U) y.
+    W.reinit(n);
+    std::vector<double> column(size);
+    for (int j = 0; j < size; ++j)
+      {
+        for (int i = 0; i < size; ++i)
+          column[i] = product(i, j);
+        for (int k = 0; k < t; ++k)
+          if (const double x = X[k + std::size_t(j) * t]; x != 0.)
+            for (int i = 0; i < size; ++i)
+              column[i] += product(i, size + k) * x;
+        const unsigned int l = j / 2, c = j % 2;
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            ComplianceMatrix::Block block = {{{{0., 0.}}, {{0., 0.}}}};
+            block[0][c] = column[2 * k];
+            block[1][c] = column[2 * k + 1];
+            W.add_block(k, l, block);
+          }
+      }
+    u_free = initial;
+    for (int i = 0; i < size; ++i)
+      {
+        double value = row_of_d[i];
+        for (int k = 0; k < t; ++k)
+          value += product(i, size + k) * y[k];
+        u_free[i / 2][i % 2] += value;
+      }
+  }
+
+
+
+  void
+  CondensedProblem::add_compliance_products(
+    const std::vector<PairVector> &all_rows,
+    const std::vector<PairVector> &all_loads,
+    std::vector<double>           &products) const
+  {
+    const std::size_t n_rows = all_rows.size();
+    struct Local
+    {
+      unsigned int index;
+      double       value;
+    };
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        // The rows and loads on body b, by local index among the body's
+        // row dofs and load dofs.
+        std::map<types::global_dof_index, unsigned int> row_index, column_index;
+        for (const auto &v : all_rows)
+          for (const auto &e : *v.coefficients)
+            if (v.bodies[e.body] == b)
+              row_index.emplace(e.dof, 0);
+        for (const auto &v : all_loads)
+          for (const auto &e : *v.coefficients)
+            if (v.bodies[e.body] == b)
+              column_index.emplace(e.dof, 0);
+        if (row_index.empty() || column_index.empty())
+          continue;
+        std::vector<types::global_dof_index> row_dofs, column_dofs;
+        for (auto &[dof, i] : row_index)
+          {
+            i = row_dofs.size();
+            row_dofs.push_back(dof);
+          }
+        for (auto &[dof, i] : column_index)
+          {
+            i = column_dofs.size();
+            column_dofs.push_back(dof);
+          }
+        const auto local = [&](const PairVector &v,
+                               std::map<types::global_dof_index, unsigned int> &index) {
+          std::vector<Local> result;
+          for (const auto &e : *v.coefficients)
+            if (v.bodies[e.body] == b)
+              result.push_back({index[e.dof], e.value});
+          return result;
+        };
+        std::vector<std::pair<std::size_t, std::vector<Local>>> rows_here;
+        for (std::size_t i = 0; i < n_rows; ++i)
+          if (auto l = local(all_rows[i], row_index); !l.empty())
+            rows_here.emplace_back(i, std::move(l));
+
+        std::vector<double> C;
+        bodies[b]->compliance_block(row_dofs, column_dofs, C);
+
+        // For each load: T = C load over the row dofs, then each row . T.
+        const std::size_t   m = row_dofs.size();
+        std::vector<double> T(m);
+        for (std::size_t j = 0; j < all_loads.size(); ++j)
+          {
+            const auto load = local(all_loads[j], column_index);
+            if (load.empty())
+              continue;
+            std::fill(T.begin(), T.end(), 0.);
+            for (const auto &e : load)
+              {
+                const double *column = &C[std::size_t(e.index) * m];
+                for (std::size_t r = 0; r < m; ++r)
+                  T[r] += e.value * column[r];
+              }
+            for (const auto &[i, row] : rows_here)
+              {
+                double value = 0.;
+                for (const auto &e : row)
+                  value += e.value * T[e.index];
+                products[i + j * n_rows] += value;
+              }
+          }
+      }
+  }
+
+
+
+  std::vector<CondensedProblem::Vector2>
+  CondensedProblem::displacement(const std::vector<Vector2> &r) const
+  {
+    std::vector<Vector2> u = u_free;
+    W.add_product(r, u);
+    return u;
+  }
+
+
+
+  void
+  CondensedProblem::correct(const std::vector<Vector2>  &r,
+                            std::vector<Vector<double>> &increments,
+                            std::vector<Vector<double>> &contact_forces) const
+  {
+    // z = y + X r.
+    const int           t = n_terms;
+    std::vector<double> z(y);
+    for (unsigned int l = 0; l < n; ++l)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (r[l][c] != 0.)
+          for (int i = 0; i < t; ++i)
+            z[i] += X[i + std::size_t(2 * l + c) * t] * r[l][c];
+
+    std::vector<Vector<double>> loads(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        contact_forces[b].reinit(bodies[b]->n_dofs());
+        loads[b].reinit(bodies[b]->n_dofs());
+      }
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        add(forces[2 * k + c], r[k][c], contact_forces);
+    for (int i = 0; i < t; ++i)
+      add(terms[i].load, z[i], loads);
+    for (const auto &a : extra_load)
+      add(a, 1., loads);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        loads[b] += contact_forces[b];
+        if (loads[b].linfty_norm() > 0.)
+          {
+            Vector<double> correction;
+            bodies[b]->solve_homogeneous(loads[b], correction);
+            increments[b] += correction;
+          }
+      }
+  }
+} // namespace glissade

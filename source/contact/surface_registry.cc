@@ -1,0 +1,93 @@
+#include <glissade/base/input_error.h>
+#include <glissade/contact/surface_registry.h>
+#include <glissade/scene/scene_description.h>
+
+namespace glissade
+{
+  // Each surface's factory, defined in the surface's own file.
+  std::unique_ptr<MasterSurface>
+  make_faceted_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_bspline_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_hermite_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_line_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_disk_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_hole_obstacle(const SurfaceContext &);
+
+
+
+  const std::vector<SurfaceRegistry::Entry> &
+  SurfaceRegistry::entries()
+  {
+    // One line per surface.
+    static const std::vector<Entry> list = {
+      {"faceted",
+       Kind::deformable,
+       "the element edges (the paper's Q4)",
+       make_faceted_surface},
+      {"bspline",
+       Kind::deformable,
+       "cubic uniform interpolating B-spline through the master nodes, "
+       "closed if the boundary is",
+       make_bspline_surface},
+      {"hermite",
+       Kind::deformable,
+       "the C1 edges of a master body of Hermite elements",
+       make_hermite_surface},
+      {"line", Kind::rigid, "the half-plane behind a line", make_line_obstacle},
+      {"disk", Kind::rigid, "a solid disk", make_disk_obstacle},
+      {"hole",
+       Kind::rigid,
+       "the outside of a circular hole",
+       make_hole_obstacle},
+    };
+    return list;
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  SurfaceRegistry::create(const SurfaceContext &context)
+  {
+    const Kind kind = context.master ? Kind::deformable : Kind::rigid;
+    const std::string &name =
+      kind == Kind::deformable ? context.description.surface :
+                                 context.description.obstacle;
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.name == name)
+        return entry.create(context);
+    throw InputError(context.description.entry +
+                       (kind == Kind::deformable ? "/Surface" : "/Obstacle/Type"),
+                     "unknown surface '" + name + "' (known: " +
+                       names_as_pattern(kind) + ")");
+  }
+
+
+
+  std::string
+  SurfaceRegistry::names_as_pattern(const Kind kind)
+  {
+    std::string names;
+    for (const auto &entry : entries())
+      if (entry.kind == kind)
+        names += (names.empty() ? "" : "|") + entry.name;
+    return names;
+  }
+
+
+
+  std::string
+  SurfaceRegistry::documentation(const Kind kind)
+  {
+    std::string text;
+    for (const auto &entry : entries())
+      if (entry.kind == kind)
+        text += (text.empty() ? "" : "; ") + entry.name + ": " +
+                entry.description;
+    return text + ".";
+  }
+} // namespace glissade

@@ -1,0 +1,276 @@
+// The consistent linearisation of the contact, against finite differences:
+// for every master kind and every law (frictionless, stick, slip), the
+// contact tangent assembled from the nodes' linearisation equals the
+// central difference of the contact forces F(U) = sum_k H_k(U)^T Q_k(U) r_k
+// at fixed reactions, and the gap and slip rows equal the differences of
+// the gap and the slip. The configuration is distorted (a curved master,
+// slave nodes off the master's nodes, a slip since the increment began).
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include "test_tools.h"
+
+#include <cmath>
+#include <map>
+
+using namespace glissade;
+using namespace glissade_tests;
+
+namespace
+{
+  std::string
+  block(const std::string &name, const std::string &corner_1,
+        const std::string &corner_2, const std::string &subdivisions,
+        const std::string &space)
+  {
+    return "subsection Body " + name +
+           "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
+           corner_1 + "\n  set Corner 2 = " + corner_2 +
+           "\n  set Subdivisions = " + subdivisions +
+           "\n end\n subsection Element\n  set Space = " + space +
+           "\n end\n subsection Material\n  set Young modulus = 1000\n end\n"
+           " subsection Boundary conditions\n  set Fixed = left: x\n end\nend\n";
+  }
+
+  /** A slave block on a master block, or on a rigid obstacle. */
+  std::string
+  scene(const std::string &master)
+  {
+    std::string text = "subsection Output\n set Progress = false\nend\n";
+    text += block("upper", "0, 0.5", "1, 1", "6, 2", "q1");
+    std::string contact = "subsection Contact interface\n"
+                          " set Slave body = upper\n set Slave boundary = bottom\n"
+                          " set Alert distance = 10\n";
+    if (master == "line" || master == "disk" || master == "hole")
+      {
+        text += "subsection Scene\n set Bodies = upper\n"
+                " set Contact pairs = interface\nend\n";
+        contact += " subsection Obstacle\n  set Type = " + master +
+                   "\n  set Motion = 0.013*t, -0.004*t\n";
+        if (master == "line")
+          contact += "  set Point = 0, 0.49\n  set Normal = 0.1, 1\n";
+        else if (master == "disk")
+          contact += "  set Point = 0.5, -1.51\n  set Radius = 2\n";
+        else
+          contact += "  set Point = 0.5, 5.49\n  set Radius = 5\n";
+        contact += " end\n";
+      }
+    else
+      {
+        const bool hermite = master == "hermite";
+        text += "subsection Scene\n set Bodies = upper, lower\n"
+                " set Contact pairs = interface\nend\n";
+        text += block("lower", "0, 0", "1, 0.5", "4, 2", hermite ? "hermite" : "q1");
+        contact += " set Master body = lower\n set Master boundary = top\n";
+        if (master == "faceted" || hermite)
+          contact += " set Surface = " + master + "\n";
+        else
+          contact += " set Surface = bspline\n set Force transfer = " +
+                     std::string(master == "bspline_segment" ? "segment" : "spline") +
+                     "\n";
+      }
+    return text + contact + "end\n";
+  }
+
+  /**
+   * A smooth displacement field on a body's dofs: every value dof gets a
+   * function of its node's position, every other dof (Hermite
+   * derivatives) a small deterministic value.
+   */
+  Vector<double>
+  distortion(const Body &body, const double shift)
+  {
+    Vector<double> u(body.n_dofs());
+    for (unsigned int i = 0; i < u.size(); ++i)
+      u(i) = 0.02 * std::sin(1.7 * i + 0.3);
+    const auto &vertices = body.triangulation().get_vertices();
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      {
+        const auto d =
+          BoundaryConditions::vertex_dofs(body.dof_handler(), body.space(), v);
+        const double x = vertices[v][0], y = vertices[v][1];
+        u(d[0]) = shift + 0.01 * std::sin(3. * x + 2. * y);
+        u(d[1]) = 0.03 * std::cos(2.5 * x) - 0.01 * y;
+      }
+    return u;
+  }
+
+  void
+  check_contact_tangent(const std::string &master, const std::string &law)
+  {
+    Simulation   simulation(SceneReader::read_string(scene(master), master));
+    ContactPair &pair = *simulation.contact().contact_pairs()[0];
+    std::array<Body *, 2> bodies = {{&pair.slave(), pair.master()}};
+
+    // The increment starts from U_0 = 0.3 distortion and is at U = the
+    // distortion (and the slave shifted), so that there is a slip.
+    for (unsigned int b = 0; b < 2; ++b)
+      if (bodies[b])
+        {
+          Vector<double> u = distortion(*bodies[b], b == 0 ? 0.04 : 0.);
+          Vector<double> u0(u);
+          u0 *= 0.3;
+          bodies[b]->update(u0);
+          bodies[b]->store_state();
+          u -= u0;
+          bodies[b]->update(u);
+        }
+    pair.begin_step(0., 1.);
+
+    // The reactions: frictionless (r_t = 0), stick (|r_t| < mu r_n) or
+    // slip (|r_t| = mu r_n, mu = 0.3), different at every node.
+    unsigned int n_active = 0;
+    for (auto &node : pair.nodes())
+      if (node.active)
+        {
+          const double r_n = 1. + 0.4 * std::sin(1.3 * n_active);
+          const double r_t = law == "frictionless" ? 0. :
+                             law == "stick" ? 0.1 * r_n * std::cos(2.1 * n_active) :
+                                              (n_active % 2 ? 0.3 : -0.3) * r_n;
+          node.reaction = {{r_t, r_n}};
+          ++n_active;
+        }
+    pair.update_geometry();
+    check(n_active >= 3, "at least three active nodes");
+
+    // The dofs the contact touches, and the assembled tangent over them.
+    std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int> index;
+    const auto add = [&](const DofVector &v) {
+      for (const auto &e : v)
+        index.emplace(std::make_pair(e.body, e.dof), 0);
+    };
+    for (const auto &node : pair.nodes())
+      if (node.active)
+        for (const DofVector *v :
+             {&node.linearization.gap_row, &node.linearization.slip_row,
+              &node.linearization.sliding_row, &node.linearization.rotation_row,
+              &node.linearization.tangential_force,
+              &node.linearization.normal_force})
+          add(*v);
+    std::vector<std::pair<unsigned int, types::global_dof_index>> dofs;
+    for (auto &[key, i] : index)
+      {
+        i = dofs.size();
+        dofs.push_back(key);
+      }
+    const unsigned int  m = dofs.size();
+    FullMatrix<double>  tangent(m, m), difference(m, m);
+    FullMatrix<double>  gap_rows(n_active, m), gap_difference(n_active, m);
+    FullMatrix<double>  slip_rows(n_active, m), slip_difference(n_active, m);
+    unsigned int        k = 0;
+    for (const auto &node : pair.nodes())
+      if (node.active)
+        {
+          const auto &l = node.linearization;
+          for (const auto &[load, row] :
+               {std::make_pair(&l.sliding_load, &l.sliding_row),
+                std::make_pair(&l.rotation_load, &l.rotation_row)})
+            for (const auto &a : *load)
+              for (const auto &b : *row)
+                tangent(index[{a.body, a.dof}], index[{b.body, b.dof}]) +=
+                  a.value * b.value;
+          for (const auto &e : l.gap_row)
+            gap_rows(k, index[{e.body, e.dof}]) += e.value;
+          for (const auto &e : l.slip_row)
+            slip_rows(k, index[{e.body, e.dof}]) += e.value;
+          ++k;
+        }
+
+    // Central differences of F, g and u_t, the nodes keeping their segment.
+    const double h = 1e-6;
+    const auto   state = [&](std::vector<double> &forces,
+                           std::vector<double> &gaps,
+                           std::vector<double> &slips) {
+      pair.update_geometry();
+      const auto f = pair.contact_forces();
+      forces.assign(m, 0.);
+      for (unsigned int i = 0; i < m; ++i)
+        forces[i] = f[dofs[i].first](dofs[i].second);
+      gaps.clear();
+      slips.clear();
+      for (const auto &node : pair.nodes())
+        if (node.active)
+          {
+            gaps.push_back(node.linearization.gap);
+            slips.push_back(node.linearization.slip);
+          }
+    };
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        Body          &body = *bodies[dofs[j].first];
+        Vector<double> step(body.n_dofs());
+        step(dofs[j].second) = h;
+        std::vector<double> f_plus, f_minus, g_plus, g_minus, s_plus, s_minus;
+        body.update(step);
+        state(f_plus, g_plus, s_plus);
+        step *= -2.;
+        body.update(step);
+        state(f_minus, g_minus, s_minus);
+        step *= -0.5;
+        body.update(step);
+        check(g_plus.size() == n_active && g_minus.size() == n_active,
+              "a node left the contact under the perturbation");
+        for (unsigned int i = 0; i < m; ++i)
+          difference(i, j) = (f_plus[i] - f_minus[i]) / (2. * h);
+        for (unsigned int i = 0; i < n_active; ++i)
+          {
+            gap_difference(i, j)  = (g_plus[i] - g_minus[i]) / (2. * h);
+            slip_difference(i, j) = (s_plus[i] - s_minus[i]) / (2. * h);
+          }
+      }
+    pair.update_geometry();
+
+    const auto compare = [&](const FullMatrix<double> &assembled,
+                             const FullMatrix<double> &differenced,
+                             const std::string        &what) {
+      double error = 0., largest = 0.;
+      for (unsigned int i = 0; i < assembled.m(); ++i)
+        for (unsigned int j = 0; j < assembled.n(); ++j)
+          {
+            error   = std::max(error, std::abs(assembled(i, j) - differenced(i, j)));
+            largest = std::max(largest, std::abs(differenced(i, j)));
+          }
+      std::cout << "  " << master << ", " << law << ": " << what << " ("
+                << assembled.m() << " x " << assembled.n()
+                << "): largest entry " << largest
+                << ", largest difference to the finite differences " << error
+                << " (relative " << error / largest << ")" << std::endl;
+      // A rigid line's contact tangent is zero: both must be, exactly.
+      check(error <= 1e-6 * largest || error == 0.,
+            what + " differs from finite differences");
+    };
+    std::cout << "  " << n_active << " active nodes, " << m << " dofs" << std::endl;
+    compare(tangent, difference, "contact tangent dF/dU at fixed r");
+    compare(gap_rows, gap_difference, "gap rows dg/dU");
+    compare(slip_rows, slip_difference, "slip rows du_t/dU");
+  }
+} // namespace
+
+#define CONTACT_TANGENT_TEST(master, law)                  \
+  GLISSADE_TEST(contact_tangent_##master##_##law)          \
+  {                                                        \
+    check_contact_tangent(#master, #law);                  \
+  }
+
+CONTACT_TANGENT_TEST(faceted, frictionless)
+CONTACT_TANGENT_TEST(faceted, stick)
+CONTACT_TANGENT_TEST(faceted, slip)
+CONTACT_TANGENT_TEST(bspline_segment, frictionless)
+CONTACT_TANGENT_TEST(bspline_segment, stick)
+CONTACT_TANGENT_TEST(bspline_segment, slip)
+CONTACT_TANGENT_TEST(bspline_spline, frictionless)
+CONTACT_TANGENT_TEST(bspline_spline, stick)
+CONTACT_TANGENT_TEST(bspline_spline, slip)
+CONTACT_TANGENT_TEST(hermite, frictionless)
+CONTACT_TANGENT_TEST(hermite, stick)
+CONTACT_TANGENT_TEST(hermite, slip)
+CONTACT_TANGENT_TEST(line, frictionless)
+CONTACT_TANGENT_TEST(line, stick)
+CONTACT_TANGENT_TEST(line, slip)
+CONTACT_TANGENT_TEST(disk, frictionless)
+CONTACT_TANGENT_TEST(disk, stick)
+CONTACT_TANGENT_TEST(disk, slip)
+CONTACT_TANGENT_TEST(hole, frictionless)
+CONTACT_TANGENT_TEST(hole, stick)
+CONTACT_TANGENT_TEST(hole, slip)
