@@ -2,8 +2,14 @@
 // the number of active contact nodes and the number of dofs. A strip of
 // Q4 elements is pushed onto a rigid flat, so every bottom node is active.
 // Per Newton iteration: factorisation, detection (projection), compliance
-// matrix W = H K^-1 H^T, local bi-potential solve.
+// matrix W = H K^-1 H^T, local bi-potential solve. With `faceted` or
+// `bspline` the flat is a deformable base block (the master), and the
+// cost of the contact tangent in the condensed problem is measured
+// against the factorisation.
 
+#include <deal.II/base/timer.h>
+
+#include <glissade/contact/condensed_problem.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/direct_solver.h>
 #include <glissade/solver/simulation.h>
@@ -12,25 +18,79 @@
 #include <cstdio>
 #include <string>
 
+namespace
+{
+  using namespace glissade;
+
+  /**
+   * At the converged state: the condensed problem formed with and without
+   * the contact tangent's terms, timed, against one factorisation.
+   */
+  void
+  time_contact_tangent(Simulation &simulation)
+  {
+    const auto &bodies = simulation.bodies();
+    std::vector<Vector<double>> predictor(bodies.size());
+    dealii::Timer              timer;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        bodies[b]->assemble();
+        bodies[b]->factorize();
+        bodies[b]->solve(bodies[b]->right_hand_side(), predictor[b]);
+      }
+    const double factorisation = timer.wall_time();
+    simulation.contact().update_state();
+    std::vector<ContactNode *> active;
+    ActiveNodes nodes = simulation.contact().active_nodes(active);
+    timer.restart();
+    { const CondensedProblem with(nodes, Augmentation(), bodies, predictor); }
+    const double with_tangent = timer.wall_time();
+    const std::size_t n_terms = nodes.terms.size();
+    nodes.terms.clear();
+    timer.restart();
+    { const CondensedProblem without(nodes, Augmentation(), bodies, predictor); }
+    const double without_tangent = timer.wall_time();
+    std::printf("       contact tangent at %zu active nodes (%zu rank-one "
+                "terms): condensed problem %.4f s with it, %.4f s without: "
+                "the tangent costs %.4f s, against %.4f s for the "
+                "factorisation and solve of every body\n",
+                active.size(), n_terms, with_tangent, without_tangent,
+                with_tangent - without_tangent, factorisation);
+  }
+} // namespace
+
 int
 main(int argc, char **argv)
 {
   using namespace glissade;
-  if (argc != 3 && !(argc == 4 && std::string(argv[3]) == "indenter"))
+  const std::string mode = argc == 4 ? argv[3] : "";
+  if (!(argc == 3 || (argc == 4 && (mode == "indenter" || mode == "faceted" ||
+                                    mode == "bspline"))))
     {
-      std::fprintf(stderr,
-                   "usage: glissade_contact_benchmark <nx> <ny> [indenter]\n");
+      std::fprintf(stderr, "usage: glissade_contact_benchmark <nx> <ny> "
+                           "[indenter|faceted|bspline]\n");
       return 1;
     }
   const unsigned int nx = std::stoi(argv[1]), ny = std::stoi(argv[2]);
   // indenter: a rigid disk of radius 5 under the middle in place of the
   // flat, and a small alert distance, so that only a patch of the declared
   // bottom touches (the case where forming only the touching columns of
-  // the compliance pays).
-  const bool indenter = argc == 4;
+  // the compliance pays). faceted, bspline: a deformable base block of
+  // nx + 3 by 4 elements under the strip, its top the master surface.
+  const bool indenter   = mode == "indenter";
+  const bool deformable = mode == "faceted" || mode == "bspline";
   const double       length = 1., height = double(ny) / nx;
+  const std::string base =
+    "subsection Body base\n subsection Mesh\n  set Type = rectangle\n"
+    "  set Corner 1 = 0, " + std::to_string(-4. / nx) + "\n  set Corner 2 = " +
+    std::to_string(length) + ", 0\n  set Subdivisions = " +
+    std::to_string(nx + 3) + ", 4\n end\n subsection Material\n"
+    "  set Young modulus = 1000\n end\n subsection Boundary conditions\n"
+    "  set Fixed = bottom: all\n end\nend\n";
   const std::string  prm =
-    "subsection Scene\n set Bodies = strip\n set Contact pairs = floor\nend\n"
+    std::string("subsection Scene\n set Bodies = strip") +
+    (deformable ? ", base" : "") + "\n set Contact pairs = floor\nend\n" +
+    (deformable ? base : std::string()) +
     "subsection Body strip\n subsection Mesh\n  set Type = rectangle\n"
     "  set Corner 2 = " + std::to_string(length) + ", " + std::to_string(height) +
     "\n  set Subdivisions = " + std::to_string(nx) + ", " + std::to_string(ny) +
@@ -40,7 +100,10 @@ main(int argc, char **argv)
     "*t\n end\nend\n"
     "subsection Contact floor\n set Slave body = strip\n"
     " set Slave boundary = bottom\n" +
-    (indenter ? std::string(" set Alert distance = 1e-5\n"
+    (deformable ? " set Alert distance = 1\n set Master body = base\n"
+                  " set Master boundary = top\n set Surface = " + mode +
+                  "\n set Force transfer = spline\nend\n" :
+     indenter ? std::string(" set Alert distance = 1e-5\n"
                             " subsection Obstacle\n  set Type = disk\n"
                             "  set Point = 0.5, -5\n  set Radius = 5\n end\nend\n") :
                 std::string(" set Alert distance = 1\n"
@@ -56,7 +119,12 @@ main(int argc, char **argv)
               "factorisation %8.4f s  detection %8.5f s  compliance %8.4f s  "
               "local solve %8.4f s (%u sweeps in the last)\n",
               c.n_active(),
-              simulation.body("strip").n_dofs(),
+              [&]() {
+                unsigned int dofs = 0;
+                for (const auto &b : simulation.bodies())
+                  dofs += b->n_dofs();
+                return dofs;
+              }(),
               s.newton_iterations,
               s.factorization_seconds / n,
               s.detection_seconds / n,
@@ -76,6 +144,12 @@ main(int argc, char **argv)
               solver.cholesky().inverse_seconds / n,
               solver.cholesky().n_inverse_columns(),
               std::size_t(2 * (nx + 1)));
+
+  if (deformable)
+    {
+      time_contact_tangent(simulation);
+      return 0;
+    }
 
   // The same tangent, factorised by a bare UMFPACK LU and by Cholesky with
   // the fill-reducing ordering alone (no contact dofs last): what the

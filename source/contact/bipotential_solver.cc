@@ -127,12 +127,11 @@ namespace glissade
     }
 
     // Active-set polish: with the statuses of the current iterate fixed
-    // (open: r = 0; closed frictionless: g = 0; stick: u = 0; slip: g = 0
-    // with r_t = -mu r_n sign(u_t), the sign taken from the iterate's r_t),
-    // the contact law is a linear system in the closed nodes' reactions.
-    // Its solution is the exact answer if the statuses were right, which
-    // the caller checks with the residuals of the law. Returns false if
-    // nothing is closed or the system is singular.
+    // (BiPotentialSolver::solve_for_statuses, the slip sign taken from the
+    // iterate's r_t), the contact law is a linear system in the closed
+    // nodes' reactions. Its solution is the exact answer if the statuses
+    // were right, which the caller checks with the residuals of the law.
+    // Returns false if nothing is closed or the system is singular.
     bool
     polish(const ComplianceMatrix     &W,
            const std::vector<Vector2> &u_free,
@@ -140,57 +139,16 @@ namespace glissade
            const std::vector<Vector2> &r,
            std::vector<Vector2>       &polished)
     {
-      const unsigned int n_nodes = W.n_nodes();
-      // Unknowns: r_n of every closed node, and r_t of every stick node.
-      std::vector<int>    normal_unknown(n_nodes, -1), tangential_unknown(n_nodes, -1);
-      std::vector<double> slip_sign(n_nodes, 0.);
-      std::size_t         m = 0;
-      for (unsigned int k = 0; k < n_nodes; ++k)
+      std::vector<NodeStatus> status(r.size());
+      std::vector<double>     slip_sign(r.size(), 0.);
+      for (std::size_t k = 0; k < r.size(); ++k)
         {
-          const NodeStatus status = BiPotentialSolver::classify(r[k], mu[k]);
-          if (status == NodeStatus::open)
-            continue;
-          normal_unknown[k] = m++;
-          if (status == NodeStatus::stick)
-            tangential_unknown[k] = m++;
-          else if (mu[k] > 0.)
+          status[k] = BiPotentialSolver::classify(r[k], mu[k]);
+          if (status[k] == NodeStatus::slip && mu[k] > 0.)
             slip_sign[k] = r[k][t] >= 0. ? 1. : -1.;
         }
-      if (m == 0)
-        return false;
-      // Row of each equation: g_k = 0 in the row of r_n(k), u_t,k = 0 in
-      // the row of r_t(k).
-      std::vector<double> A(m * m, 0.), b(m, 0.);
-      for (unsigned int k = 0; k < n_nodes; ++k)
-        for (const unsigned int component : {n, t})
-          {
-            const int row = component == n ? normal_unknown[k] : tangential_unknown[k];
-            if (row < 0)
-              continue;
-            b[row] = -u_free[k][component];
-            for (unsigned int l = 0; l < n_nodes; ++l)
-              {
-                if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
-                  continue;
-                const ComplianceMatrix::Block w = W.block(k, l);
-                A[normal_unknown[l] * m + row] +=
-                  w[component][n] + slip_sign[l] * mu[l] * w[component][t];
-                if (tangential_unknown[l] >= 0)
-                  A[tangential_unknown[l] * m + row] += w[component][t];
-              }
-          }
-      if (!solve_dense(A, b, m))
-        return false;
-      polished.assign(n_nodes, Vector2{{0., 0.}});
-      for (unsigned int k = 0; k < n_nodes; ++k)
-        if (normal_unknown[k] >= 0)
-          {
-            polished[k][n] = b[normal_unknown[k]];
-            polished[k][t] = tangential_unknown[k] >= 0 ?
-                               b[tangential_unknown[k]] :
-                               slip_sign[k] * mu[k] * polished[k][n];
-          }
-      return true;
+      return BiPotentialSolver::solve_for_statuses(W, u_free, mu, status,
+                                                   slip_sign, polished);
     }
 
     double
@@ -319,6 +277,65 @@ namespace glissade
       return NodeStatus::slip;
     return NodeStatus::stick;
   }
+
+  bool
+  BiPotentialSolver::solve_for_statuses(const ComplianceMatrix        &W,
+                                        const std::vector<Vector2>    &u_free,
+                                        const std::vector<double>     &mu,
+                                        const std::vector<NodeStatus> &status,
+                                        const std::vector<double>     &slip_sign,
+                                        std::vector<Vector2>          &r)
+  {
+    const unsigned int n_nodes = W.n_nodes();
+    // Unknowns: r_n of every closed node, and r_t of every stick node.
+    std::vector<int> normal_unknown(n_nodes, -1), tangential_unknown(n_nodes, -1);
+    std::size_t      m = 0;
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        if (status[k] == NodeStatus::open)
+          continue;
+        normal_unknown[k] = m++;
+        if (status[k] == NodeStatus::stick && mu[k] > 0.)
+          tangential_unknown[k] = m++;
+      }
+    if (m == 0)
+      return false;
+    // Row of each equation: g_k = 0 in the row of r_n(k), u_t,k = 0 in
+    // the row of r_t(k); a slipping node's r_t is slip_sign mu r_n.
+    std::vector<double> A(m * m, 0.), b(m, 0.);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      for (const unsigned int component : {n, t})
+        {
+          const int row = component == n ? normal_unknown[k] : tangential_unknown[k];
+          if (row < 0)
+            continue;
+          b[row] = -u_free[k][component];
+          for (unsigned int l = 0; l < n_nodes; ++l)
+            {
+              if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
+                continue;
+              const ComplianceMatrix::Block w = W.block(k, l);
+              const double sliding = tangential_unknown[l] >= 0 ? 0. : slip_sign[l];
+              A[normal_unknown[l] * m + row] +=
+                w[component][n] + sliding * mu[l] * w[component][t];
+              if (tangential_unknown[l] >= 0)
+                A[tangential_unknown[l] * m + row] += w[component][t];
+            }
+        }
+    if (!solve_dense(A, b, m))
+      return false;
+    r.assign(n_nodes, Vector2{{0., 0.}});
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      if (normal_unknown[k] >= 0)
+        {
+          r[k][n] = b[normal_unknown[k]];
+          r[k][t] = tangential_unknown[k] >= 0 ? b[tangential_unknown[k]] :
+                                                 slip_sign[k] * mu[k] * r[k][n];
+        }
+    return true;
+  }
+
+
 
   BiPotentialSolver::Result
   BiPotentialSolver::solve(const ComplianceMatrix     &W,

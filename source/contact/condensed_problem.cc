@@ -8,6 +8,8 @@ extern "C" void
 dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
         int *info);
 extern "C" void
+dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+extern "C" void
 dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a,
         const int *lda, const int *ipiv, double *b, const int *ldb, int *info);
 
@@ -39,56 +41,72 @@ namespace glissade
 
 
   CondensedProblem::CondensedProblem(
-    const std::vector<Vector2>               &initial,
-    const std::vector<PairVector>            &forces,
-    const std::vector<PairVector>            &rows,
-    const std::vector<RankOneTerm>           &terms,
-    const std::vector<PairVector>            &extra_load,
+    const ActiveNodes                        &nodes,
+    const Augmentation                       &augmentation,
     const std::vector<std::unique_ptr<Body>> &bodies,
     const std::vector<Vector<double>>        &predictor)
-    : forces(forces)
-    , terms(terms)
-    , extra_load(extra_load)
+    : nodes(nodes)
     , bodies(bodies)
-    , n(forces.size() / 2)
-    , n_terms(terms.size())
+    , n(nodes.size())
+    , n_given(nodes.terms.size())
   {
-    // Rows: R (2n), then V (one per term). Loads: F (2n), U (one per
-    // term), then the extra load a (one column, a sum).
-    std::vector<PairVector> all_rows(rows);
-    std::vector<PairVector> all_loads(forces);
-    for (const auto &term : terms)
+    // Rows: R (2n), then V (one per term); loads: F (2n), then U. An
+    // augmented direction is a term whose row is the direction's row and
+    // whose load is the same row times -E_k (scaled below, once E_k is
+    // known from the products).
+    std::vector<PairVector> all_rows(nodes.rows);
+    std::vector<PairVector> all_loads(nodes.forces);
+    for (const auto &term : nodes.terms)
       {
         all_rows.push_back(term.row);
         all_loads.push_back(term.load);
       }
-    const std::size_t n_rows = all_rows.size(), n_loads = all_loads.size() + 1;
+    for (unsigned int k = 0; k < augmentation.directions.size(); ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (augmentation.directions[k][c])
+          {
+            augmented_row.push_back(2 * k + c);
+            augmented_gap.push_back(nodes.initial[k][c]);
+            all_rows.push_back(nodes.rows[2 * k + c]);
+            all_loads.push_back(nodes.rows[2 * k + c]);
+          }
+    const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
     std::vector<double> P(n_rows * n_loads, 0.);
     add_compliance_products(all_rows, all_loads, P);
-    if (!extra_load.empty())
-      {
-        // The column of a: the sum of its parts' products.
-        std::vector<double> Pa(n_rows * extra_load.size(), 0.);
-        add_compliance_products(all_rows, extra_load, Pa);
-        for (std::size_t j = 0; j < extra_load.size(); ++j)
-          for (std::size_t i = 0; i < n_rows; ++i)
-            P[i + (n_loads - 1) * n_rows] += Pa[i + j * n_rows];
-      }
-    const auto product = [&](const std::size_t i, const std::size_t j) {
+    const auto product = [&](const std::size_t i, const std::size_t j) -> double & {
       return P[i + j * n_rows];
     };
+    const int size = 2 * n, t = n_given + augmented_row.size();
 
-    base_compliance.resize(n);
+    // E_k = factor / (node k's normal compliance through its bodies alone),
+    // a scale at which S stays well conditioned.
+    std::vector<double> stiffness(n, 0.);
+    double              largest = 0.;
     for (unsigned int k = 0; k < n; ++k)
-      base_compliance[k] = product(2 * k + 1, 2 * k + 1);
+      {
+        const double w = product(2 * k + 1, 2 * k + 1);
+        stiffness[k]   = w > 0. ? augmentation.factor / w : 0.;
+        largest        = std::max(largest, stiffness[k]);
+      }
+    std::vector<double> rows_of_a(n_rows, 0.);
+    for (unsigned int j = 0; j < augmented_row.size(); ++j)
+      {
+        const unsigned int k = augmented_row[j] / 2;
+        augmented_scale.push_back(-(stiffness[k] > 0. ? stiffness[k] : largest));
+        for (std::size_t i = 0; i < n_rows; ++i)
+          {
+            double &value = product(i, size + n_given + j);
+            value *= augmented_scale[j];
+            rows_of_a[i] += value * augmented_gap[j];
+          }
+      }
 
     // Every row applied to d = du_lib + K^-1 a.
     std::vector<double> row_of_d(n_rows);
     for (std::size_t i = 0; i < n_rows; ++i)
-      row_of_d[i] = dot(all_rows[i], predictor) + product(i, n_loads - 1);
+      row_of_d[i] = dot(all_rows[i], predictor) + rows_of_a[i];
 
     // S = I - V C U, X = S^-1 V C F, y = S^-1 V d.
-    const int t = n_terms, size = 2 * n;
     S.assign(std::size_t(t) * t, 0.);
     X.assign(std::size_t(t) * size, 0.);
     y.assign(t, 0.);
@@ -134,7 +152,7 @@ namespace glissade
             W.add_block(k, l, block);
           }
       }
-    u_free = initial;
+    u_free = nodes.initial;
     for (int i = 0; i < size; ++i)
       {
         double value = row_of_d[i];
@@ -142,6 +160,34 @@ namespace glissade
           value += product(i, size + k) * y[k];
         u_free[i / 2][i % 2] += value;
       }
+  }
+
+
+
+  bool
+  CondensedProblem::positive_definite_on(
+    const std::vector<std::array<bool, 2>> &directions) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> index;
+    for (unsigned int k = 0; k < directions.size(); ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (directions[k][c])
+          index.emplace_back(k, c);
+    const int m = index.size();
+    if (m == 0)
+      return true;
+    std::vector<double> A(std::size_t(m) * m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        {
+          const auto [k, a] = index[i];
+          const auto [l, c] = index[j];
+          A[i + std::size_t(j) * m] =
+            0.5 * (W.block(k, l)[a][c] + W.block(l, k)[c][a]);
+        }
+    int info = 0;
+    dpotrf_("L", &m, A.data(), &m, &info);
+    return info == 0;
   }
 
 
@@ -228,23 +274,13 @@ namespace glissade
 
 
 
-  std::vector<CondensedProblem::Vector2>
-  CondensedProblem::displacement(const std::vector<Vector2> &r) const
-  {
-    std::vector<Vector2> u = u_free;
-    W.add_product(r, u);
-    return u;
-  }
-
-
-
   void
   CondensedProblem::correct(const std::vector<Vector2>  &r,
                             std::vector<Vector<double>> &increments,
                             std::vector<Vector<double>> &contact_forces) const
   {
     // z = y + X r.
-    const int           t = n_terms;
+    const int           t = n_given + augmented_row.size();
     std::vector<double> z(y);
     for (unsigned int l = 0; l < n; ++l)
       for (unsigned int c = 0; c < 2; ++c)
@@ -252,6 +288,8 @@ namespace glissade
           for (int i = 0; i < t; ++i)
             z[i] += X[i + std::size_t(2 * l + c) * t] * r[l][c];
 
+    // The loads F r + U z (+ the augmentation's right-hand side) on each
+    // body, and one solve per body.
     std::vector<Vector<double>> loads(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
@@ -260,11 +298,13 @@ namespace glissade
       }
     for (unsigned int k = 0; k < n; ++k)
       for (unsigned int c = 0; c < 2; ++c)
-        add(forces[2 * k + c], r[k][c], contact_forces);
-    for (int i = 0; i < t; ++i)
-      add(terms[i].load, z[i], loads);
-    for (const auto &a : extra_load)
-      add(a, 1., loads);
+        add(nodes.forces[2 * k + c], r[k][c], contact_forces);
+    for (unsigned int i = 0; i < n_given; ++i)
+      add(nodes.terms[i].load, z[i], loads);
+    for (unsigned int j = 0; j < augmented_row.size(); ++j)
+      add(nodes.rows[augmented_row[j]],
+          augmented_scale[j] * (z[n_given + j] + augmented_gap[j]),
+          loads);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         loads[b] += contact_forces[b];

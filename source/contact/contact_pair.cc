@@ -252,7 +252,15 @@ namespace glissade
     for (auto &node : slave_nodes)
       if (node.active && !project(node, true))
         {
-          // Slid off an open master: out of contact for the rest of the step.
+          // Slid off an open master. A node whose equilibrium is at the
+          // master's end would otherwise slide off, come back behind the
+          // master and slide off again at every iteration: it keeps the end
+          // segment, continued along the end's tangent line, for the rest
+          // of the increment (the next increment's detection drops it if it
+          // is beyond the end).
+          node.segment_switches = std::max(node.segment_switches, 2u);
+          if (project(node, true))
+            continue;
           node.active   = false;
           node.reaction = {{0., 0.}};
           node.status   = BiPotentialSolver::NodeStatus::open;

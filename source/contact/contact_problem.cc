@@ -146,178 +146,23 @@ namespace glissade
       }
 
     // The active nodes of all pairs form one condensed problem: nodes of
-    // different pairs couple through the bodies they share. Per node the
-    // forces of unit reactions and the slip and gap rows, and the terms of
-    // the contact tangent.
+    // different pairs couple through the bodies they share.
     std::vector<ContactNode *> active;
-    std::vector<double>        mu;
-    std::vector<PairVector>    forces, rows;
-    std::vector<BiPotentialSolver::Vector2> initial;
-    std::vector<RankOneTerm>   tangent_terms;
-    for (auto &pair : pairs)
-      {
-        const std::array<unsigned int, 2> b = {
-          {body_index(&pair->slave()),
-           pair->master() ? body_index(pair->master()) :
-                            numbers::invalid_unsigned_int}};
-        for (auto &node : pair->nodes())
-          if (node.active)
-            {
-              const ContactLinearization &l = node.linearization;
-              active.push_back(&node);
-              mu.push_back(pair->settings().friction);
-              initial.push_back({{l.slip, l.gap}});
-              forces.push_back({&l.tangential_force, b});
-              forces.push_back({&l.normal_force, b});
-              rows.push_back({&l.slip_row, b});
-              rows.push_back({&l.gap_row, b});
-              for (const auto &[load, row] :
-                   {std::make_pair(&l.sliding_load, &l.sliding_row),
-                    std::make_pair(&l.rotation_load, &l.rotation_row)})
-                if (!load->empty() && !row->empty())
-                  tangent_terms.push_back({{load, b}, {row, b}});
-            }
-      }
+    const ActiveNodes          nodes = active_nodes(active);
     result           = BiPotentialSolver::Result();
     result.converged = true;
     if (active.empty())
       return true;
-    const unsigned int n = active.size();
 
-    // The local problem on the condensed system, first as it is; if it
-    // fails (a tangent that is indefinite or singular without the contact
-    // that holds it), again with the closed constraints augmented
-    // (theory.md, section 4.5): exact once the augmented nodes stay closed.
-    std::vector<BiPotentialSolver::Vector2> start(n), r(n);
-    for (unsigned int k = 0; k < n; ++k)
-      start[k] = {{active[k]->reaction[0], active[k]->reaction[1]}};
-    std::vector<std::array<bool, 2>> augmented(n, {{false, false}});
-    std::vector<DofVector>           scaled;
-    std::unique_ptr<CondensedProblem> condensed;
-    std::vector<double>               stiffness(n, 0.);
-    bool                              consistent = false;
-    // (The condensed problem refers to these: they live as long as it.)
-    std::vector<RankOneTerm> terms;
-    std::vector<PairVector>  extra;
-    for (unsigned int attempt = 0; attempt < 8 && !consistent; ++attempt)
-      {
-        terms = tangent_terms;
-        extra.clear();
-        scaled.clear();
-        scaled.reserve(4 * n);
-        for (unsigned int k = 0; k < n; ++k)
-          for (unsigned int c = 0; c < 2; ++c)
-            if (augmented[k][c])
-              {
-                // K + E row (x) row and the right-hand side - E u_0 row:
-                // the constraint row . du + u_0 = 0 of a closed direction.
-                const double       E   = stiffness[k];
-                const PairVector  &row = rows[2 * k + c];
-                const double u0 = c == 0 ? active[k]->linearization.slip :
-                                           active[k]->linearization.gap;
-                scaled.push_back(*row.coefficients);
-                for (auto &e : scaled.back())
-                  e.value *= -E;
-                terms.push_back({{&scaled.back(), row.bodies}, row});
-                scaled.push_back(*row.coefficients);
-                for (auto &e : scaled.back())
-                  e.value *= -E * u0;
-                extra.push_back({&scaled.back(), row.bodies});
-              }
-
-        TimerOutput::Scope compliance_scope(timer, timing::compliance);
-        condensed = std::make_unique<CondensedProblem>(
-          initial, forces, rows, terms, extra, bodies, increments);
-        compliance_scope.stop();
-
-        bool solved = condensed->regular();
-        if (solved)
-          {
-            TimerOutput::Scope local_solve_scope(timer, timing::local_solve);
-            r      = start;
-            result = BiPotentialSolver(solver_settings)
-                       .solve(condensed->compliance(),
-                              condensed->free_displacement(), mu, r);
-            solved = result.converged;
-          }
-        else
-          {
-            result.converged = false;
-            result.message   = "the Newton matrix with the contact terms is "
-                             "singular on the contact dofs";
-          }
-
-        if (attempt == 0)
-          {
-            // The augmentation's stiffness: the inverse of each node's
-            // compliance through its bodies alone (without the contact
-            // terms), a scale at which S stays well conditioned.
-            for (unsigned int k = 0; k < n; ++k)
-              {
-                const double w = condensed->base_normal_compliance(k);
-                stiffness[k] = w > 0. ? 1. / w : 0.;
-              }
-            double largest = *std::max_element(stiffness.begin(), stiffness.end());
-            for (auto &E : stiffness)
-              if (!(E > 0.))
-                E = largest;
-          }
-
-        // Augmented directions must end closed (normal) or sticking
-        // (tangential): then the answer is exact. The others are released.
-        consistent = solved;
-        if (solved)
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              const auto status = result.status[k];
-              if (augmented[k][1] && status == BiPotentialSolver::NodeStatus::open)
-                augmented[k] = {{false, false}}, consistent = false;
-              if (augmented[k][0] && status != BiPotentialSolver::NodeStatus::stick)
-                augmented[k][0] = false, consistent = false;
-            }
-        if (std::getenv("GLISSADE_DEBUG"))
-          {
-            unsigned int n_augmented = 0;
-            for (const auto &a : augmented)
-              n_augmented += a[0] + a[1];
-            std::cerr << "    contact attempt " << attempt << ": "
-                      << n_augmented << " augmented directions, "
-                      << (solved ? (consistent ? "solved" : "inconsistent") :
-                                   "failed")
-                      << std::endl;
-          }
-        if (solved)
-          continue; // done, or the same problem with fewer augmented directions
-
-        if (std::getenv("GLISSADE_DEBUG"))
-          std::cerr << "    augmentation, attempt " << attempt + 1 << ": "
-                    << result.message << std::endl;
-        // Failed: augment every node that pushes (or, once that failed
-        // too, every active node), in the directions its status holds.
-        if (attempt >= 4)
-          return false;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            const auto status =
-              BiPotentialSolver::classify(start[k], mu[k]);
-            const bool closed =
-              attempt >= 1 || status != BiPotentialSolver::NodeStatus::open;
-            augmented[k][1] = closed;
-            augmented[k][0] =
-              closed && mu[k] > 0. &&
-              (attempt >= 1 || status == BiPotentialSolver::NodeStatus::stick);
-          }
-        if (attempt >= 2)
-          for (auto &E : stiffness)
-            E *= 10.;
-      }
-    if (!consistent)
-      {
-        result.converged = false;
-        return false;
-      }
-
-    for (unsigned int k = 0; k < n; ++k)
+    // The reactions, and the condensed problem whose step they go with.
+    std::vector<BiPotentialSolver::Vector2> r(active.size());
+    for (unsigned int k = 0; k < active.size(); ++k)
+      r[k] = {{active[k]->reaction[0], active[k]->reaction[1]}};
+    const std::unique_ptr<CondensedProblem> condensed =
+      solve_local_problem(active, nodes, increments, r);
+    if (!condensed)
+      return false;
+    for (unsigned int k = 0; k < active.size(); ++k)
       {
         active[k]->reaction = {{r[k][0], r[k][1]}};
         active[k]->status   = result.status[k];
@@ -334,6 +179,186 @@ namespace glissade
     std::vector<Vector<double>> contact_forces(bodies.size());
     condensed->correct(r, increments, contact_forces);
     return true;
+  }
+
+
+
+  ActiveNodes
+  ContactProblem::active_nodes(std::vector<ContactNode *> &active)
+  {
+    ActiveNodes nodes;
+    active.clear();
+    for (auto &pair : pairs)
+      {
+        const std::array<unsigned int, 2> b = {
+          {body_index(&pair->slave()),
+           pair->master() ? body_index(pair->master()) :
+                            numbers::invalid_unsigned_int}};
+        for (auto &node : pair->nodes())
+          if (node.active)
+            {
+              const ContactLinearization &l = node.linearization;
+              active.push_back(&node);
+              nodes.friction.push_back(pair->settings().friction);
+              nodes.initial.push_back({{l.slip, l.gap}});
+              nodes.forces.push_back({&l.tangential_force, b});
+              nodes.forces.push_back({&l.normal_force, b});
+              nodes.rows.push_back({&l.slip_row, b});
+              nodes.rows.push_back({&l.gap_row, b});
+              for (const auto &[load, row] :
+                   {std::make_pair(&l.sliding_load, &l.sliding_row),
+                    std::make_pair(&l.rotation_load, &l.rotation_row)})
+                if (!load->empty() && !row->empty())
+                  nodes.terms.push_back({{load, b}, {row, b}});
+            }
+      }
+    return nodes;
+  }
+
+
+
+  std::unique_ptr<CondensedProblem>
+  ContactProblem::solve_local_problem(
+    const std::vector<ContactNode *>        &active,
+    const ActiveNodes                       &nodes,
+    const std::vector<Vector<double>>       &predictor,
+    std::vector<BiPotentialSolver::Vector2> &r)
+  {
+    // The directions the contact law holds at the start: closed normals,
+    // sticking tangents. Where the Newton matrix alone is indefinite or
+    // singular (a body past a limit point or held by contact only), the
+    // local problem is augmented on them (theory.md, section 4.5): exact
+    // as long as they stay closed and sticking, which is checked. A node
+    // starts with the augmentation of its last solve.
+    const unsigned int               n = active.size();
+    const std::vector<BiPotentialSolver::Vector2> start = r;
+    std::vector<std::array<bool, 2>> held(n);
+    Augmentation                     augmentation;
+    augmentation.directions.resize(n);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const auto status = BiPotentialSolver::classify(start[k], nodes.friction[k]);
+        held[k] = {{status == BiPotentialSolver::NodeStatus::stick &&
+                      nodes.friction[k] > 0.,
+                    status != BiPotentialSolver::NodeStatus::open}};
+        for (unsigned int c = 0; c < 2; ++c)
+          augmentation.directions[k][c] = held[k][c] && active[k]->augmented[c];
+      }
+
+    // Escalation when a solve fails: the held directions, then every
+    // direction of every node, then with a ten and a hundred times stiffer
+    // augmentation.
+    unsigned int                      stage = 0;
+    std::unique_ptr<CondensedProblem> condensed;
+    while (true)
+      {
+        {
+          TimerOutput::Scope scope(timer, timing::compliance);
+          condensed = std::make_unique<CondensedProblem>(nodes, augmentation,
+                                                         bodies, predictor);
+        }
+        // The bi-potential iteration (Gauss-Seidel), the paper's law
+        // solver. Where W is not positive on the directions in play (the
+        // tangent alone is indefinite), the law can have other solutions
+        // than the Newton step's; if Gauss-Seidel changed the statuses
+        // there, or failed, the active-set iteration from the held
+        // statuses finds the one that continues them.
+        bool solved = false;
+        result      = BiPotentialSolver::Result();
+        if (condensed->regular())
+          {
+            TimerOutput::Scope      scope(timer, timing::local_solve);
+            const BiPotentialSolver solver(solver_settings);
+            r      = start;
+            result = solver.solve(condensed->compliance(),
+                                  condensed->free_displacement(),
+                                  nodes.friction,
+                                  r);
+            solved = result.converged;
+            bool check_branch = !solved;
+            if (solved)
+              {
+                std::vector<std::array<bool, 2>> in_play = held;
+                bool                             changed = false;
+                for (unsigned int k = 0; k < n; ++k)
+                  {
+                    const auto status = result.status[k];
+                    const std::array<bool, 2> now = {
+                      {status == BiPotentialSolver::NodeStatus::stick &&
+                         nodes.friction[k] > 0.,
+                       status != BiPotentialSolver::NodeStatus::open}};
+                    changed = changed || now != held[k];
+                    for (unsigned int c = 0; c < 2; ++c)
+                      in_play[k][c] = in_play[k][c] || now[c];
+                  }
+                check_branch = changed && augmentation.count() == 0 &&
+                               !condensed->positive_definite_on(in_play);
+              }
+            if (check_branch)
+              {
+                std::vector<BiPotentialSolver::Vector2> continued = start;
+                const BiPotentialSolver::Result         continuation =
+                  solver.solve_by_active_set(condensed->compliance(),
+                                             condensed->free_displacement(),
+                                             nodes.friction,
+                                             continued);
+                if (continuation.converged)
+                  {
+                    r      = continued;
+                    result = continuation;
+                    solved = true;
+                  }
+              }
+          }
+        else
+          result.message = "the Newton matrix with the contact terms is "
+                           "singular on the contact dofs";
+
+        // Augmented directions must end closed (normal) or sticking
+        // (tangential); those that do not are released and the problem
+        // solved again.
+        bool consistent = solved;
+        if (solved)
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              auto      &d      = augmentation.directions[k];
+              const auto status = result.status[k];
+              if (d[1] && status == BiPotentialSolver::NodeStatus::open)
+                d = held[k] = {{false, false}}, consistent = false;
+              if (d[0] && status != BiPotentialSolver::NodeStatus::stick)
+                d[0] = held[k][0] = false, consistent = false;
+            }
+        if (std::getenv("GLISSADE_DEBUG"))
+          std::cerr << "    contact solve: " << augmentation.count()
+                    << " augmented directions (factor " << augmentation.factor
+                    << "), " << (result.polished ? "active set" : "Gauss-Seidel")
+                    << ": "
+                    << (solved ? (consistent ? "solved" : "inconsistent") :
+                                 "failed: " + result.message)
+                    << std::endl;
+        if (consistent)
+          break;
+        if (solved)
+          continue;
+
+        ++stage;
+        if (stage == 1 && augmentation.directions != held)
+          augmentation.directions = held;
+        else if (stage <= 2)
+          {
+            stage = 2;
+            for (unsigned int k = 0; k < n; ++k)
+              augmentation.directions[k] = {{nodes.friction[k] > 0., true}};
+          }
+        else if (stage <= 4)
+          augmentation.factor *= 10.;
+        else
+          return nullptr;
+      }
+
+    for (unsigned int k = 0; k < n; ++k)
+      active[k]->augmented = augmentation.directions[k];
+    return condensed;
   }
 
 

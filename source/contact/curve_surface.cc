@@ -65,6 +65,45 @@ namespace glissade
 
 
 
+  double
+  CurveSurface::end_of_extension(const unsigned int segment, const double s) const
+  {
+    if (curve->is_closed())
+      return -1.;
+    if (segment == curve->n_segments() - 1 && s > 1.)
+      return 1.;
+    if (segment == 0 && s < 0.)
+      return 0.;
+    return -1.;
+  }
+
+
+
+  void
+  CurveSurface::evaluate(const unsigned int   segment,
+                         const double         s,
+                         MasterCurve::Point &c,
+                         MasterCurve::Point &dc,
+                         MasterCurve::Point &ddc) const
+  {
+    // Past an open end, the tangent line at the end: the curve continued
+    // with its slope (C1), whatever the polynomial would do there.
+    const double end = end_of_extension(segment, s);
+    if (end < 0.)
+      {
+        curve->evaluate(segment, s, c, dc, ddc);
+        return;
+      }
+    curve->evaluate(segment, end, c, dc, ddc);
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        c[d] += (s - end) * dc[d];
+        ddc[d] = 0.;
+      }
+  }
+
+
+
   bool
   CurveSurface::project_on_segment(const Point<2>    &x,
                                    const unsigned int segment,
@@ -75,7 +114,7 @@ namespace glissade
     for (unsigned int it = 0; it < 30; ++it)
       {
         MasterCurve::Point c, dc, ddc;
-        curve->evaluate(segment, s, c, dc, ddc);
+        evaluate(segment, s, c, dc, ddc);
         const double f  = (c[0] - x[0]) * dc[0] + (c[1] - x[1]) * dc[1];
         const double df = dc[0] * dc[0] + dc[1] * dc[1] +
                           (c[0] - x[0]) * ddc[0] + (c[1] - x[1]) * ddc[1];
@@ -105,8 +144,9 @@ namespace glissade
     point.segment = segment;
     point.s       = s;
     MasterCurve::Point c, dc, ddc;
-    curve->evaluate(segment, s, c, dc, ddc);
-    const auto t = curve->unit_tangent(segment, s);
+    evaluate(segment, s, c, dc, ddc);
+    const double end = end_of_extension(segment, s);
+    const auto   t   = curve->unit_tangent(segment, end < 0. ? s : end);
     point.point             = Point<2>(c[0], c[1]);
     point.first_derivative  = Tensor<1, 2>({dc[0], dc[1]});
     point.second_derivative = Tensor<1, 2>({ddc[0], ddc[1]});
@@ -114,13 +154,20 @@ namespace glissade
     point.normal            = Tensor<1, 2>({-t[1], t[0]});
     point.gap               = (x - point.point) * point.normal;
 
+    // The weights, continued linearly past an open end like the curve.
+    const double s_weights = end < 0. ? s : end;
     MasterCurve::NodeWeightsAndDerivatives weights;
-    curve->weights_and_derivatives(segment, s, weights);
+    curve->weights_and_derivatives(segment, s_weights, weights);
     for (const auto &w : weights)
       for (unsigned int comp = 0; comp < 2; ++comp)
-        point.kinematics.push_back(
-          {chain.value_dofs[w.node][comp], comp, w.value, w.derivative});
-    add_kinematics(segment, s, point.kinematics);
+        point.kinematics.push_back({chain.value_dofs[w.node][comp],
+                                    comp,
+                                    w.value + (s - s_weights) * w.derivative,
+                                    w.derivative});
+    const std::size_t first_extra = point.kinematics.size();
+    add_kinematics(segment, s_weights, point.kinematics);
+    for (std::size_t i = first_extra; i < point.kinematics.size(); ++i)
+      point.kinematics[i].value += (s - s_weights) * point.kinematics[i].derivative;
     set_forces(point);
     return point;
   }

@@ -248,6 +248,39 @@ namespace glissade
           std::vector<Vector2>       &r) const;
 
     /**
+     * The same law by a primal-dual active-set iteration (a semismooth
+     * Newton method on the law): the statuses (open, stick, slip and its
+     * direction) of r on input, then, repeatedly, the reactions of those
+     * statuses (solve_for_statuses()) and the statuses they imply, from
+     * x_k = r_k - rho_k (u_t, g + mu |u_t|) with rho_k = 1 / |W_kk[n][n]|,
+     * until they repeat and the law holds to the tolerance of the
+     * settings. Unlike Gauss-Seidel it needs no positive semi-definite W:
+     * it is what solves the local problem of a Newton step whose tangent is
+     * indefinite (a body past a limit point held by its contact), from
+     * the statuses of the previous iteration. Outcome::max_sweeps_reached
+     * (here: status updates) if the statuses cycle.
+     */
+    Result
+    solve_by_active_set(const ComplianceMatrix     &W,
+                        const std::vector<Vector2> &u_free,
+                        const std::vector<double>  &mu,
+                        std::vector<Vector2>       &r) const;
+
+    /**
+     * The reactions for given statuses: open, r = 0; closed (frictionless
+     * or slipping), g = 0; stick, u = 0; slipping, r_t = slip_sign mu r_n.
+     * A dense linear system in the closed nodes' reactions (LAPACK's LU);
+     * false if nothing is closed or it is singular.
+     */
+    static bool
+    solve_for_statuses(const ComplianceMatrix        &W,
+                       const std::vector<Vector2>    &u_free,
+                       const std::vector<double>     &mu,
+                       const std::vector<NodeStatus> &status,
+                       const std::vector<double>     &slip_sign,
+                       std::vector<Vector2>          &r);
+
+    /**
      * The projection onto K_mu = {|r_t| <= mu r_n} in the (r_t, r_n) plane:
      * x itself inside K_mu, 0 in the polar cone {x_n <= -mu |x_t|}, else the
      * closest point on the edge r_t = sign(x_t) mu r_n.

@@ -5,6 +5,7 @@
 #include <glissade/contact/compliance_matrix.h>
 #include <glissade/contact/contact_linearization.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -24,19 +25,64 @@ namespace glissade
   };
 
   /**
-   * A rank-one change of the bodies' tangent, K <- K - load (x) row, that
-   * lives on contact dofs: a term of the contact tangent, the removal of a
-   * floating body's regularisation, or an augmentation of a closed
-   * contact constraint.
+   * A rank-one change of the bodies' matrices, K <- K - load (x) row, that
+   * lives on contact dofs: a term of the contact tangent, or the removal
+   * of a floating body's regularisation.
    */
   struct RankOneTerm
   {
     PairVector load, row;
   };
 
+  /** The active contact nodes of a Newton iteration, as the condensed problem sees them. */
+  struct ActiveNodes
+  {
+    using Vector2 = ComplianceMatrix::Vector2;
+
+    /** (slip, gap) of each node now. */
+    std::vector<Vector2> initial;
+    /** The forces of unit reactions (tangential, normal): two per node. */
+    std::vector<PairVector> forces;
+    /** The slip and gap rows: two per node. */
+    std::vector<PairVector> rows;
+    /** The terms of the contact tangent and any other rank-one change. */
+    std::vector<RankOneTerm> terms;
+    /** Coulomb's mu of each node. */
+    std::vector<double> friction;
+
+    unsigned int
+    size() const
+    {
+      return initial.size();
+    }
+  };
+
+  /**
+   * The closed directions of the contact constraints added to the Newton
+   * matrix, K + sum E_k row_k (x) row_k, with the right-hand side
+   * - E_k u_k row_k (theory.md, section 4.5): per node, whether its
+   * tangential (stick) and normal (closed) directions are augmented, and
+   * a factor on the stiffness E_k = factor / (the node's compliance through
+   * its bodies alone).
+   */
+  struct Augmentation
+  {
+    std::vector<std::array<bool, 2>> directions;
+    double                           factor = 1.;
+
+    unsigned int
+    count() const
+    {
+      unsigned int n = 0;
+      for (const auto &d : directions)
+        n += d[0] + d[1];
+      return n;
+    }
+  };
+
   /**
    * The Newton step of the bodies in contact, condensed on the active
-   * contact nodes (paper eq. 8-10; theory.md, section 4.3).
+   * contact nodes (paper eq. 8-10; theory.md, sections 4.3 and 4.5).
    *
    * Each body has factorised its own matrix K_b; the true Newton matrix is
    * K - sum_j u_j (x) v_j, with rank-one terms on the contact dofs (the
@@ -50,8 +96,9 @@ namespace glissade
    * With R the slip and gap rows and F the forces of unit reactions, the
    * compliance is W = R C F + (R C U) S^-1 (V C F), the free relative
    * displacement u_free = u_0 + R d + (R C U) S^-1 V d with d = du_lib +
-   * K^-1 a (du_lib = K^-1 rhs, a an extra load), and the step du = d +
-   * K^-1 (F r + U z), z = S^-1 (V d + V C F r): one more solve per body.
+   * K^-1 a (du_lib = K^-1 rhs, a the augmentation's load), and the step
+   * du = d + K^-1 (F r + U z), z = S^-1 (V d + V C F r): one more solve per
+   * body.
    */
   class CondensedProblem
   {
@@ -60,16 +107,10 @@ namespace glissade
 
     /**
      * Forms W from the bodies' compliance (their current factorisations);
-     * `predictor` holds each body's du_lib = K_b^-1 rhs_b. `forces` and
-     * `rows` are the forces of unit reactions (tangential, normal) and the
-     * slip and gap rows, two per node, and `initial` the slip and gap
-     * now; `extra_load` (may be empty) is added to the right-hand side.
+     * `predictor` holds each body's du_lib = K_b^-1 rhs_b.
      */
-    CondensedProblem(const std::vector<Vector2>                &initial,
-                     const std::vector<PairVector>             &forces,
-                     const std::vector<PairVector>             &rows,
-                     const std::vector<RankOneTerm>            &terms,
-                     const std::vector<PairVector>             &extra_load,
+    CondensedProblem(const ActiveNodes                         &nodes,
+                     const Augmentation                        &augmentation,
                      const std::vector<std::unique_ptr<Body>>  &bodies,
                      const std::vector<dealii::Vector<double>> &predictor);
 
@@ -95,18 +136,12 @@ namespace glissade
     }
 
     /**
-     * The normal compliance of node k through the bodies' own matrices,
-     * without the rank-one terms.
+     * Whether the symmetric part of W restricted to the given directions
+     * (per node: tangential, normal) is positive definite: the local
+     * problem on them is then convex.
      */
-    double
-    base_normal_compliance(const unsigned int k) const
-    {
-      return base_compliance[k];
-    }
-
-    /** u = u_free + W r. */
-    std::vector<Vector2>
-    displacement(const std::vector<Vector2> &r) const;
+    bool
+    positive_definite_on(const std::vector<std::array<bool, 2>> &directions) const;
 
     /**
      * `increments` holds du_lib on entry and du on exit; `contact_forces`
@@ -127,12 +162,19 @@ namespace glissade
                             const std::vector<PairVector> &all_loads,
                             std::vector<double>           &products) const;
 
-    const std::vector<PairVector>            &forces;
-    const std::vector<RankOneTerm>           &terms;
-    const std::vector<PairVector>            &extra_load;
+    const ActiveNodes                        &nodes;
     const std::vector<std::unique_ptr<Body>> &bodies;
     const unsigned int                        n;
-    const unsigned int                        n_terms;
+
+    /**
+     * The rank-one terms: the nodes' (`n_given` of them), then one per
+     * augmented direction (load -E_k row_k, so `augmented_row` and
+     * `augmented_scale` = -E_k, and its share of the right-hand side
+     * `augmented_gap` = u_k).
+     */
+    unsigned int              n_given = 0;
+    std::vector<unsigned int> augmented_row;
+    std::vector<double>       augmented_scale, augmented_gap;
 
     /** LU of S and its pivots; X = S^-1 V C F; y = S^-1 V d. */
     std::vector<double> S;
@@ -143,6 +185,5 @@ namespace glissade
 
     ComplianceMatrix     W;
     std::vector<Vector2> u_free;
-    std::vector<double>  base_compliance;
   };
 } // namespace glissade

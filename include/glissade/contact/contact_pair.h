@@ -41,6 +41,11 @@ namespace glissade
      * this changes how Newton gets there, not where.
      */
     unsigned int segment_switches = 0;
+    /**
+     * The directions (tangential, normal) of this node that the last local
+     * solve augmented (ContactProblem): the next starts from them.
+     */
+    std::array<bool, 2> augmented = {{false, false}};
 
     /**
      * Gap, slip, their derivatives, the forces of the reaction and the

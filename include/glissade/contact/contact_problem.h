@@ -2,6 +2,7 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/bipotential_solver.h>
+#include <glissade/contact/condensed_problem.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/scene/scene_description.h>
 
@@ -77,6 +78,14 @@ namespace glissade
     unsigned int
     activate_nodes_crossed_by(const std::vector<Vector<double>> &free_step);
 
+    /**
+     * The active nodes of every pair as the condensed problem sees them
+     * (their rows, loads and contact tangent terms, which stay valid until
+     * the nodes are projected again), and pointers to them in `active`.
+     */
+    ActiveNodes
+    active_nodes(std::vector<ContactNode *> &active);
+
     /** Sweeps and outcome of the last local solve. */
     const BiPotentialSolver::Result &
     last_result() const
@@ -91,6 +100,17 @@ namespace glissade
     }
 
   private:
+    /**
+     * The reactions r of the active nodes (warm start on entry), and the
+     * condensed problem whose Newton step goes with them; nullptr if the
+     * local problem could not be solved.
+     */
+    std::unique_ptr<CondensedProblem>
+    solve_local_problem(const std::vector<ContactNode *>        &active,
+                        const ActiveNodes                       &nodes,
+                        const std::vector<Vector<double>>       &predictor,
+                        std::vector<BiPotentialSolver::Vector2> &r);
+
     /** Index of a body in the simulation's list. */
     unsigned int
     body_index(const Body *body) const;

@@ -87,6 +87,22 @@ namespace glissade
     std::unique_ptr<MasterCurve> curve;
 
   private:
+    /**
+     * For a point past an open end of the curve (s > 1 on the last
+     * segment, s < 0 on the first), the end's s; -1 otherwise.
+     */
+    double
+    end_of_extension(unsigned int segment, double s) const;
+
+    /**
+     * The curve and its first two derivatives, continued along the end's
+     * tangent line past an open end (where a node kept on its segment for
+     * the increment may go).
+     */
+    void
+    evaluate(unsigned int segment, double s, MasterCurve::Point &c,
+             MasterCurve::Point &dc, MasterCurve::Point &ddc) const;
+
     /** The point at (segment, s) for the slave position x. */
     SurfacePoint
     point_at(const dealii::Point<2> &x, unsigned int segment, double s) const;
