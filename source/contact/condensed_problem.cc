@@ -8,6 +8,11 @@ extern "C" void
 dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
         int *info);
 extern "C" void
+dgemm_(const char *transa, const char *transb, const int *m, const int *n,
+       const int *k, const double *alpha, const double *a, const int *lda,
+       const double *b, const int *ldb, const double *beta, double *c,
+       const int *ldc);
+extern "C" void
 dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 extern "C" void
 dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a,
@@ -110,15 +115,15 @@ namespace glissade
     S.assign(std::size_t(t) * t, 0.);
     X.assign(std::size_t(t) * size, 0.);
     y.assign(t, 0.);
+    for (int j = 0; j < t; ++j)
+      for (int i = 0; i < t; ++i)
+        S[i + std::size_t(j) * t] =
+          (i == j ? 1. : 0.) - product(size + i, size + j);
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < t; ++i)
+        X[i + std::size_t(j) * t] = product(size + i, j);
     for (int i = 0; i < t; ++i)
-      {
-        for (int j = 0; j < t; ++j)
-          S[i + std::size_t(j) * t] =
-            (i == j ? 1. : 0.) - product(size + i, size + j);
-        for (int j = 0; j < size; ++j)
-          X[i + std::size_t(j) * t] = product(size + i, j);
-        y[i] = row_of_d[size + i];
-      }
+      y[i] = row_of_d[size + i];
     if (t > 0)
       {
         pivots.resize(t);
@@ -132,26 +137,30 @@ namespace glissade
         dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
       }
 
-    // W = R C F + (R C U) X and u_free = u_0 + R d + (R C U) y.
-    W.reinit(n);
-    std::vector<double> column(size);
+    // W = R C F + (R C U) X (BLAS: the product is the dense part of the
+    // contact tangent's cost) and u_free = u_0 + R d + (R C U) y.
+    std::vector<double> W_dense(std::size_t(size) * size);
     for (int j = 0; j < size; ++j)
+      std::copy(&P[std::size_t(j) * n_rows],
+                &P[std::size_t(j) * n_rows] + size,
+                &W_dense[std::size_t(j) * size]);
+    if (t > 0)
       {
-        for (int i = 0; i < size; ++i)
-          column[i] = product(i, j);
-        for (int k = 0; k < t; ++k)
-          if (const double x = X[k + std::size_t(j) * t]; x != 0.)
-            for (int i = 0; i < size; ++i)
-              column[i] += product(i, size + k) * x;
-        const unsigned int l = j / 2, c = j % 2;
-        for (unsigned int k = 0; k < n; ++k)
-          {
-            ComplianceMatrix::Block block = {{{{0., 0.}}, {{0., 0.}}}};
-            block[0][c] = column[2 * k];
-            block[1][c] = column[2 * k + 1];
-            W.add_block(k, l, block);
-          }
+        const double one = 1.;
+        const int    ld  = n_rows;
+        dgemm_("N", "N", &size, &size, &t, &one, &P[std::size_t(size) * n_rows],
+               &ld, X.data(), &t, &one, W_dense.data(), &size);
       }
+    W.reinit(n);
+    for (unsigned int l = 0; l < n; ++l)
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          ComplianceMatrix::Block block;
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int c = 0; c < 2; ++c)
+              block[a][c] = W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
+          W.set_block(k, l, block);
+        }
     u_free = nodes.initial;
     for (int i = 0; i < size; ++i)
       {

@@ -3,6 +3,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/contact/surface_registry.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/scene/scene_reader.h>
 
@@ -173,11 +174,10 @@ namespace glissade
       prm.declare_entry(
         "Surface",
         "faceted",
-        Patterns::Selection("faceted|bspline|hermite"),
-        "Representation of the master surface: faceted (the element edges, "
-        "the paper's Q4), bspline (cubic uniform interpolating B-spline "
-        "through the master nodes, closed if the boundary is), hermite (the "
-        "C1 edges of a Hermite master body).");
+        Patterns::Selection(
+          SurfaceRegistry::names_as_pattern(SurfaceRegistry::Kind::deformable)),
+        "Representation of the master surface: " +
+          SurfaceRegistry::documentation(SurfaceRegistry::Kind::deformable));
       prm.declare_entry(
         "Force transfer",
         "segment",
@@ -213,9 +213,12 @@ namespace glissade
       prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
                         "Gauss-Seidel sweeps of the local solver.");
       prm.enter_subsection("Obstacle");
-      prm.declare_entry("Type", "line", Patterns::Selection("line|disk|hole"),
-                        "line: the half-plane behind a line; disk: a solid "
-                        "disk; hole: the outside of a circular hole.");
+      prm.declare_entry(
+        "Type",
+        "line",
+        Patterns::Selection(
+          SurfaceRegistry::names_as_pattern(SurfaceRegistry::Kind::rigid)),
+        SurfaceRegistry::documentation(SurfaceRegistry::Kind::rigid));
       prm.declare_entry("Point", "0, 0", Patterns::Anything(),
                         "line: a point on it; disk, hole: the centre.");
       prm.declare_entry("Normal", "0, 1", Patterns::Anything(),

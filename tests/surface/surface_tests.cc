@@ -240,7 +240,7 @@ namespace
             const auto p = closed ? closed_points(n, random) :
                                     open_points(n, random);
             const auto curve = make_curve(kind, closed, p);
-            double     reproduction = 0., unity = 0., hat = 0.;
+            double     reproduction = 0., unity = 0., hat = 0., derivative = 0.;
             std::size_t          widest = 0;
             MasterCurve::NodeWeights w;
             for (unsigned int trial = 0; trial < 40; ++trial)
@@ -276,6 +276,34 @@ namespace
                            distance(sum, curve->value(segment, s)));
                 unity = std::max(unity, std::abs(total - 1.));
 
+                // The derivatives: sum_j phi_j' node_j = c'(s), the curve's
+                // own derivative (for the B-spline from its control points,
+                // the weights from the closed-form inverse).
+                MasterCurve::NodeWeightsAndDerivatives wd;
+                curve->weights_and_derivatives(segment, s, wd);
+                Point slope = {{0., 0.}};
+                for (const auto &e : wd)
+                  {
+                    slope[0] += e.derivative * p[e.node][0];
+                    slope[1] += e.derivative * p[e.node][1];
+                  }
+                if (kind == "hermite")
+                  {
+                    const auto *h = dynamic_cast<const HermiteCurve *>(
+                      curve.get());
+                    const auto tw = h->tangent_weights_and_derivatives(segment, s);
+                    const auto &d = h->segment_tangents(segment);
+                    for (unsigned int k = 0; k < 2; ++k)
+                      {
+                        slope[0] += tw[2 + k] * d[k][0];
+                        slope[1] += tw[2 + k] * d[k][1];
+                      }
+                  }
+                const Point  dc = curve->derivative(segment, s);
+                derivative = std::max(derivative,
+                                      distance(slope, dc) /
+                                        std::max(1., std::hypot(dc[0], dc[1])));
+
                 const auto  u = curve->underlying_segment_weights(segment, s);
                 const auto  ends = curve->segment_nodes(segment);
                 const Point chord = {
@@ -288,15 +316,18 @@ namespace
                      u[1].second * p[u[1].first][1]}};
                 hat = std::max(hat, distance(chord, from_hats));
               }
-            check(reproduction < 1e-13 && unity < 1e-13 && hat < 1e-15,
+            check(reproduction < 1e-13 && unity < 1e-13 && hat < 1e-15 &&
+                    derivative < 1e-12,
                   "%-7s %-6s N=%4u: |sum phi P - c| = %.1e, |sum phi - 1| = "
-                  "%.1e, hats %.0e, at most %zu weights",
+                  "%.1e, hats %.0e, |sum phi' P - c'| = %.1e, at most %zu "
+                  "weights",
                   kind.c_str(),
                   kind_name(closed),
                   n,
                   reproduction,
                   unity,
                   hat,
+                  derivative,
                   widest);
             if (kind == "bspline")
               check(widest <= 2 * 30 + 4,
