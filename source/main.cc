@@ -2,7 +2,12 @@
 // runs its load program, and reports mistakes in the input or a failed
 // increment as one clear message with a non-zero exit code.
 
+#include <deal.II/base/config.h>
+
+#include <glissade/base/config.h>
 #include <glissade/base/input_error.h>
+#include <glissade/base/interruption.h>
+#include <glissade/base/text.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/case3_study.h>
@@ -20,10 +25,13 @@ namespace
   {
     out << "usage: glissade <scene.prm> [--set 'Section/Entry=value' ...] "
            "[--restart]\n"
-           "       glissade --print-parameters\n"
+           "       glissade --print-parameters | --version | --help\n"
            "Runs the scene described by the .prm file; --set overrides an\n"
            "entry of the file (e.g. --set 'Body beam/Mesh/Subdivisions=60,4');\n"
-           "--restart continues from <Output directory>/checkpoint.bin.\n";
+           "--restart continues from <Output directory>/checkpoint.bin.\n"
+           "Exit codes: 0 done, 1 command line, 2 input error, 3 an increment\n"
+           "did not converge, 4 other error, 5 stopped by SIGTERM/SIGINT after\n"
+           "writing a checkpoint.\n";
   }
 } // namespace
 
@@ -45,6 +53,18 @@ main(int argc, char **argv)
     {
       print_usage(std::cout);
       return 0;
+    }
+  if (std::strcmp(argv[1], "--version") == 0)
+    {
+      std::cout << "glissade " << GLISSADE_VERSION << " (deal.II "
+                << DEAL_II_PACKAGE_VERSION << ")\n";
+      return 0;
+    }
+  if (argv[1][0] == '-')
+    {
+      std::cerr << "glissade: unknown option '" << argv[1] << "'\n";
+      print_usage(std::cerr);
+      return 1;
     }
 
   std::vector<std::string> overrides;
@@ -94,6 +114,7 @@ main(int argc, char **argv)
       const SceneDescription scene =
         SceneReader::read_file(argv[1], overrides);
       Simulation simulation(scene);
+      interruption::install_handlers();
       const bool completed = simulation.run(restart);
       std::cout << simulation.summary() << '\n'
                 << simulation.timing_table() << std::flush;
@@ -112,9 +133,17 @@ main(int argc, char **argv)
       std::cerr << "glissade: stopped: " << e.what() << std::endl;
       return 3;
     }
+  catch (const RunInterrupted &e)
+    {
+      std::cerr << "glissade: " << e.what() << "; continue with: glissade "
+                << argv[1] << " --restart" << std::endl;
+      return 5;
+    }
   catch (const std::exception &e)
     {
-      std::cerr << "glissade: error: " << e.what() << std::endl;
+      // Without deal.II's source location and stack trace.
+      std::cerr << "glissade: error: " << text::essential_message(e)
+                << std::endl;
       return 4;
     }
   return 0;

@@ -97,6 +97,7 @@ namespace glissade
     std::vector<SymmetricTensor<2, 2>> dE(n_local), D_dE(n_local);
 
     bool admissible = true;
+    problem.clear();
     for (const auto &cell : dofs.active_cell_iterators())
       {
         evaluator->reinit(cell);
@@ -119,10 +120,41 @@ namespace glissade
             const double       J = determinant(F);
             if (!(J > 0.) || !std::isfinite(J))
               {
+                if (admissible)
+                  {
+                    std::ostringstream message;
+                    message << "an element of body '" << name()
+                            << "' is inverted: cell "
+                            << cell->active_cell_index() << " at ("
+                            << cell->center()[0] << ", " << cell->center()[1]
+                            << "), det F = " << J
+                            << " (an increment too large for the "
+                               "deformation, or a mesh too coarse for it)";
+                    problem = message.str();
+                  }
                 admissible = false;
                 continue;
               }
             const MaterialPointResponse response = body_material.evaluate(H);
+            if (!std::isfinite(response.stress.norm()) ||
+                !std::isfinite(response.tangent.norm()))
+              {
+                if (admissible)
+                  {
+                    std::ostringstream message;
+                    message << "the stress of body '" << name()
+                            << "' is not finite in cell "
+                            << cell->active_cell_index() << " at ("
+                            << cell->center()[0] << ", " << cell->center()[1]
+                            << "): its Material/Young modulus ("
+                            << description.material.young_modulus
+                            << ") times the strain is beyond double "
+                               "precision; express the scene in other units";
+                    problem = message.str();
+                  }
+                admissible = false;
+                continue;
+              }
             const Tensor<2, 2>          P  = F * Tensor<2, 2>(response.stress);
             const double                dV = evaluator->JxW(q) * thickness;
 
@@ -185,7 +217,11 @@ namespace glissade
     Vector<double> external = internal_forces;
     external -= unconstrained_residual;
     external_force_norm = external.l2_norm();
-    return admissible && std::isfinite(unconstrained_residual.l2_norm());
+    if (admissible && !std::isfinite(unconstrained_residual.l2_norm()))
+      problem = "the residual of body '" + name() +
+                "' is not finite (a load or a prescribed displacement out of "
+                "the range of double precision?)";
+    return admissible && problem.empty();
   }
 
 

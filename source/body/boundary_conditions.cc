@@ -13,16 +13,42 @@ namespace glissade
 {
   namespace
   {
+    /**
+     * A value of a user's expression, checked: log(t - 0.5) before
+     * t = 0.5, 1/t at t = 0 or sqrt of a negative would otherwise carry a
+     * NaN into the solution and end as "did not converge" (or in a VTU).
+     * The message names the entry, the time and the point.
+     */
+    double
+    checked(const double        value,
+            const std::string  &entry,
+            const std::string  &expression,
+            const double        time,
+            const Point<2>     &X)
+    {
+      if (std::isfinite(value))
+        return value;
+      std::ostringstream message;
+      message << "'" << expression << "' evaluates to " << value
+              << " at t = " << time << ", (x, y) = (" << X[0] << ", " << X[1]
+              << "): give an expression that is finite wherever and whenever "
+                 "it is used (the load program's times, cut-backs included)";
+      throw InputError(entry, message.str());
+    }
+
     /** u(X) = R(angle(t)) (X - c) + c - X: a rigid rotation about c. */
     class RigidRotation : public Function<2>
     {
     public:
-      RigidRotation(const Point<2> &center, const std::string &angle)
+      RigidRotation(const Point<2>    &center,
+                    const std::string &angle,
+                    const std::string &entry)
         : Function<2>(2)
         , center(center)
         , angle(1)
+        , angle_expression(angle)
+        , entry(entry)
       {
-        angle_expression = angle;
         this->angle.initialize("x,y,t", {angle}, {{"pi", numbers::PI}}, true);
       }
 
@@ -30,7 +56,8 @@ namespace glissade
       value(const Point<2> &X, const unsigned int component) const override
       {
         angle.set_time(this->get_time());
-        const double       a = angle.value(X);
+        const double a = checked(
+          angle.value(X), entry, angle_expression, this->get_time(), X);
         const Tensor<1, 2> d = X - center;
         const double rotated = component == 0 ?
                                  std::cos(a) * d[0] - std::sin(a) * d[1] :
@@ -41,15 +68,47 @@ namespace glissade
     private:
       const Point<2>            center;
       mutable FunctionParser<2> angle;
-      std::string               angle_expression;
+      const std::string         angle_expression;
+      const std::string         entry;
     };
 
-    std::shared_ptr<FunctionParser<2>>
-    make_parser(const std::vector<std::string> &expressions)
+    /** The user's expressions of x, y and t, each value checked. */
+    class Expressions : public Function<2>
     {
-      auto f = std::make_shared<FunctionParser<2>>(expressions.size());
-      f->initialize("x,y,t", expressions, {{"pi", numbers::PI}}, true);
-      return f;
+    public:
+      Expressions(const std::vector<std::string> &expressions,
+                  const std::string              &entry)
+        : Function<2>(expressions.size())
+        , parser(expressions.size())
+        , expressions(expressions)
+        , entry(entry)
+      {
+        parser.initialize(
+          "x,y,t", expressions, {{"pi", numbers::PI}}, true);
+      }
+
+      double
+      value(const Point<2> &X, const unsigned int component) const override
+      {
+        parser.set_time(this->get_time());
+        return checked(parser.value(X, component),
+                       entry,
+                       expressions[component],
+                       this->get_time(),
+                       X);
+      }
+
+    private:
+      mutable FunctionParser<2>      parser;
+      const std::vector<std::string> expressions;
+      const std::string              entry;
+    };
+
+    std::shared_ptr<Function<2>>
+    make_parser(const std::vector<std::string> &expressions,
+                const std::string              &entry)
+    {
+      return std::make_shared<Expressions>(expressions, entry);
     }
   } // namespace
 
@@ -215,13 +274,14 @@ namespace glissade
                 unsigned int             next = 0;
                 both.push_back(d.x_component ? d.expressions[next++] : "0");
                 both.push_back(d.y_component ? d.expressions[next++] : "0");
-                item.displacement = make_parser(both);
+                item.displacement = make_parser(both, d.entry);
                 break;
               }
             case DirichletDescription::Kind::rotation:
               item.displacement =
                 std::make_shared<RigidRotation>(d.rotation_center,
-                                                d.angle_expression);
+                                                d.angle_expression,
+                                                d.entry);
               break;
           }
         dirichlet_items.push_back(item);
@@ -237,14 +297,14 @@ namespace glissade
                   n.entry,
                   n.kind == NeumannDescription::Kind::point_load);
         if (n.kind == NeumannDescription::Kind::point_load)
-          point_loads.push_back({where, make_parser(n.expressions)});
+          point_loads.push_back({where, make_parser(n.expressions, n.entry)});
         else if (n.kind == NeumannDescription::Kind::nodal_loads)
-          nodal_loads.push_back({where, make_parser(n.expressions)});
+          nodal_loads.push_back({where, make_parser(n.expressions, n.entry)});
         else
           loads_on_boundaries.push_back(
             {where.boundary,
              n.kind == NeumannDescription::Kind::pressure,
-             make_parser(n.expressions)});
+             make_parser(n.expressions, n.entry)});
       }
   }
 

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -43,6 +44,9 @@ namespace glissade
     const types::boundary_id slave_id =
       slave.boundary_id(description.slave_boundary, entry + "/Slave boundary");
     std::set<unsigned int> seen;
+    // The slave boundary's outward normal at each node (the sum over its
+    // faces), to check that a rigid obstacle faces the slave.
+    std::map<unsigned int, Tensor<1, 2>> outward_normal;
     for (const auto &cell : slave.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
@@ -50,6 +54,12 @@ namespace glissade
           for (const unsigned int v : {0u, 1u})
             {
               const unsigned int vertex = cell->face(f)->vertex_index(v);
+              const Tensor<1, 2> along =
+                cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
+              Tensor<1, 2> normal({along[1], -along[0]});
+              if (normal * (cell->face(f)->center() - cell->center()) < 0.)
+                normal = -normal;
+              outward_normal[vertex] += normal / normal.norm();
               if (!seen.insert(vertex).second)
                 continue;
               ContactNode node;
@@ -61,6 +71,40 @@ namespace glissade
             }
 
     master_surface = SurfaceRegistry::create({description, master_body});
+    if (master_surface->is_rigid())
+      check_obstacle_faces_slave(outward_normal);
+  }
+
+
+
+  void
+  ContactPair::check_obstacle_faces_slave(
+    const std::map<unsigned int, Tensor<1, 2>> &outward_normal)
+  {
+    // An obstacle's normal points out of it, towards where the slave may be.
+    // If at every slave node it points the same way as the slave boundary's
+    // outward normal, the slave can only ever be behind the obstacle
+    // (a line's Normal given the wrong way round, a disk where a hole was
+    // meant): no contact would ever close, and the run would say nothing.
+    master_surface->update(0., 0.);
+    unsigned int facing_away = 0;
+    for (const ContactNode &node : slave_nodes)
+      {
+        const SurfacePoint point = master_surface->project(node.reference_position);
+        const Tensor<1, 2> out   = outward_normal.at(node.vertex);
+        if (point.valid && point.normal * out > 0.5 * out.norm())
+          ++facing_away;
+      }
+    if (!slave_nodes.empty() && facing_away == slave_nodes.size())
+      throw InputError(description.entry + "/Obstacle",
+                       "the obstacle faces away from the slave boundary '" +
+                         description.slave_boundary + "' of body '" +
+                         slave_body.name() +
+                         "': at every slave node its normal points the same "
+                         "way as the body's outward normal, so no contact can "
+                         "close. Reverse Obstacle/Normal (a line's normal "
+                         "points towards the slave), or use Type = hole "
+                         "for a body inside a circle (disk for outside)");
   }
 
 

@@ -5,6 +5,9 @@
 #include <glissade/contact/surface_registry.h>
 #include <glissade/fe/hermite_space.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace glissade
 {
   using namespace dealii;
@@ -72,6 +75,7 @@ namespace glissade
                 std::array<Tensor<1, 2>, 2>{{tangent_at_end[0], tangent_at_end[1]}} :
                 std::array<Tensor<1, 2>, 2>{{-tangent_at_end[1], -tangent_at_end[0]}});
           }
+        check_reference_edge_is_smooth(context);
       }
 
       std::vector<types::global_dof_index>
@@ -129,6 +133,50 @@ namespace glissade
       }
 
     private:
+      /**
+       * The Hermite edge is C1 only if the reference geometry is: the two
+       * segments at a node must leave it along one tangent. Meshes read from
+       * a file have straight-sided cells, so the reference tangents are the
+       * chords and every node of a curved boundary is a kink: the Hermite
+       * master would act as a faceted one (u_r 7 % off on a ring) without a
+       * word. Refused when most nodes are kinks; a few (the corners of a
+       * polygonal boundary) are genuine.
+       */
+      void
+      check_reference_edge_is_smooth(const SurfaceContext &context) const
+      {
+        const unsigned int n_segments = reference_tangents.size();
+        unsigned int       interior = 0, kinks = 0;
+        double             largest = 0.;
+        for (unsigned int i = 0; i < n_segments; ++i)
+          {
+            if (!chain.closed && i + 1 == n_segments)
+              break;
+            const Tensor<1, 2> &before = reference_tangents[i][1];
+            const Tensor<1, 2> &after  =
+              reference_tangents[(i + 1) % n_segments][0];
+            const double angle =
+              std::atan2(std::abs(cross_product_2d(before) * after),
+                         before * after);
+            ++interior;
+            largest = std::max(largest, angle);
+            if (angle > 1e-6)
+              ++kinks;
+          }
+        if (interior > 0 && 2 * kinks > interior)
+          throw InputError(
+            context.description.entry + "/Surface",
+            "a hermite surface on body '" + master.name() +
+              "': the reference geometry of its master boundary has a "
+              "tangent that jumps at " + std::to_string(kinks) + " of its " +
+              std::to_string(interior) + " nodes (by up to " +
+              std::to_string(largest * 180. / numbers::PI) +
+              " degrees), as in a mesh read from a file, whose cells have "
+              "straight sides; such an edge is no smoother than a faceted "
+              "one. Use Surface = bspline, or a generated mesh (ring, half "
+              "ring) whose cells follow the curved boundary");
+      }
+
       std::vector<std::array<types::global_dof_index, 6>> derivative_dofs;
       std::vector<std::array<Tensor<1, 2>, 2>>            reference_tangents;
     };

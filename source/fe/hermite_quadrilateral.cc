@@ -23,7 +23,7 @@ namespace glissade
   HermiteQuadrilateral::node_reference_point(const unsigned int node)
   {
     check_index(node, "HermiteQuadrilateral: node index out of range");
-    return {node_xi[node], node_eta[node]};
+    return {{node_xi[node], node_eta[node]}};
   }
 
   unsigned int
@@ -47,7 +47,7 @@ namespace glissade
   HermiteQuadrilateral::edge_nodes(const unsigned int edge)
   {
     check_index(edge, "HermiteQuadrilateral: edge index out of range");
-    return {edge, (edge + 1) % 4};
+    return {{edge, (edge + 1) % 4}};
   }
 
   HermiteQuadrilateral::EdgeOfFace
@@ -70,8 +70,8 @@ namespace glissade
     const Vector start     = node_reference_point(edge);
     const Vector direction = edge_reference_direction(edge);
     // Start at node e for s = -1 and move by (s + 1) along the direction.
-    return {start[0] + (s + 1.0) * direction[0],
-            start[1] + (s + 1.0) * direction[1]};
+    return {{start[0] + (s + 1.0) * direction[0],
+             start[1] + (s + 1.0) * direction[1]}};
   }
 
   HermiteQuadrilateral::Vector
@@ -79,7 +79,7 @@ namespace glissade
   {
     check_index(edge, "HermiteQuadrilateral: edge index out of range");
     constexpr double direction[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
-    return {direction[edge][0], direction[edge][1]};
+    return {{direction[edge][0], direction[edge][1]}};
   }
 
   // ------------------------------------------------- reference shape functions
@@ -129,14 +129,14 @@ namespace glissade
         const double D = 1.0 - xi * xi, E = 1.0 - eta * eta;
 
         // value: 1/8 A B C
-        gradients[3 * a] = {0.125 * B * (xa * C + A * C_xi),
-                            0.125 * A * (ea * C + B * C_eta)};
+        gradients[3 * a] = {{0.125 * B * (xa * C + A * C_xi),
+                             0.125 * A * (ea * C + B * C_eta)}};
         // xi-derivative function: -xa/8 A B D
-        gradients[3 * a + 1] = {-0.125 * xa * B * (xa * D - 2.0 * xi * A),
-                                -0.125 * xa * A * D * ea};
+        gradients[3 * a + 1] = {{-0.125 * xa * B * (xa * D - 2.0 * xi * A),
+                                 -0.125 * xa * A * D * ea}};
         // eta-derivative function: -ea/8 A B E
-        gradients[3 * a + 2] = {-0.125 * ea * xa * B * E,
-                                -0.125 * ea * A * (ea * E - 2.0 * eta * B)};
+        gradients[3 * a + 2] = {{-0.125 * ea * xa * B * E,
+                                 -0.125 * ea * A * (ea * E - 2.0 * eta * B)}};
       }
     return gradients;
   }
@@ -154,17 +154,17 @@ namespace glissade
         const double D = 1.0 - xi * xi, E = 1.0 - eta * eta;
 
         // value: A'' = B'' = 0, C'' = -2, C_xieta = 0.
-        hessians[3 * a] = {0.125 * B * (2.0 * xa * C_xi - 2.0 * A),
-                           0.125 * (ea * (xa * C + A * C_xi) + B * xa * C_eta),
-                           0.125 * A * (2.0 * ea * C_eta - 2.0 * B)};
+        hessians[3 * a] = {{0.125 * B * (2.0 * xa * C_xi - 2.0 * A),
+                            0.125 * (ea * (xa * C + A * C_xi) + B * xa * C_eta),
+                            0.125 * A * (2.0 * ea * C_eta - 2.0 * B)}};
         // xi-derivative function: -xa/8 A B D, D' = -2 xi, D'' = -2.
-        hessians[3 * a + 1] = {-0.125 * xa * B * (-4.0 * xa * xi - 2.0 * A),
-                               -0.125 * xa * ea * (xa * D - 2.0 * xi * A),
-                               0.0};
+        hessians[3 * a + 1] = {{-0.125 * xa * B * (-4.0 * xa * xi - 2.0 * A),
+                                -0.125 * xa * ea * (xa * D - 2.0 * xi * A),
+                                0.0}};
         // eta-derivative function: -ea/8 A B E, E' = -2 eta, E'' = -2.
-        hessians[3 * a + 2] = {0.0,
-                               -0.125 * ea * xa * (ea * E - 2.0 * eta * B),
-                               -0.125 * ea * A * (-4.0 * ea * eta - 2.0 * B)};
+        hessians[3 * a + 2] = {{0.0,
+                                -0.125 * ea * xa * (ea * E - 2.0 * eta * B),
+                                -0.125 * ea * A * (-4.0 * ea * eta - 2.0 * B)}};
       }
     return hessians;
   }
@@ -185,17 +185,18 @@ namespace glissade
     // the edge it lies on, oriented towards increasing xi (or eta): the
     // derivative of the bilinear map at that node.
     const auto half_difference = [](const Vector &to, const Vector &from) {
-      return Vector{0.5 * (to[0] - from[0]), 0.5 * (to[1] - from[1])};
+      return Vector{{0.5 * (to[0] - from[0]), 0.5 * (to[1] - from[1])}};
     };
     const Vector bottom = half_difference(vertices[1], vertices[0]);
     const Vector top    = half_difference(vertices[2], vertices[3]);
     const Vector left   = half_difference(vertices[3], vertices[0]);
     const Vector right  = half_difference(vertices[2], vertices[1]);
 
-    return HermiteQuadrilateral({NodeGeometry{vertices[0], bottom, left},
-                                 NodeGeometry{vertices[1], bottom, right},
-                                 NodeGeometry{vertices[2], top, right},
-                                 NodeGeometry{vertices[3], top, left}});
+    return HermiteQuadrilateral(
+      std::array<NodeGeometry, 4>{{NodeGeometry{vertices[0], bottom, left},
+                                   NodeGeometry{vertices[1], bottom, right},
+                                   NodeGeometry{vertices[2], top, right},
+                                   NodeGeometry{vertices[3], top, left}}});
   }
 
   HermiteQuadrilateral
@@ -213,9 +214,9 @@ namespace glissade
         const double p = node_xi[a] < 0 ? p_range[0] : p_range[1];
         const double q = node_eta[a] < 0 ? q_range[0] : q_range[1];
         const ParametrizationValue X = parametrization(p, q);
-        nodes[a]                     = {X.point,
-                                        {X.d_dp[0] * half_dp, X.d_dp[1] * half_dp},
-                                        {X.d_dq[0] * half_dq, X.d_dq[1] * half_dq}};
+        nodes[a] = {X.point,
+                    {{X.d_dp[0] * half_dp, X.d_dp[1] * half_dp}},
+                    {{X.d_dq[0] * half_dq, X.d_dq[1] * half_dq}}};
       }
     return HermiteQuadrilateral(nodes);
   }
@@ -232,7 +233,7 @@ namespace glissade
   HermiteQuadrilateral::geometry_from_reference(
       const ShapeArray &reference) const
   {
-    Vector X = {0.0, 0.0};
+    Vector X = {{0.0, 0.0}};
     for (unsigned int a = 0; a < 4; ++a)
       for (unsigned int d = 0; d < 2; ++d)
         X[d] += reference[3 * a] * nodes[a].point[d] +
@@ -276,7 +277,7 @@ namespace glissade
       }
     const Vector X_xi  = geometry_from_reference(d_xi);
     const Vector X_eta = geometry_from_reference(d_eta);
-    return {{{X_xi[0], X_eta[0]}, {X_xi[1], X_eta[1]}}};
+    return {{{{X_xi[0], X_eta[0]}}, {{X_xi[1], X_eta[1]}}}};
   }
 
   HermiteQuadrilateral::PointValues
@@ -295,7 +296,7 @@ namespace glissade
     result.point                = geometry_from_reference(values);
     const Vector X_xi           = geometry_from_reference(d_xi);
     const Vector X_eta          = geometry_from_reference(d_eta);
-    result.jacobian             = {{{X_xi[0], X_eta[0]}, {X_xi[1], X_eta[1]}}};
+    result.jacobian             = {{{{X_xi[0], X_eta[0]}}, {{X_xi[1], X_eta[1]}}}};
     const double det            = X_xi[0] * X_eta[1] - X_eta[0] * X_xi[1];
     result.jacobian_determinant = det;
 
@@ -307,8 +308,8 @@ namespace glissade
     // J^{-1} = 1/det [[X_eta[1], -X_eta[0]], [-X_xi[1], X_xi[0]]].
     for (unsigned int i = 0; i < 12; ++i)
       result.shape_gradients[i] = {
-          (X_eta[1] * phi_xi[i] - X_xi[1] * phi_eta[i]) / det,
-          (-X_eta[0] * phi_xi[i] + X_xi[0] * phi_eta[i]) / det};
+          {(X_eta[1] * phi_xi[i] - X_xi[1] * phi_eta[i]) / det,
+           (-X_eta[0] * phi_xi[i] + X_xi[0] * phi_eta[i]) / det}};
     return result;
   }
 

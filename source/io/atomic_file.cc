@@ -30,12 +30,22 @@ namespace glissade
 
 
 
+  std::string
+  AtomicFile::failure_message() const
+  {
+    return "writing '" + temporary +
+           "' failed (is the disk full, or the output directory gone?); the "
+           "files written before are complete";
+  }
+
+
+
   void
   AtomicFile::commit()
   {
     out.flush();
     if (!out)
-      throw std::runtime_error("writing '" + temporary + "' failed");
+      throw std::runtime_error(failure_message());
     out.close();
     if (std::rename(temporary.c_str(), filename.c_str()) != 0)
       throw std::runtime_error("cannot rename '" + temporary + "' to '" +

@@ -82,8 +82,7 @@ namespace glissade
     name << description.name << "-" << std::setw(5) << std::setfill('0')
          << index << ".vtu";
     AtomicFile file(directory + "/" + name.str());
-    data_out.write_vtu(file.stream());
-    file.commit();
+    file.write_and_commit([&](std::ostream &out) { data_out.write_vtu(out); });
     return name.str();
   }
 } // namespace glissade

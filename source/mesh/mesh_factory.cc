@@ -7,8 +7,10 @@
 #include <glissade/mesh/mesh_factory.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace glissade
@@ -44,7 +46,50 @@ namespace glissade
 
     if (description.distortion > 0.)
       GridTools::distort_random(description.distortion, triangulation, true);
+    check_cells_are_not_folded(triangulation, where);
     return names;
+  }
+
+
+
+  void
+  MeshFactory::check_cells_are_not_folded(const Triangulation<2> &triangulation,
+                                          const std::string      &where)
+  {
+    // The Jacobian of the bilinear map at the four corners of each cell
+    // (deal.II's vertex order: 0 (0,0), 1 (1,0), 2 (0,1), 3 (1,1)). A
+    // zero or negative corner determinant is a degenerate or folded
+    // (bow-tie) cell, whose stiffness is meaningless: the run would go on
+    // and answer wrongly, or fail later with "did not converge".
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        const auto v = [&](const unsigned int i) { return cell->vertex(i); };
+        const std::array<std::pair<Tensor<1, 2>, Tensor<1, 2>>, 4> corners{
+          {{v(1) - v(0), v(2) - v(0)},
+           {v(1) - v(0), v(3) - v(1)},
+           {v(3) - v(2), v(2) - v(0)},
+           {v(3) - v(2), v(3) - v(1)}}};
+        const double scale = std::pow(cell->diameter(), 2);
+        for (const auto &[along_xi, along_eta] : corners)
+          {
+            const double det = along_xi[0] * along_eta[1] -
+                               along_xi[1] * along_eta[0];
+            if (!(det > 1e-12 * scale))
+              {
+                std::ostringstream message;
+                message << "cell " << cell->active_cell_index()
+                        << " (vertices";
+                for (const unsigned int i : {0u, 1u, 3u, 2u})
+                  message << " (" << v(i)[0] << ", " << v(i)[1] << ")";
+                message << ") is "
+                        << (std::abs(det) <= 1e-12 * scale ?
+                              "degenerate (zero area at a corner)" :
+                              "folded (its corners turn the wrong way)")
+                        << "; every cell must be a convex quadrilateral";
+                throw InputError(where + "/Mesh", message.str());
+              }
+          }
+      }
   }
 
 
@@ -210,6 +255,109 @@ namespace glissade
                                " lines");
         }
     }
+
+    /**
+     * deal.II gives each boundary face one boundary id. A Gmsh curve in two
+     * physical groups (`bottom` and `boundary`, common practice) is written
+     * by MSH 2.2 as one line element per group, and deal.II keeps whichever
+     * comes last: Dirichlet data would then hold some nodes only. Our rule,
+     * for both versions: a boundary face carries one name, and a file that
+     * gives one two is refused with the face (2.2) or curve (4.1) named.
+     */
+    void
+    check_one_name_per_face(const std::vector<std::string> &lines,
+                            const std::map<int, std::string> &group_name,
+                            const std::string              &file,
+                            const std::string              &entry)
+    {
+      const auto name_of = [&](const int tag) {
+        const auto it = group_name.find(tag);
+        return it == group_name.end() ? "physical tag " + std::to_string(tag) :
+                                        "'" + it->second + "'";
+      };
+      const auto refuse = [&](const std::string &what, const int a,
+                              const int b) {
+        throw InputError(entry,
+                         "'" + file + "': " + what +
+                           " belongs to two physical groups, " + name_of(a) +
+                           " and " + name_of(b) +
+                           "; glissade gives each boundary face one name. "
+                           "Keep one group per curve (list several names in "
+                           "the .prm entry instead, e.g. 'Fixed = bottom: y; "
+                           "side: x')");
+      };
+      std::size_t format = 0;
+      while (format < lines.size() && lines[format] != "$MeshFormat")
+        ++format;
+      const bool version_2 =
+        format + 1 < lines.size() && lines[format + 1].rfind("2.", 0) == 0;
+      if (version_2)
+        {
+          // "id type n_tags physical elementary ... nodes"; type 1: a line.
+          std::map<std::pair<long, long>, int> face_group;
+          std::size_t begin = 0;
+          while (begin < lines.size() && lines[begin] != "$Elements")
+            ++begin;
+          for (std::size_t k = begin + 2;
+               k < lines.size() && lines[k] != "$EndElements";
+               ++k)
+            {
+              std::istringstream line(lines[k]);
+              long               id = 0, type = 0, n_tags = 0;
+              line >> id >> type >> n_tags;
+              if (type != 1 || n_tags < 1)
+                continue;
+              long physical = 0, tag = 0, a = 0, b = 0;
+              line >> physical;
+              for (long t = 1; t < n_tags; ++t)
+                line >> tag;
+              line >> a >> b;
+              if (!line)
+                continue; // deal.II's reader reports malformed lines
+              const auto key = std::minmax(a, b);
+              const auto [it, inserted] =
+                face_group.emplace(key, static_cast<int>(physical));
+              if (!inserted && it->second != physical)
+                refuse("the boundary line between nodes " +
+                         std::to_string(a) + " and " + std::to_string(b),
+                       it->second,
+                       static_cast<int>(physical));
+            }
+          return;
+        }
+      // Version 4: "$Entities", then "n_points n_curves n_surfaces
+      // n_volumes", the points ("tag x y z n_physical tags..."), then the
+      // curves ("tag 6 x bounds n_physical tags... n_bounding ...").
+      std::size_t begin = 0;
+      while (begin < lines.size() && lines[begin] != "$Entities")
+        ++begin;
+      if (begin + 1 >= lines.size())
+        return;
+      std::istringstream counts(lines[begin + 1]);
+      long               n_points = 0, n_curves = 0;
+      counts >> n_points >> n_curves;
+      for (long c = 0; c < n_curves; ++c)
+        {
+          const std::size_t k = begin + 2 + n_points + c;
+          if (k >= lines.size() || lines[k] == "$EndEntities")
+            return;
+          std::istringstream line(lines[k]);
+          long               tag = 0, n_physical = 0;
+          double             bound = 0.;
+          line >> tag;
+          for (unsigned int i = 0; i < 6; ++i)
+            line >> bound;
+          line >> n_physical;
+          if (line && n_physical > 1)
+            {
+              long first = 0, second = 0;
+              line >> first >> second;
+              refuse("curve " + std::to_string(tag),
+                     static_cast<int>(first),
+                     static_cast<int>(second));
+            }
+        }
+    }
   } // namespace
 
 
@@ -264,6 +412,12 @@ namespace glissade
             }
           break;
         }
+    {
+      std::map<int, std::string> group_name;
+      for (const auto &[name, id] : names)
+        group_name[id] = name;
+      check_one_name_per_face(lines, group_name, description.file, entry);
+    }
 
     try
       {

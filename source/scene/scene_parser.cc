@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -292,6 +293,15 @@ namespace glissade
                                           360.))
         throw InputError(where + "/Mesh/End angle",
                          "must be larger than Start angle, by less than 360");
+      if (mesh.type != "half ring" &&
+          (mesh.start_angle != 0. || mesh.end_angle != 180.))
+        throw InputError(where + "/Mesh/" +
+                           (mesh.start_angle != 0. ? "Start angle" :
+                                                     "End angle"),
+                         "applies to Type = half ring only (this mesh is a " +
+                           mesh.type +
+                           "); to turn a body, use Boundary conditions/"
+                           "Prescribed rotation");
       if (mesh.type == "ring" && mesh.subdivisions[0] < 3)
         throw InputError(where + "/Mesh/Subdivisions",
                          "a ring needs at least 3 elements around");
@@ -377,6 +387,32 @@ namespace glissade
           body.dirichlet.push_back(item);
         }
 
+      // Two Dirichlet data on one location and component contradict each
+      // other (which wins would depend on the order of application).
+      for (unsigned int i = 0; i < body.dirichlet.size(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          {
+            const DirichletDescription &a = body.dirichlet[j],
+                                       &b = body.dirichlet[i];
+            const auto both_x = [](const DirichletDescription &d) {
+              return d.kind == DirichletDescription::Kind::rotation ||
+                     d.x_component;
+            };
+            const auto both_y = [](const DirichletDescription &d) {
+              return d.kind == DirichletDescription::Kind::rotation ||
+                     d.y_component;
+            };
+            if (text::trim(a.location) == text::trim(b.location) &&
+                ((both_x(a) && both_x(b)) || (both_y(a) && both_y(b))))
+              throw InputError(b.entry,
+                               "'" + text::trim(b.location) +
+                                 "' is already constrained in the same "
+                                 "component by " +
+                                 a.entry +
+                                 ": give each component of a boundary one "
+                                 "Dirichlet datum");
+          }
+
       const auto add_neumann = [&](const std::string              &entry,
                                    const NeumannDescription::Kind kind,
                                    const unsigned int n_expressions,
@@ -435,7 +471,7 @@ namespace glissade
      * only there): a restart refuses a checkpoint of another scene.
      */
     std::string
-    fingerprint(ParameterHandler &prm)
+    fingerprint(ParameterHandler &prm, const std::vector<std::string> &files)
     {
       prm.enter_subsection("Checkpoint");
       const std::string interval = prm.get("Interval");
@@ -449,6 +485,13 @@ namespace glissade
       prm.set("Interval", interval);
       prm.set("Stop after increment", stop);
       prm.leave_subsection();
+      // The content of the files the scene reads (meshes): a restart after a
+      // mesh file changed would otherwise continue a different problem.
+      for (const auto &file : files)
+        {
+          std::ifstream in(file, std::ios::binary);
+          text << "\nfile " << file << '\n' << in.rdbuf();
+        }
 
       std::uint64_t hash = 14695981039346656037ull;
       for (const char c : text.str())
@@ -563,6 +606,15 @@ namespace glissade
     scene.newton.displacement_tolerance =
       prm.get_double("Displacement tolerance");
     prm.leave_subsection();
+    check_part([&]() {
+      if (!(scene.newton.residual_tolerance > 0.))
+        throw InputError(source + ": Newton/Residual tolerance",
+                         "must be > 0: a residual is never exactly zero in "
+                         "floating point (1e-9 to 1e-12 is usual)");
+      if (!(scene.newton.displacement_tolerance > 0.))
+        throw InputError(source + ": Newton/Displacement tolerance",
+                         "must be > 0 (1e-6 to 1e-10 is usual)");
+    });
 
     prm.enter_subsection("Output");
     scene.output.directory    = prm.get("Directory");
@@ -591,7 +643,11 @@ namespace glissade
     });
 
     mistakes.throw_if_any();
-    scene.fingerprint = fingerprint(handler);
+    std::vector<std::string> files_read;
+    for (const auto &body : scene.bodies)
+      if (!body.mesh.file.empty())
+        files_read.push_back(body.mesh.file);
+    scene.fingerprint = fingerprint(handler, files_read);
     return scene;
   }
 } // namespace glissade

@@ -5,6 +5,7 @@
 #include <glissade/base/text.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/fe/element_space_registry.h>
+#include <glissade/scene/parameter_file.h>
 #include <glissade/scene/scene_reader.h>
 
 #include <algorithm>
@@ -254,6 +255,33 @@ namespace glissade
         prm.leave_subsection();
     }
 
+    /**
+     * Body and contact pair names become parts of output file names
+     * ("<body>-00010.vtu", "contact-<pair>-00010.csv"): a name that is a
+     * path ("up/../../x") would write outside the output directory.
+     */
+    void
+    check_file_name_parts(const std::vector<std::string> &names,
+                          const std::string              &entry,
+                          const std::string              &what)
+    {
+      for (const auto &name : names)
+        {
+          bool printable = true;
+          for (const unsigned char c : name)
+            printable = printable && c >= 32 && c != 127;
+          if (name.empty() || name == "." || name == ".." ||
+              name.find_first_of("/\\") != std::string::npos || !printable)
+            throw InputError(entry,
+                             what + " name '" + name +
+                               "' cannot be part of a file name: use "
+                               "letters, digits, spaces, '-', '_' or '.', "
+                               "without '/' or '\\'");
+        }
+    }
+
+
+
     std::vector<std::string>
     read_body_names(const std::string &text_value, const std::string &source)
     {
@@ -266,6 +294,7 @@ namespace glissade
           if (names[i] == names[j])
             throw InputError(source + ": Scene/Bodies",
                              "body '" + names[i] + "' is named twice");
+      check_file_name_parts(names, source + ": Scene/Bodies", "body");
       return names;
     }
 
@@ -419,6 +448,9 @@ namespace glissade
       body_names = read_body_names(prm.get("Bodies"), source);
       contact_names =
         Utilities::split_string_list(prm.get("Contact pairs"), ',');
+      check_file_name_parts(contact_names,
+                            source + ": Scene/Contact pairs",
+                            "contact pair");
       prm.leave_subsection();
     }
 
@@ -485,12 +517,7 @@ namespace glissade
   SceneReader::read_file(const std::string              &filename,
                          const std::vector<std::string> &overrides)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError(filename, "cannot open the parameter file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return read_string(buffer.str(), filename, overrides);
+    return read_string(read_parameter_file(filename), filename, overrides);
   }
 
 
@@ -500,12 +527,10 @@ namespace glissade
                            const std::string              &filename,
                            const std::vector<std::string> &overrides)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError(filename, "cannot open the parameter file");
+    const std::string text_value = read_parameter_file(filename);
     try
       {
-        prm.parse_input(in, filename);
+        prm.parse_input_from_string(text_value, "", false);
         for (const auto &o : overrides)
           apply_override(prm, o);
       }
@@ -564,16 +589,12 @@ namespace glissade
   std::string
   SceneReader::study_type(const std::string &filename)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError(filename, "cannot open the parameter file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    ParameterHandler prm;
+    const std::string text_value = read_parameter_file(filename);
+    ParameterHandler  prm;
     prm.declare_entry("Study", "simulation", Patterns::Anything());
     try
       {
-        prm.parse_input_from_string(buffer.str(), "", true);
+        prm.parse_input_from_string(text_value, "", true);
       }
     catch (const std::exception &e)
       {

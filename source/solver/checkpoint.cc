@@ -86,15 +86,14 @@ namespace glissade
   {
     TimerOutput::Scope scope(timer, timing::checkpoints);
     AtomicFile         file(checkpoint_file());
-    {
-      boost::archive::binary_oarchive archive(file.stream());
+    file.write_and_commit([&](std::ostream &out) {
+      boost::archive::binary_oarchive archive(out);
       std::string  format      = checkpoint_format;
       std::string  fingerprint = scene.fingerprint;
       unsigned int last        = increment;
       archive     &format &fingerprint &last;
       serialize_state(archive);
-    }
-    file.commit();
+    });
   }
 
 
@@ -121,8 +120,9 @@ namespace glissade
         if (fingerprint != scene.fingerprint)
           throw InputError(checkpoint_file(),
                            "was written for another scene: " + scene.source +
-                             " (with its --set overrides) has changed since; "
-                             "only the Checkpoint section may differ");
+                             " (with its --set overrides) or a mesh file it "
+                             "reads has changed since; only the Checkpoint "
+                             "section may differ");
         serialize_state(archive);
       }
     catch (const InputError &)

@@ -2,8 +2,10 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/interruption.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/directory_lock.h>
 #include <glissade/solver/simulation.h>
 
 #include <algorithm>
@@ -62,12 +64,17 @@ namespace glissade
     contact_problem->begin_step(t_start, t);
 
     residual_history.clear();
+    failure_cause.clear();
     double first_residual = 0.;
     double last_increment = std::numeric_limits<double>::max();
     double displacement_norm = 0.;
     double size              = 0.;
+    unsigned int n_dofs      = 0;
     for (auto &b : all_bodies)
-      size = std::max(size, b->size());
+      {
+        size = std::max(size, b->size());
+        n_dofs += b->n_dofs();
+      }
 
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
@@ -85,7 +92,14 @@ namespace glissade
         }
         const double residual = std::sqrt(residual_squared);
         if (!admissible || !std::isfinite(residual))
-          return false;
+          {
+            failure_cause.clear();
+            for (auto &b : all_bodies)
+              if (!b->assembly_problem().empty())
+                failure_cause += (failure_cause.empty() ? "" : "; ") +
+                                 b->assembly_problem();
+            return false;
+          }
         // The reference of divergence: a step driven by prescribed
         // displacements starts from a zero residual, so take the larger of
         // the first two.
@@ -97,10 +111,16 @@ namespace glissade
 
         // At least one correction per step: at iteration 0 the prescribed
         // displacements of the new time are not applied yet.
+        // The displacement test is relative to |u|; when nothing moves (a
+        // scene at rest, contact closed with no load) |u| is itself round-off,
+        // so the correction is also accepted once it is at the round-off of
+        // the nodes' positions (size * sqrt(n) * 100 eps).
         const bool converged =
           iteration > 0 && residual <= settings.residual_tolerance * scale &&
-          last_increment <= settings.displacement_tolerance *
-                              std::max(displacement_norm, 1e-12 * size);
+          last_increment <=
+            std::max(settings.displacement_tolerance * displacement_norm,
+                     100. * std::numeric_limits<double>::epsilon() * size *
+                       std::sqrt(double(n_dofs)));
         // A converged state with a slave node behind the master that was
         // not active (beyond the alert distance at the start of the
         // increment) is not a solution: iterate on with that node.
@@ -121,7 +141,11 @@ namespace glissade
         if (iteration == settings.max_iterations)
           break;
         if (iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300))
-          return false; // diverging
+          {
+            failure_cause = "Newton diverges: the residual grew by more than "
+                            "1e8 over its first value";
+            return false;
+          }
 
         // Predictor: the contact-free step of every body; then the contact
         // correction on the condensed system; then the update.
@@ -137,6 +161,8 @@ namespace glissade
           }
         if (!contact_problem->empty() && !contact_problem->correct(du))
           {
+            failure_cause =
+              "the contact problem: " + contact_problem->last_result().message;
             if (scene.output.progress)
               std::cout << "    contact: " << contact_problem->last_result().message
                         << std::endl;
@@ -158,16 +184,23 @@ namespace glissade
             std::cerr << "    body " << b << " |du| " << du[b].l2_norm()
                       << " max " << du[b].linfty_norm() << " |u| "
                       << all_bodies[b]->displacement().l2_norm() << std::endl;
+        displacement_norm = std::sqrt(displacement_norm);
         if (std::getenv("GLISSADE_DEBUG"))
           std::cerr << "  it " << iteration << " |R|/F " << scaled << " |du| "
                     << last_increment << " |u| " << displacement_norm
                     << " active " << contact_problem->n_active() << " sweeps "
                     << contact_problem->last_result().sweeps << std::endl;
-        displacement_norm = std::sqrt(displacement_norm);
         if (!std::isfinite(last_increment))
-          return false;
+          {
+            failure_cause = "the Newton correction is not finite (a singular "
+                            "tangent: a body or a rigid-body mode without "
+                            "support?)";
+            return false;
+          }
       }
     stats.newton_iterations += settings.max_iterations;
+    failure_cause = "no convergence in Newton/Maximum iterations = " +
+                    std::to_string(settings.max_iterations);
     return false;
   }
 
@@ -181,8 +214,21 @@ namespace glissade
     for (auto &b : all_bodies)
       b->store_state();
     contact_problem->store_state();
-    if (newton(t_start, t_end))
-      return true;
+    try
+      {
+        if (newton(t_start, t_end))
+          return true;
+      }
+    catch (...)
+      {
+        // An input error found while iterating (an expression that is not
+        // finite at this time): the state goes back to the last converged
+        // one, which the caller may still write.
+        for (auto &b : all_bodies)
+          b->restore_state();
+        contact_problem->restore_state();
+        throw;
+      }
     for (auto &b : all_bodies)
       b->restore_state();
     contact_problem->restore_state();
@@ -215,6 +261,9 @@ namespace glissade
                    "of the last attempt:";
         for (const double r : residual_history)
           message << ' ' << std::setprecision(3) << r;
+        if (!failure_cause.empty())
+          message << ". Cause of the last attempt's failure: "
+                  << failure_cause;
         throw ConvergenceFailure(message.str());
       }
     current_time = t;
@@ -294,11 +343,43 @@ namespace glissade
 
 
 
+  void
+  Simulation::write_last_converged_state(const unsigned int increment)
+  {
+    // Its VTU and contact tables are written already if the increment was
+    // an output increment; otherwise write them now, so that a failed run
+    // shows where it stood.
+    const bool vtu_written = increment == 0 ||
+                             (scene.output.vtu_interval > 0 &&
+                              increment % scene.output.vtu_interval == 0);
+    try
+      {
+        if (!vtu_written)
+          write_output(increment, current_time);
+        else if (scene.output.contact_table_interval > 0 &&
+                 increment % scene.output.contact_table_interval != 0)
+          write_contact_table(increment);
+        std::cerr << "glissade: the last converged state (increment "
+                  << increment << ", t = " << current_time
+                  << ") is in " << scene.output.directory << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "glissade: the last converged state could not be "
+                     "written: "
+                  << e.what() << std::endl;
+      }
+  }
+
+
+
   bool
   Simulation::run(const bool restart)
   {
     Timer wall;
-    std::filesystem::create_directories(scene.output.directory);
+    // One run per output directory at a time (held until run() returns).
+    const DirectoryLock output_lock(scene.output.directory,
+                                    scene.source + ": Output/Directory");
 
     const LoadProgram &program = scene.load_program;
     unsigned int       n_total = 0;
@@ -337,8 +418,17 @@ namespace glissade
             const double t = t_begin + (t_end - t_begin) * double(k) / n;
             if (increment <= restart_increment)
               continue;
-            const unsigned int iterations =
-              advance_to(t, "increment " + std::to_string(increment));
+            unsigned int iterations = 0;
+            try
+              {
+                iterations =
+                  advance_to(t, "increment " + std::to_string(increment));
+              }
+            catch (...)
+              {
+                write_last_converged_state(increment - 1);
+                throw;
+              }
             ++stats.increments;
             if (scene.output.progress)
               std::cout << "increment " << std::setw(5) << increment << "/"
@@ -377,6 +467,30 @@ namespace glissade
               {
                 completed = false;
                 break;
+              }
+            if (const int signal = interruption::signal_received())
+              {
+                stats.wall_seconds = wall_before + wall.wall_time();
+                if (!(scene.checkpoint.interval > 0 &&
+                      increment % scene.checkpoint.interval == 0))
+                  write_checkpoint(increment);
+                if (!(last || (scene.output.vtu_interval > 0 &&
+                               increment % scene.output.vtu_interval == 0)))
+                  write_output(increment, t);
+                AtomicFile summary_file(scene.output.directory +
+                                        "/summary.txt");
+                summary_file.stream()
+                  << summary() << '\n'
+                  << timing_table() << "stopped by "
+                  << interruption::signal_name(signal) << " after increment "
+                  << increment << " of " << n_total
+                  << "; continue with --restart\n";
+                summary_file.commit();
+                throw RunInterrupted(
+                  interruption::signal_name(signal) + " received: stopped "
+                  "after increment " + std::to_string(increment) + " of " +
+                  std::to_string(n_total) + " (t = " + std::to_string(t) +
+                  "), its state in " + checkpoint_file());
               }
           }
         t_begin = t_end;

@@ -188,6 +188,17 @@ namespace glissade
       archive &solution &contact_forces;
     }
 
+    /**
+     * Why the last assemble() returned false, in words naming the body and
+     * the cell (an inverted element, a stress beyond double precision);
+     * empty if it returned true.
+     */
+    const std::string &
+    assembly_problem() const
+    {
+      return problem;
+    }
+
     /** A length that measures the body (diameter of the reference mesh). */
     double
     size() const
@@ -262,6 +273,7 @@ namespace glissade
                            Vector<double>          &cell_rhs) const;
 
     const BodyDescription               description;
+    std::string                         problem;
     const std::string                   source;
     Triangulation<2>                    mesh;
     BoundaryNames                       boundary_names;

@@ -72,7 +72,7 @@ namespace glissade
     {
       types::boundary_id                 boundary;
       bool                               is_pressure;
-      std::shared_ptr<FunctionParser<2>> function; // time set by the caller
+      std::shared_ptr<Function<2>> function; // time set by the caller
     };
 
     const std::vector<SurfaceLoad> &
@@ -117,7 +117,7 @@ namespace glissade
     struct PointLoad
     {
       Location                           where;
-      std::shared_ptr<FunctionParser<2>> force;
+      std::shared_ptr<Function<2>> force;
     };
 
     /**

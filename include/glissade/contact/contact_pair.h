@@ -9,6 +9,7 @@
 #include <glissade/contact/master_surface.h>
 #include <glissade/scene/scene_description.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -216,6 +217,15 @@ namespace glissade
     /** The surface at the current state (and the increment's end time). */
     void
     update_surface();
+
+    /**
+     * Refuses a rigid obstacle whose normal points, at every slave node,
+     * the same way as the slave boundary's outward normal (given per slave
+     * vertex): contact could never close.
+     */
+    void
+    check_obstacle_faces_slave(
+      const std::map<unsigned int, Tensor<1, 2>> &outward_normal);
 
     /** False for a node that no reaction can move (see the definition). */
     bool

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace glissade
@@ -26,7 +27,31 @@ namespace glissade
     void
     commit();
 
+    /**
+     * Runs `write(stream())` and commits. Whatever the writer throws when
+     * the stream fails (deal.II's ExcIO with its stack trace, boost's
+     * archive exceptions, std::bad_cast) becomes one plain message naming
+     * the file: a full disk must read as a full disk.
+     */
+    template <typename Writer>
+    void
+    write_and_commit(const Writer &write)
+    {
+      try
+        {
+          write(out);
+        }
+      catch (...)
+        {
+          throw std::runtime_error(failure_message());
+        }
+      commit();
+    }
+
   private:
+    std::string
+    failure_message() const;
+
     std::string   filename;
     std::string   temporary;
     std::ofstream out;

@@ -47,5 +47,10 @@ namespace glissade
     read_gmsh(const MeshDescription &description,
               Triangulation<2>      &triangulation,
               const std::string     &where);
+
+    /** Refuses a cell with a zero or negative Jacobian at a corner. */
+    static void
+    check_cells_are_not_folded(const Triangulation<2> &triangulation,
+                               const std::string      &where);
   };
 } // namespace glissade

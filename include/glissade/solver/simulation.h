@@ -138,6 +138,14 @@ namespace glissade
     void
     write_output(const unsigned int increment, const double t);
 
+    /**
+     * Before a stop (an increment that failed, an input error found while
+     * iterating): the VTU and contact tables of the last converged state,
+     * unless they were written at that increment already.
+     */
+    void
+    write_last_converged_state(const unsigned int increment);
+
     /** contact-<pair>-<increment>.csv: every slave node's state. */
     void
     write_contact_table(const unsigned int increment) const;
@@ -159,6 +167,8 @@ namespace glissade
     void
     serialize_state(Archive &archive);
 
+    /** Why the last Newton attempt failed, in words (empty if it did not). */
+    std::string                        failure_cause;
     const SceneDescription             scene;
     /** Every timed part of the run (never printed by itself). */
     TimerOutput                        timer;
