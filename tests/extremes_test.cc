@@ -666,13 +666,10 @@ GLISSADE_TEST(extreme_grazing_contact)
 // in doc/contact.md), so it is reported, not required.
 GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
 {
-  // (surface, degrees turned). Hermite masters freeze the frame over an
-  // increment (Frame update = increment), so a node's recorded projection
-  // is that of the increment's start: after a turn it would be mid-segment.
-  // Hermite is checked after the compression, where nodes do not slide.
+  // (surface, degrees turned).
   const std::vector<std::pair<std::string, double>> runs = {
-    {"bspline", 0.}, {"bspline", 9.}, {"hermite", 0.}, {"faceted", 0.},
-    {"faceted", 9.}};
+    {"bspline", 0.}, {"bspline", 9.}, {"hermite", 0.}, {"hermite", 9.},
+    {"faceted", 0.}, {"faceted", 9.}};
   for (const auto &[surface, degrees] : runs)
     {
       std::vector<std::string> overrides = {
