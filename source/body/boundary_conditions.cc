@@ -262,6 +262,17 @@ namespace glissade
                              d.entry);
         item.components      = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
+        if (d.direction != DirichletDescription::Direction::cartesian)
+          {
+            if (body.element_space != "q1")
+              throw InputError(d.entry,
+                               "the normal (n) and tangential (t) supports "
+                               "are implemented for q1 bodies; body '" +
+                                 body.name + "' uses " + body.element_space +
+                                 " (use x, y or a rotated mesh)");
+            item.directed_vertices = support_directions(
+              item.where, d.direction, tria, body.name, d.entry);
+          }
         switch (d.kind)
           {
             case DirichletDescription::Kind::fixed:
@@ -310,6 +321,60 @@ namespace glissade
 
 
 
+  std::vector<std::pair<unsigned int, Tensor<1, 2>>>
+  BoundaryConditions::support_directions(
+    const Location                         &where,
+    const DirichletDescription::Direction   direction,
+    const Triangulation<2>                 &tria,
+    const std::string                      &body_name,
+    const std::string                      &entry)
+  {
+    // The outward normal at a boundary vertex: the sum of the unit outward
+    // normals of its faces on that boundary (on any boundary for a point),
+    // which on a uniformly divided circle is the exact radius.
+    std::map<unsigned int, Tensor<1, 2>> normal;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            (where.is_vertex || cell->face(f)->boundary_id() == where.boundary))
+          {
+            const Tensor<1, 2> along =
+              cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
+            Tensor<1, 2> n({along[1], -along[0]});
+            if (n * (cell->face(f)->center() - cell->center()) < 0.)
+              n = -n;
+            for (const unsigned int v : {0u, 1u})
+              {
+                const unsigned int vertex = cell->face(f)->vertex_index(v);
+                if (!where.is_vertex || vertex == where.vertex)
+                  normal[vertex] += n / n.norm();
+              }
+          }
+    std::vector<std::pair<unsigned int, Tensor<1, 2>>> directions;
+    for (const auto &[vertex, n] : normal)
+      {
+        if (!(n.norm() > 1e-12))
+          throw InputError(entry,
+                           "body '" + body_name +
+                             "': the boundary normal at a node is undefined "
+                             "(a cusp); give x or y there");
+        const Tensor<1, 2> unit = n / n.norm();
+        directions.emplace_back(
+          vertex,
+          direction == DirichletDescription::Direction::normal ?
+            unit :
+            Tensor<1, 2>({-unit[1], unit[0]}));
+      }
+    if (directions.empty())
+      throw InputError(entry,
+                       "body '" + body_name +
+                         "': a normal or tangential support needs a point on "
+                         "the boundary");
+    return directions;
+  }
+
+
+
   void
   BoundaryConditions::make_constraints(
     const DoFHandler<2>             &dof_handler,
@@ -324,6 +389,27 @@ namespace glissade
     std::map<types::global_dof_index, DofRelation> relations;
     for (const auto &item : dirichlet_items)
       {
+        if (!item.directed_vertices.empty())
+          {
+            // d . u = 0: u_a + (d_b / d_a) u_b = 0, pivoting on the larger
+            // component of d, or on the other one if a support of another
+            // direction already holds that dof (a corner between two
+            // rollers).
+            for (const auto &[vertex, d] : item.directed_vertices)
+              {
+                const auto dofs = cached_vertex_dofs(dof_handler, space, vertex);
+                unsigned int a = std::abs(d[0]) >= std::abs(d[1]) ? 0 : 1;
+                if (relations.count(dofs[a]) && !relations.count(dofs[1 - a]) &&
+                    std::abs(d[1 - a]) > 1e-12)
+                  a = 1 - a;
+                const unsigned int b = 1 - a;
+                DofRelation        r{dofs[a], {}, 0.};
+                if (std::abs(d[b]) > 1e-14 * std::abs(d[a]))
+                  r.others.push_back({dofs[b], d[b] / d[a]});
+                relations[r.dof] = r;
+              }
+            continue;
+          }
         item.displacement->set_time(time);
         std::vector<DofRelation> these;
         if (item.where.is_vertex)

@@ -156,10 +156,25 @@ namespace glissade
                      const std::string    &where)
     {
       const std::string c = text::trim(components);
+      if ((c == "n" || c == "t") &&
+          item.kind == DirichletDescription::Kind::fixed)
+        {
+          item.direction       = c == "n" ?
+                                   DirichletDescription::Direction::normal :
+                                   DirichletDescription::Direction::tangential;
+          item.x_component     = false;
+          item.y_component     = false;
+          item.all_derivatives = false;
+          return;
+        }
       if (c != "x" && c != "y" && c != "xy" && c != "all")
         throw InputError(where,
-                         "components must be x, y, xy or all, not '" + c +
-                           "'");
+                         "components must be x, y, xy or all" +
+                           std::string(item.kind ==
+                                           DirichletDescription::Kind::fixed ?
+                                         ", or n or t (normal, tangential)" :
+                                         "") +
+                           ", not '" + c + "'");
       item.all_derivatives = (c == "all");
       item.x_component = item.all_derivatives || (c.find('x') != std::string::npos);
       item.y_component = item.all_derivatives || (c.find('y') != std::string::npos);
@@ -394,12 +409,16 @@ namespace glissade
           {
             const DirichletDescription &a = body.dirichlet[j],
                                        &b = body.dirichlet[i];
+            // A rotation, a normal or a tangential support involves both
+            // Cartesian components.
             const auto both_x = [](const DirichletDescription &d) {
               return d.kind == DirichletDescription::Kind::rotation ||
+                     d.direction != DirichletDescription::Direction::cartesian ||
                      d.x_component;
             };
             const auto both_y = [](const DirichletDescription &d) {
               return d.kind == DirichletDescription::Kind::rotation ||
+                     d.direction != DirichletDescription::Direction::cartesian ||
                      d.y_component;
             };
             if (text::trim(a.location) == text::trim(b.location) &&

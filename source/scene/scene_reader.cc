@@ -111,8 +111,11 @@ namespace glissade
           "boundary name or point(x, y) (a mesh vertex), components x, y or "
           "xy, or all: xy and every derivative dof of Hermite elements (the "
           "paper's fully clamped nodes; by default a fixed Hermite boundary "
-          "fixes values and tangential derivatives). Example: 'left: xy; "
-          "point(0, 0): y'.");
+          "fixes values and tangential derivatives); or n (t): zero "
+          "displacement normal (tangential) to the boundary at each node, "
+          "along the reference configuration's normal there (a roller on a "
+          "curved boundary; q1 bodies). Example: 'left: xy; point(0, 0): y; "
+          "outer: n'.");
         prm.declare_entry(
           "Prescribed displacement",
           "",

@@ -113,7 +113,17 @@ namespace glissade
       std::array<bool, 2>               components;
       bool                              all_derivatives;
       std::shared_ptr<Function<2>>      displacement; // 2 components
+      /** n or t supports: each node and the direction held there. */
+      std::vector<std::pair<unsigned int, Tensor<1, 2>>> directed_vertices;
     };
+
+    /** The nodes of a location and the (unit) direction d with d . u = 0. */
+    static std::vector<std::pair<unsigned int, Tensor<1, 2>>>
+    support_directions(const Location                       &where,
+                       const DirichletDescription::Direction direction,
+                       const Triangulation<2>               &tria,
+                       const std::string                    &body_name,
+                       const std::string                    &entry);
     struct PointLoad
     {
       Location                           where;

@@ -48,6 +48,19 @@ namespace glissade
     bool                     y_component = true;
     /** "all": also every derivative dof (Hermite), as in the paper's fig 11. */
     bool                     all_derivatives = false;
+    /**
+     * "n" or "t" (Fixed only): the displacement normal (or tangential) to
+     * the boundary is zero at each node, in the reference configuration's
+     * direction there: a roller on a curved boundary. x_component and
+     * y_component are then both false.
+     */
+    enum class Direction
+    {
+      cartesian,
+      normal,
+      tangential
+    };
+    Direction                direction = Direction::cartesian;
     std::vector<std::string> expressions; // displacement: one per component
     Point<2>                 rotation_center;
     std::string              angle_expression; // rotation, radians
