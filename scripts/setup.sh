@@ -18,5 +18,6 @@ if [ -n "$missing" ]; then
   apt-get install -y -qq --no-install-recommends $missing >/dev/null
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# -Werror: a warning fails the build (and CI), so that the build stays clean.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DGLISSADE_WERROR=ON >/dev/null
 cmake --build build -j2

@@ -100,11 +100,13 @@ namespace
 {
   /** Two blocks with non-matching meshes, the upper pushed onto the lower. */
   std::string
-  two_blocks(const std::string &surface, const std::string &space)
+  two_blocks(const std::string &surface,
+             const std::string &space,
+             const std::string &upper_cells = "5, 3")
   {
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
-           block("upper", "0, 0.5", "1, 1", "5, 3", "q1",
+           block("upper", "0, 0.5", "1, 1", upper_cells, "q1",
                  "  set Fixed = left: x\n"
                  "  set Prescribed displacement = top: y: -0.02*t") +
            block("lower", "0, 0", "1, 0.5", "8, 4", space,
@@ -161,41 +163,58 @@ GLISSADE_TEST(contact_action_reaction)
     }
 }
 
-// The contact patch test: a uniform compression must cross the
-// non-matching interface as a uniform pressure. One-pass node-to-segment
-// passes it only approximately; the deviation is reported per surface, and
-// checked only for what node-to-segment guarantees: the total.
+// The contact patch test: a uniform compression must cross the interface
+// as a uniform pressure (the closed-form solution is a uniform stress).
+// With matching meshes (slave nodes on master nodes) node-to-segment passes
+// it to round-off on a Q4 master (faceted, B-spline). A Hermite master
+// does not: it carries the point forces into derivative dofs too (21 %
+// here). With non-matching meshes (5 upper
+// cells on 8 lower) one-pass node-to-segment is known to fail it (Taylor &
+// Papadopoulos 1991; Zavarise & De Lorenzis 2009): the deviation is bounded
+// here, at a level that a real regression of the transfer would exceed,
+// and the total must still equal the support's reaction.
 GLISSADE_TEST(contact_patch_two_blocks)
 {
-  for (const auto &[surface, space] :
-       std::vector<std::pair<std::string, std::string>>{
-         {"faceted", "q1"}, {"bspline", "q1"}, {"hermite", "hermite"}})
-    {
-      Simulation simulation(
-        SceneReader::read_string(two_blocks(surface, space), "patch"));
-      run(simulation, 2);
-      const auto &pair = *simulation.contact().contact_pairs()[0];
-      // Slave nodes: 6 along the bottom of the upper block, h = 0.2; the
-      // end nodes carry half a tributary length.
-      double total = 0., deviation = 0.;
-      std::vector<double> pressure;
-      for (const auto &node : pair.nodes())
-        {
-          const double X = node.reference_position[0];
-          const double tributary = (X < 1e-12 || X > 1 - 1e-12) ? 0.1 : 0.2;
-          pressure.push_back(node.reaction[1] / tributary);
-          total += node.force()[1];
-        }
-      const double mean = total / 1.;
-      for (const double p : pressure)
-        deviation = std::max(deviation, std::abs(p - mean) / mean);
-      const double support = -simulation.body("upper").reaction("top")[1];
-      std::cout << "  " << surface << ": mean pressure " << mean
-                << ", largest deviation from uniform " << 100 * deviation
-                << " %, support reaction " << support << std::endl;
-      check_relative(total, support, 1e-9, surface + ": total transmitted");
-    }
+  for (const std::string cells : {"8, 3", "5, 3"})
+    for (const auto &[surface, space] :
+         std::vector<std::pair<std::string, std::string>>{
+           {"faceted", "q1"}, {"bspline", "q1"}, {"hermite", "hermite"}})
+      {
+        const bool matching = cells == "8, 3";
+        Simulation simulation(SceneReader::read_string(
+          two_blocks(surface, space, cells), "patch"));
+        run(simulation, 2);
+        const auto  &pair = *simulation.contact().contact_pairs()[0];
+        const double h    = matching ? 1. / 8. : 1. / 5.;
+        double       total = 0., deviation = 0.;
+        std::vector<double> pressure;
+        for (const auto &node : pair.nodes())
+          {
+            // The end nodes carry half a tributary length.
+            const double X = node.reference_position[0];
+            const double tributary = (X < 1e-12 || X > 1 - 1e-12) ? h / 2 : h;
+            pressure.push_back(node.reaction[1] / tributary);
+            total += node.force()[1];
+          }
+        const double mean = total / 1.;
+        for (const double p : pressure)
+          deviation = std::max(deviation, std::abs(p - mean) / mean);
+        const double support = -simulation.body("upper").reaction("top")[1];
+        const std::string label =
+          surface + (matching ? ", matching meshes" : ", 5 cells on 8");
+        std::cout << "  " << label << ": mean pressure " << mean
+                  << ", largest deviation from uniform " << 100 * deviation
+                  << " %, support reaction " << support << std::endl;
+        check_relative(total, support, 1e-9, label + ": total transmitted");
+        // A Hermite master takes the slave's point forces into value and
+        // derivative dofs: even on matching meshes its edge is not loaded
+        // as Q4 nodes would load it, so only the Q4 masters pass exactly.
+        check(deviation <= (matching && space == "q1" ? 1e-8 : 0.25),
+              label + ": the pressure is not uniform enough");
+      }
 }
+
+
 
 // A rigid disk pressed into a block that is symmetric about x = 0.5: the
 // contact forces of mirror nodes agree.

@@ -25,6 +25,14 @@ int
 main(int argc, char **argv)
 {
   auto &tests = glissade_tests::registry();
+  // ctest learns the test names from here (tests/discover_tests.cmake), so
+  // a test is named once, where it is written.
+  if (argc == 2 && std::string(argv[1]) == "--list")
+    {
+      for (const auto &t : tests)
+        std::cout << t.first << '\n';
+      return 0;
+    }
   if (argc != 2 || tests.find(argv[1]) == tests.end())
     {
       std::cerr << "usage: glissade_tests <test>; tests:\n";

@@ -98,6 +98,14 @@ namespace glissade
 
     bool admissible = true;
     problem.clear();
+    if (!std::isfinite(solution.l2_norm()))
+      {
+        problem = "the displacement of body '" + name() +
+                  "' is not finite: the Newton correction was, from a "
+                  "singular tangent (a rigid-body motion that no support "
+                  "holds? see Boundary conditions)";
+        return false;
+      }
     for (const auto &cell : dofs.active_cell_iterators())
       {
         evaluator->reinit(cell);

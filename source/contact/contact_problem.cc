@@ -52,7 +52,23 @@ namespace glissade
       }
 
     // The active nodes of all pairs form one local problem, solved with
-    // the settings of the first pair.
+    // one set of settings: pairs that ask for different ones would have
+    // all but the first silently ignored, so they are refused.
+    for (const auto &pair : pairs)
+      {
+        const auto &a = pairs[0]->settings(), &b = pair->settings();
+        for (const auto &[name, differs] :
+             {std::pair<const char *, bool>{"Beta", a.beta != b.beta},
+              {"Tolerance", a.tolerance != b.tolerance},
+              {"Maximum sweeps", a.max_sweeps != b.max_sweeps}})
+          if (differs)
+            throw InputError(b.entry + "/" + name,
+                             std::string("differs from ") + a.entry + "/" +
+                               name +
+                               ": the active nodes of all pairs form one "
+                               "local problem, solved with one set of "
+                               "settings; give every pair the same value");
+      }
     if (!pairs.empty())
       {
         const auto &first                  = pairs[0]->settings();

@@ -1,5 +1,6 @@
 #include <deal.II/base/function_parser.h>
 
+#include <glissade/base/input_error.h>
 #include <glissade/contact/master_surface.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/scene/scene_description.h>
@@ -25,6 +26,8 @@ namespace glissade
       RigidObstacle(const ContactDescription &d)
         : reference_point(d.obstacle_point)
         , motion(std::make_shared<FunctionParser<2>>(2))
+        , entry(d.entry + "/Obstacle/Motion")
+        , expressions(d.obstacle_motion)
       {
         motion->initialize("x,y,t", d.obstacle_motion, {{"pi", numbers::PI}},
                            true);
@@ -82,12 +85,23 @@ namespace glissade
       translation(const double time) const
       {
         motion->set_time(time);
-        return Tensor<1, 2>({motion->value(Point<2>(), 0),
-                             motion->value(Point<2>(), 1)});
+        const Tensor<1, 2> m({motion->value(Point<2>(), 0),
+                              motion->value(Point<2>(), 1)});
+        for (unsigned int c = 0; c < 2; ++c)
+          if (!std::isfinite(m[c]))
+            throw InputError(entry,
+                             "'" + expressions[c] + "' evaluates to " +
+                               std::to_string(m[c]) + " at t = " +
+                               std::to_string(time) +
+                               ": the obstacle's motion must be finite "
+                               "whenever it is used");
+        return m;
       }
 
       const Point<2>                     reference_point;
       std::shared_ptr<FunctionParser<2>> motion;
+      const std::string                  entry;
+      const std::vector<std::string>     expressions;
       Tensor<1, 2>                       step_motion;
     };
 

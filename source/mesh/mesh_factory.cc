@@ -9,8 +9,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace glissade
@@ -227,6 +230,15 @@ namespace glissade
           find("$End" + lines[i].substr(1), i + 1);
       const std::size_t format = find("$MeshFormat", 0);
       const std::size_t format_end = find("$EndMeshFormat", format);
+      const std::string version =
+        format + 1 < format_end ?
+          lines[format + 1].substr(0, lines[format + 1].find(' ')) :
+          std::string();
+      if (version.rfind("2.", 0) != 0 && version != "4.1")
+        throw InputError(entry,
+                         "'" + file + "': MSH version '" + version +
+                           "' is not read: glissade reads MSH 2.2 and 4.1 "
+                           "(ASCII; gmsh -format msh22 or msh41)");
       const bool version_2 = format + 1 < format_end &&
                              lines[format + 1].rfind("2.", 0) == 0;
       std::size_t from = format_end;
@@ -254,6 +266,229 @@ namespace glissade
                                std::to_string(std::max(present, 0ll)) +
                                " lines");
         }
+    }
+
+    /** Nodes per element of the Gmsh element types deal.II may meet. */
+    int
+    gmsh_nodes_per_element(const long type)
+    {
+      switch (type)
+        {
+          case 1: return 2;   // line
+          case 2: return 3;   // triangle
+          case 3: return 4;   // quadrangle
+          case 4: return 4;   // tetrahedron
+          case 5: return 8;   // hexahedron
+          case 8: return 3;   // second-order line
+          case 9: return 6;   // second-order triangle
+          case 10: return 9;  // second-order quadrangle
+          case 15: return 1;  // point
+          case 16: return 8;  // serendipity quadrangle
+          default: return -1;
+        }
+    }
+
+    /** The whitespace-separated fields of a line, as long integers. */
+    bool
+    read_integers(const std::string &line, std::vector<long long> &values)
+    {
+      values.clear();
+      std::istringstream in(line);
+      std::string        field;
+      while (in >> field)
+        {
+          char     *end = nullptr;
+          const long long v = std::strtoll(field.c_str(), &end, 10);
+          if (*end != '\0')
+            return false;
+          values.push_back(v);
+        }
+      return true;
+    }
+
+    /**
+     * Every record of $Entities, $Nodes and $Elements checked against its
+     * declared counts before deal.II reads the file: its reader trusts
+     * them, and a stray line, an element block of dimension 6, a count of
+     * 4e9 nodes or a negative number of tags made it crash, allocate
+     * gigabytes or loop (found by fuzzing). Node references must name
+     * declared nodes, coordinates must be finite and z zero.
+     */
+    void
+    check_gmsh_records(const std::vector<std::string> &lines,
+                       const std::string              &file,
+                       const std::string              &entry)
+    {
+      const auto refuse = [&](const std::size_t line, const std::string &what) {
+        throw InputError(entry,
+                         "'" + file + "', line " + std::to_string(line + 1) +
+                           ": " + what);
+      };
+      const auto section = [&](const std::string &name) {
+        std::size_t begin = 0;
+        while (begin < lines.size() && lines[begin] != "$" + name)
+          ++begin;
+        std::size_t end = begin;
+        while (end < lines.size() && lines[end] != "$End" + name)
+          ++end;
+        return std::make_pair(begin, end); // both lines.size() if absent
+      };
+      std::size_t format = section("MeshFormat").first;
+      const std::string version =
+        lines[format + 1].substr(0, lines[format + 1].find(' '));
+      if (lines[format + 1].find(" 1 ") != std::string::npos &&
+          lines[format + 1].find(" 0 ") == std::string::npos)
+        refuse(format + 1, "binary MSH files are not read: save as ASCII");
+
+      std::vector<long long> v;
+      std::set<long long>    nodes;
+      const auto             [node_begin, node_end] = section("Nodes");
+      const auto             [element_begin, element_end] = section("Elements");
+      const auto coordinates = [&](const std::size_t k) {
+        std::istringstream in(lines[k]);
+        std::vector<double> x;
+        std::string         field;
+        while (in >> field)
+          {
+            char *end = nullptr;
+            x.push_back(std::strtod(field.c_str(), &end));
+            if (*end != '\0' || !std::isfinite(x.back()))
+              refuse(k, "a node coordinate is not a finite number");
+          }
+        return x;
+      };
+      const auto check_node_line = [&](const std::size_t k,
+                                       const std::vector<double> &x) {
+        if (x.size() < 3)
+          refuse(k, "a node needs x, y and z");
+        if (x[2] != 0.)
+          refuse(k, "a node has z = " + std::to_string(x[2]) +
+                      ": glissade's meshes lie in the plane z = 0");
+      };
+
+      if (version.rfind("2.", 0) == 0)
+        {
+          // "N", then N lines "tag x y z".
+          for (std::size_t k = node_begin + 2; k < node_end; ++k)
+            {
+              const std::vector<double> x = coordinates(k);
+              if (x.size() != 4)
+                refuse(k, "a node line must read 'tag x y z'");
+              check_node_line(k, {x[1], x[2], x[3]});
+              nodes.insert(static_cast<long long>(x[0]));
+            }
+          // "id type n_tags tags... nodes..."
+          for (std::size_t k = element_begin + 2; k < element_end; ++k)
+            {
+              if (!read_integers(lines[k], v) || v.size() < 3)
+                refuse(k, "an element line must read 'id type n_tags tags... "
+                          "nodes...'");
+              const int n = gmsh_nodes_per_element(v[1]);
+              if (n < 0)
+                refuse(k, "element type " + std::to_string(v[1]) +
+                            " is not a Gmsh element glissade knows");
+              if (v[2] < 0 || static_cast<long long>(v.size()) != 3 + v[2] + n)
+                refuse(k, "the element's number of tags and of nodes do not "
+                          "match its line");
+              for (long long i = 3 + v[2]; i < static_cast<long long>(v.size()); ++i)
+                if (!nodes.count(v[i]))
+                  refuse(k, "the element names node " + std::to_string(v[i]) +
+                              ", which $Nodes does not declare");
+            }
+          return;
+        }
+
+      // Version 4.1. $Entities: "n_points n_curves n_surfaces n_volumes"
+      // and one line per entity.
+      const auto [entity_begin, entity_end] = section("Entities");
+      if (entity_begin < lines.size())
+        {
+          if (!read_integers(lines[entity_begin + 1], v) || v.size() != 4)
+            refuse(entity_begin + 1, "$Entities must start with four counts");
+          long long total = 0;
+          for (const long long c : v)
+            {
+              if (c < 0)
+                refuse(entity_begin + 1, "a negative entity count");
+              total += c;
+            }
+          if (total != static_cast<long long>(entity_end - entity_begin) - 2)
+            refuse(entity_begin + 1,
+                   "$Entities declares " + std::to_string(total) +
+                     " entities but has " +
+                     std::to_string(entity_end - entity_begin - 2) + " lines");
+        }
+      // $Nodes: "n_blocks n_nodes min max", per block "dim tag parametric
+      // n", n tags, n coordinate lines.
+      if (!read_integers(lines[node_begin + 1], v) || v.size() != 4 || v[0] < 0)
+        refuse(node_begin + 1, "$Nodes must start with 'blocks nodes min max'");
+      {
+        const long long n_blocks = v[0], n_nodes = v[1];
+        std::size_t     k        = node_begin + 2;
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            if (k >= node_end || !read_integers(lines[k], v) || v.size() != 4 ||
+                v[0] < 0 || v[0] > 3 || v[2] != 0 || v[3] < 0 ||
+                2 * v[3] >= static_cast<long long>(node_end - k))
+              refuse(k, "a node block header must read 'dimension (0-3) tag "
+                        "0 count' with its count of nodes following");
+            const long long n = v[3];
+            for (long long i = 1; i <= n; ++i)
+              {
+                if (!read_integers(lines[k + i], v) || v.size() != 1)
+                  refuse(k + i, "a node tag line must hold one tag");
+                nodes.insert(v[0]);
+              }
+            for (long long i = 1; i <= n; ++i)
+              check_node_line(k + n + i, coordinates(k + n + i));
+            k += 1 + 2 * n;
+          }
+        if (k != node_end ||
+            static_cast<long long>(nodes.size()) != n_nodes)
+          refuse(k, "the node blocks do not add up to the $Nodes header "
+                    "(a stray or missing line, or a repeated tag)");
+      }
+      // $Elements: "n_blocks n_elements min max", per block "dim tag type
+      // n", n lines "tag nodes...".
+      if (!read_integers(lines[element_begin + 1], v) || v.size() != 4 ||
+          v[0] < 0)
+        refuse(element_begin + 1,
+               "$Elements must start with 'blocks elements min max'");
+      {
+        const long long n_blocks = v[0], n_elements = v[1];
+        long long       counted  = 0;
+        std::size_t     k        = element_begin + 2;
+        for (long long b = 0; b < n_blocks; ++b)
+          {
+            if (k >= element_end || !read_integers(lines[k], v) ||
+                v.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0 ||
+                v[3] >= static_cast<long long>(element_end - k))
+              refuse(k, "an element block header must read 'dimension (0-3) "
+                        "tag type count' with its elements following");
+            const int n = gmsh_nodes_per_element(v[2]);
+            if (n < 0)
+              refuse(k, "element type " + std::to_string(v[2]) +
+                          " is not a Gmsh element glissade knows");
+            const long long count = v[3];
+            for (long long i = 1; i <= count; ++i)
+              {
+                if (!read_integers(lines[k + i], v) ||
+                    static_cast<long long>(v.size()) != 1 + n)
+                  refuse(k + i, "an element line must hold its tag and " +
+                                  std::to_string(n) + " nodes");
+                for (int j = 1; j <= n; ++j)
+                  if (!nodes.count(v[j]))
+                    refuse(k + i, "the element names node " +
+                                    std::to_string(v[j]) +
+                                    ", which $Nodes does not declare");
+              }
+            counted += count;
+            k += 1 + count;
+          }
+        if (k != element_end || counted != n_elements)
+          refuse(k, "the element blocks do not add up to the $Elements "
+                    "header (a stray or missing line?)");
+      }
     }
 
     /**
@@ -368,6 +603,18 @@ namespace glissade
                          const std::string     &where)
   {
     const std::string entry = where + "/Mesh/File";
+    {
+      // A device (/dev/zero) would be read until memory runs out.
+      std::error_code error;
+      const auto      status = std::filesystem::status(description.file, error);
+      if (!error && std::filesystem::exists(status) &&
+          (!std::filesystem::is_regular_file(status) ||
+           std::filesystem::file_size(description.file, error) > (1ull << 31)))
+        throw InputError(entry,
+                         "'" + description.file +
+                           "' is not a regular file of at most 2 GiB: not "
+                           "a Gmsh mesh");
+    }
     std::ifstream     file(description.file);
     if (!file)
       throw InputError(entry,
@@ -385,6 +632,7 @@ namespace glissade
         }
     }
     check_gmsh_structure(lines, description.file, entry);
+    check_gmsh_records(lines, description.file, entry);
 
     // deal.II turns the physical tag of each boundary line into its boundary
     // id; the names are in the $PhysicalNames section, which we read here.

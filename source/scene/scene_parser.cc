@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -97,6 +98,22 @@ namespace glissade
     check_expressions(const std::vector<std::string> &expressions,
                       const std::string              &where)
     {
+      // muParser accepts an assignment ("t=5" sets t and yields 5) and
+      // rand(): neither belongs in a boundary datum, and both ran silently.
+      for (const auto &e : expressions)
+        {
+          for (std::size_t i = 0; i < e.size(); ++i)
+            if (e[i] == '=' && (i == 0 || std::string("<>!=").find(e[i - 1]) ==
+                                            std::string::npos) &&
+                (i + 1 == e.size() || e[i + 1] != '='))
+              throw InputError(where,
+                               "'" + e + "' assigns with '=': an expression "
+                                         "gives a value (compare with '==')");
+          if (e.find("rand") != std::string::npos)
+            throw InputError(where,
+                             "'" + e + "' uses rand(): boundary data must be "
+                                       "the same in every run");
+        }
       // deal.II's parser prints muparser's diagnosis to std::cerr before it
       // throws; the user gets it once, in the InputError below.
       std::ostringstream   diagnosis;
@@ -139,15 +156,26 @@ namespace glissade
         throw InputError(where,
                          "expected two coordinates 'x, y', got '" +
                            text_value + "'");
-      try
+      // Every character must belong to the number ("0.5abc" and "0.5*t"
+      // were read as 0.5), and the number must be finite and small enough
+      // that squared distances do not overflow.
+      double x[2];
+      for (unsigned int i = 0; i < 2; ++i)
         {
-          return Point<2>(std::stod(parts[0]), std::stod(parts[1]));
+          const std::string part = text::trim(parts[i]);
+          char             *end  = nullptr;
+          x[i]                   = std::strtod(part.c_str(), &end);
+          if (part.empty() || *end != '\0')
+            throw InputError(where,
+                             "cannot read coordinates '" + text_value +
+                               "': '" + part + "' is not a number");
+          if (!std::isfinite(x[i]) || std::abs(x[i]) > 1e100)
+            throw InputError(where,
+                             "coordinates '" + text_value +
+                               "': each must be finite and below 1e100 in "
+                               "magnitude");
         }
-      catch (...)
-        {
-          throw InputError(where,
-                           "cannot read coordinates '" + text_value + "'");
-        }
+      return Point<2>(x[0], x[1]);
     }
 
     void
@@ -230,6 +258,16 @@ namespace glissade
       c.beta            = prm.get_double("Beta");
       c.tolerance       = prm.get_double("Tolerance");
       c.max_sweeps      = prm.get_integer("Maximum sweeps");
+      if (!(c.tolerance > 0.))
+        throw InputError(c.entry + "/Tolerance",
+                         "must be > 0: the local solver's residual is never "
+                         "exactly zero (1e-10 is the default)");
+      if (c.friction > 100.)
+        throw InputError(c.entry + "/Friction coefficient",
+                         "is " + std::to_string(c.friction) +
+                           ": above 100 the local solver's cone is too "
+                           "sharp to converge in double precision; such "
+                           "a contact sticks for any load, so use 100");
       prm.enter_subsection("Obstacle");
       c.obstacle       = prm.get("Type");
       c.obstacle_point = parse_coordinates(prm.get("Point"),
@@ -240,6 +278,10 @@ namespace glissade
       c.obstacle_radius = prm.get_double("Radius");
       c.obstacle_motion = text::split_top_level(prm.get("Motion"), ',');
       prm.leave_subsection();
+      if (!(c.obstacle_radius <= 1e100))
+        throw InputError(c.entry + "/Obstacle/Radius",
+                         "must be finite and below 1e100 (squared distances "
+                         "would overflow)");
 
       const auto known = [&](const std::string &b) {
         return std::find(body_names.begin(), body_names.end(), b) !=
@@ -317,6 +359,24 @@ namespace glissade
                            mesh.type +
                            "); to turn a body, use Boundary conditions/"
                            "Prescribed rotation");
+      {
+        // A generated mesh is allocated before anything else happens: a
+        // typing slip (100000, 100000) would take every byte of memory.
+        double cells = 1.;
+        for (const int n : mesh.subdivisions)
+          {
+            if (n < 1)
+              throw InputError(where + "/Mesh/Subdivisions",
+                               "every count must be at least 1");
+            cells *= n;
+          }
+        if (mesh.type != "gmsh" && cells > 4e6)
+          throw InputError(where + "/Mesh/Subdivisions",
+                           "asks for " + std::to_string(cells) +
+                             " cells; more than 4 million (about 8 million "
+                             "dofs and 10 GB for one body) is refused as a "
+                             "probable slip");
+      }
       if (mesh.type == "ring" && mesh.subdivisions[0] < 3)
         throw InputError(where + "/Mesh/Subdivisions",
                          "a ring needs at least 3 elements around");
@@ -508,6 +568,12 @@ namespace glissade
       // mesh file changed would otherwise continue a different problem.
       for (const auto &file : files)
         {
+          // Only what the mesh reader will accept (it refuses the rest with
+          // a message): a device such as /dev/zero never ends.
+          std::error_code error;
+          if (!std::filesystem::is_regular_file(file, error) ||
+              std::filesystem::file_size(file, error) > (1ull << 31))
+            continue;
           std::ifstream in(file, std::ios::binary);
           text << "\nfile " << file << '\n' << in.rdbuf();
         }
@@ -575,6 +641,22 @@ namespace glissade
         prm.leave_subsection();
         if (body.mesh.type == "gmsh")
           body.mesh.file = text::path_beside(source, body.mesh.file);
+        // A body that nothing holds (no Dirichlet datum, no contact pair)
+        // has a singular tangent: its rigid-body motions are free. The
+        // factorisation would not always say so (round-off pivots), and the
+        // run would end on an inverted element far from the cause.
+        bool in_contact = false;
+        for (const auto &c : scene.contacts)
+          in_contact = in_contact || c.slave_body == name || c.master_body == name;
+        if (body.dirichlet.empty() && !in_contact)
+          check_part([&]() {
+            throw InputError(where + "/Boundary conditions",
+                             "body '" + name +
+                               "' has no support: no Fixed, Prescribed "
+                               "displacement or rotation, and no contact "
+                               "pair, so its rigid-body motions (two "
+                               "translations and a rotation) are free");
+          });
         scene.bodies.push_back(body);
       }
 

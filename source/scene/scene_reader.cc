@@ -273,14 +273,22 @@ namespace glissade
           bool printable = true;
           for (const unsigned char c : name)
             printable = printable && c >= 32 && c != 127;
+          // '"', '<', '>' and '&' would break the PVD index (XML).
           if (name.empty() || name == "." || name == ".." ||
-              name.find_first_of("/\\") != std::string::npos || !printable)
+              name.find_first_of("/\\\"<>&") != std::string::npos ||
+              !printable || name.size() > 100)
             throw InputError(entry,
-                             what + " name '" + name +
-                               "' cannot be part of a file name: use "
-                               "letters, digits, spaces, '-', '_' or '.', "
-                               "without '/' or '\\'");
+                             what + " name '" + name.substr(0, 100) +
+                               (name.size() > 100 ? "...'" : "'") +
+                               " cannot be part of a file name: use at most "
+                               "100 letters, digits, spaces, '-', '_' or "
+                               "'.', without '/', '\\', '\"', '<', '>' "
+                               "or '&'");
         }
+      for (unsigned int i = 0; i < names.size(); ++i)
+        for (unsigned int j = 0; j < i; ++j)
+          if (names[i] == names[j])
+            throw InputError(entry, what + " '" + names[i] + "' is named twice");
     }
 
 

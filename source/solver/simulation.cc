@@ -98,6 +98,10 @@ namespace glissade
               if (!b->assembly_problem().empty())
                 failure_cause += (failure_cause.empty() ? "" : "; ") +
                                  b->assembly_problem();
+            if (failure_cause.empty())
+              failure_cause = "the residual overflows double precision "
+                              "(loads or prescribed displacements too large "
+                              "for the bodies' stiffness?)";
             return false;
           }
         // The reference of divergence: a step driven by prescribed
@@ -152,10 +156,21 @@ namespace glissade
         std::vector<Vector<double>> du(all_bodies.size());
         for (unsigned int b = 0; b < all_bodies.size(); ++b)
           {
-            {
-              TimerOutput::Scope scope(timer, timing::factorization);
-              all_bodies[b]->factorize();
-            }
+            try
+              {
+                TimerOutput::Scope scope(timer, timing::factorization);
+                all_bodies[b]->factorize();
+              }
+            catch (const std::runtime_error &e)
+              {
+                // A singular tangent: a body, or one of its rigid-body
+                // motions, that nothing holds (contact alone does not
+                // hold a body yet), or a structural limit point.
+                failure_cause = "the tangent of body '" +
+                                all_bodies[b]->name() +
+                                "' cannot be factorised: " + e.what();
+                return false;
+              }
             TimerOutput::Scope scope(timer, timing::predictor);
             all_bodies[b]->solve(all_bodies[b]->right_hand_side(), du[b]);
           }
@@ -261,6 +276,8 @@ namespace glissade
                    "of the last attempt:";
         for (const double r : residual_history)
           message << ' ' << std::setprecision(3) << r;
+        if (residual_history.empty())
+          message << " none (its first assembly failed)";
         if (!failure_cause.empty())
           message << ". Cause of the last attempt's failure: "
                   << failure_cause;

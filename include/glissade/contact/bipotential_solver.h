@@ -1,5 +1,4 @@
-#ifndef glissade_contact_bipotential_solver_h
-#define glissade_contact_bipotential_solver_h
+#pragma once
 
 #include <glissade/contact/compliance_matrix.h>
 
@@ -311,5 +310,3 @@ namespace glissade
       double                                         force_to_length_scale,
       std::vector<BiPotentialSolver::Vector2>       *displacement = nullptr);
 } // namespace glissade
-
-#endif

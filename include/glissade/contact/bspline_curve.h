@@ -1,5 +1,4 @@
-#ifndef glissade_contact_bspline_curve_h
-#define glissade_contact_bspline_curve_h
+#pragma once
 
 #include <glissade/contact/master_curve.h>
 
@@ -126,5 +125,3 @@ namespace glissade
     std::vector<Point> control;
   };
 } // namespace glissade
-
-#endif

@@ -1,5 +1,4 @@
-#ifndef glissade_contact_compliance_matrix_h
-#define glissade_contact_compliance_matrix_h
+#pragma once
 
 #include <array>
 #include <cstddef>
@@ -155,5 +154,3 @@ namespace glissade
     find_sparse_block(unsigned int k, unsigned int l) const;
   };
 } // namespace glissade
-
-#endif

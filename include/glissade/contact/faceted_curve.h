@@ -1,5 +1,4 @@
-#ifndef glissade_contact_faceted_curve_h
-#define glissade_contact_faceted_curve_h
+#pragma once
 
 #include <glissade/contact/master_curve.h>
 
@@ -48,5 +47,3 @@ namespace glissade
     const bool closed;
   };
 } // namespace glissade
-
-#endif

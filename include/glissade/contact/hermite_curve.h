@@ -1,5 +1,4 @@
-#ifndef glissade_contact_hermite_curve_h
-#define glissade_contact_hermite_curve_h
+#pragma once
 
 #include <glissade/contact/master_curve.h>
 
@@ -96,5 +95,3 @@ namespace glissade
     std::vector<std::array<Point, 2>> tangents;
   };
 } // namespace glissade
-
-#endif

@@ -1,5 +1,4 @@
-#ifndef glissade_contact_lagrange_edge_curve_h
-#define glissade_contact_lagrange_edge_curve_h
+#pragma once
 
 #include <glissade/contact/master_curve.h>
 
@@ -62,5 +61,3 @@ namespace glissade
     std::vector<Point> edge_nodes;
   };
 } // namespace glissade
-
-#endif

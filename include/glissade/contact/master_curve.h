@@ -1,5 +1,4 @@
-#ifndef glissade_contact_master_curve_h
-#define glissade_contact_master_curve_h
+#pragma once
 
 #include <array>
 #include <functional>
@@ -351,5 +350,3 @@ namespace glissade
     bool               global_search = false;
   };
 } // namespace glissade
-
-#endif

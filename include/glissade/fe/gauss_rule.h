@@ -1,5 +1,4 @@
-#ifndef glissade_fe_gauss_rule_h
-#define glissade_fe_gauss_rule_h
+#pragma once
 
 #include <vector>
 
@@ -52,5 +51,3 @@ namespace glissade
     return tensor_gauss_rule(3);
   }
 } // namespace glissade
-
-#endif

@@ -1,5 +1,4 @@
-#ifndef glissade_fe_hermite_quadrilateral_h
-#define glissade_fe_hermite_quadrilateral_h
+#pragma once
 
 #include <array>
 #include <functional>
@@ -257,5 +256,3 @@ namespace glissade
     std::array<NodeGeometry, 4> nodes;
   };
 } // namespace glissade
-
-#endif
