@@ -1,6 +1,7 @@
 # Runs glissade on a bad input and checks that it stops with a non-zero exit
 # code and a message matching EXPECTED (a regular expression).
 string(REPLACE "|" ";" extra "${EXTRA}")
+file(MAKE_DIRECTORY ${WORKDIR})
 execute_process(COMMAND ${PROGRAM} ${INPUT} ${extra}
                 RESULT_VARIABLE status
                 OUTPUT_VARIABLE out

@@ -50,7 +50,77 @@ namespace glissade
     if (description.distortion > 0.)
       GridTools::distort_random(description.distortion, triangulation, true);
     check_cells_are_not_folded(triangulation, where);
+    if (description.type == "gmsh")
+      check_mesh_is_conforming(triangulation, where);
     return names;
+  }
+
+
+
+  void
+  MeshFactory::check_mesh_is_conforming(const Triangulation<2> &triangulation,
+                                        const std::string      &where)
+  {
+    // In a mesh with a hanging node (a vertex in the middle of a
+    // neighbour's edge) deal.II finds no neighbour across either side, so
+    // both count as boundary: the edge opens under load and the answer is
+    // wrong without a word. A boundary vertex strictly inside another
+    // boundary face is such a node. Boundary vertices are hashed in a grid
+    // of the mean face length, so the search is linear in the boundary.
+    std::vector<std::pair<Point<2>, Point<2>>> faces;
+    std::map<unsigned int, Point<2>>           vertices;
+    double                                     length = 0.;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            faces.emplace_back(cell->face(f)->vertex(0), cell->face(f)->vertex(1));
+            length += cell->face(f)->measure();
+            for (const unsigned int v : {0u, 1u})
+              vertices[cell->face(f)->vertex_index(v)] = cell->face(f)->vertex(v);
+          }
+    if (faces.empty())
+      return;
+    const double h = length / faces.size();
+    std::map<std::pair<long, long>, std::vector<Point<2>>> grid;
+    const auto key = [h](const double x, const double y) {
+      return std::make_pair(static_cast<long>(std::floor(x / h)),
+                            static_cast<long>(std::floor(y / h)));
+    };
+    for (const auto &[index, p] : vertices)
+      grid[key(p[0], p[1])].push_back(p);
+    for (const auto &[a, b] : faces)
+      {
+        const Tensor<1, 2> d     = b - a;
+        const double       d2    = d.norm_square();
+        const auto         low   = key(std::min(a[0], b[0]), std::min(a[1], b[1]));
+        const auto         high  = key(std::max(a[0], b[0]), std::max(a[1], b[1]));
+        for (long i = low.first; i <= high.first; ++i)
+          for (long j = low.second; j <= high.second; ++j)
+            {
+              const auto found = grid.find({i, j});
+              if (found == grid.end())
+                continue;
+              for (const Point<2> &p : found->second)
+                {
+                  const double s = (p - a) * d / d2;
+                  const double off =
+                    std::abs(d[0] * (p - a)[1] - d[1] * (p - a)[0]) / std::sqrt(d2);
+                  if (s > 1e-8 && s < 1. - 1e-8 && off < 1e-10 * std::sqrt(d2))
+                    {
+                      std::ostringstream message;
+                      message << "the node at (" << p[0] << ", " << p[1]
+                              << ") lies inside the edge from (" << a[0]
+                              << ", " << a[1] << ") to (" << b[0] << ", "
+                              << b[1]
+                              << ") without being one of its ends (a "
+                                 "hanging node): the mesh must be conforming, "
+                                 "or that edge would open";
+                      throw InputError(where + "/Mesh", message.str());
+                    }
+                }
+            }
+      }
   }
 
 

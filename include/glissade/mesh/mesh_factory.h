@@ -48,6 +48,11 @@ namespace glissade
               Triangulation<2>      &triangulation,
               const std::string     &where);
 
+    /** Refuses a mesh with a hanging node (a vertex inside another edge). */
+    static void
+    check_mesh_is_conforming(const Triangulation<2> &triangulation,
+                             const std::string      &where);
+
     /** Refuses a cell with a zero or negative Jacobian at a corner. */
     static void
     check_cells_are_not_folded(const Triangulation<2> &triangulation,
