@@ -119,12 +119,7 @@ main(int argc, char **argv)
               "factorisation %8.4f s  detection %8.5f s  compliance %8.4f s  "
               "local solve %8.4f s (%u sweeps in the last)\n",
               c.n_active(),
-              [&]() {
-                unsigned int dofs = 0;
-                for (const auto &b : simulation.bodies())
-                  dofs += b->n_dofs();
-                return dofs;
-              }(),
+              simulation.n_dofs(),
               s.newton_iterations,
               s.factorization_seconds / n,
               s.detection_seconds / n,

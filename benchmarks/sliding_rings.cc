@@ -72,12 +72,7 @@ main(int argc, char **argv)
                   "per increment %.2f (largest %u), %u cut-backs, %.1f ms "
                   "per increment\n",
                   surface.c_str(),
-                  [&]() {
-                    unsigned int dofs = 0;
-                    for (const auto &b : simulation.bodies())
-                      dofs += b->n_dofs();
-                    return dofs;
-                  }(),
+                  simulation.n_dofs(),
                   turned,
                   turned ? double(total) / turned : 0.,
                   largest,

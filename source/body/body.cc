@@ -106,6 +106,18 @@ namespace glissade
                   "holds? see Boundary conditions)";
         return false;
       }
+    // The first cell that makes the state inadmissible names the problem.
+    const auto reject_cell = [&](const auto &cell, const std::string &why) {
+      if (admissible)
+        {
+          std::ostringstream message;
+          message << "cell " << cell->active_cell_index() << " of body '"
+                  << name() << "' at (" << cell->center()[0] << ", "
+                  << cell->center()[1] << ") " << why;
+          problem = message.str();
+        }
+      admissible = false;
+    };
     for (const auto &cell : dofs.active_cell_iterators())
       {
         evaluator->reinit(cell);
@@ -128,39 +140,26 @@ namespace glissade
             const double       J = determinant(F);
             if (!(J > 0.) || !std::isfinite(J))
               {
-                if (admissible)
-                  {
-                    std::ostringstream message;
-                    message << "an element of body '" << name()
-                            << "' is inverted: cell "
-                            << cell->active_cell_index() << " at ("
-                            << cell->center()[0] << ", " << cell->center()[1]
-                            << "), det F = " << J
-                            << " (an increment too large for the "
-                               "deformation, or a mesh too coarse for it)";
-                    problem = message.str();
-                  }
-                admissible = false;
+                std::ostringstream why;
+                why << "is inverted, det F = " << J
+                    << " (an increment too large for the deformation, or a "
+                       "mesh too coarse for it)";
+                reject_cell(cell, why.str());
                 continue;
               }
             const MaterialPointResponse response = body_material.evaluate(H);
+            // The tangent too: at u = 0 the stress is zero however large
+            // E is, and only the stiffness overflows.
             if (!std::isfinite(response.stress.norm()) ||
                 !std::isfinite(response.tangent.norm()))
               {
-                if (admissible)
-                  {
-                    std::ostringstream message;
-                    message << "the stress of body '" << name()
-                            << "' is not finite in cell "
-                            << cell->active_cell_index() << " at ("
-                            << cell->center()[0] << ", " << cell->center()[1]
-                            << "): its Material/Young modulus ("
-                            << description.material.young_modulus
-                            << ") times the strain is beyond double "
-                               "precision; express the scene in other units";
-                    problem = message.str();
-                  }
-                admissible = false;
+                std::ostringstream why;
+                why << "has a stress or stiffness that is not finite: the Material/Young "
+                       "modulus ("
+                    << description.material.young_modulus
+                    << ") times the strain is beyond double precision; "
+                       "express the scene in other units";
+                reject_cell(cell, why.str());
                 continue;
               }
             const Tensor<2, 2>          P  = F * Tensor<2, 2>(response.stress);

@@ -3,7 +3,9 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/base/user_function.h>
 #include <glissade/body/boundary_conditions.h>
+#include <glissade/mesh/boundary_normals.h>
 
 #include <cmath>
 #include <set>
@@ -13,29 +15,6 @@ namespace glissade
 {
   namespace
   {
-    /**
-     * A value of a user's expression, checked: log(t - 0.5) before
-     * t = 0.5, 1/t at t = 0 or sqrt of a negative would otherwise carry a
-     * NaN into the solution and end as "did not converge" (or in a VTU).
-     * The message names the entry, the time and the point.
-     */
-    double
-    checked(const double        value,
-            const std::string  &entry,
-            const std::string  &expression,
-            const double        time,
-            const Point<2>     &X)
-    {
-      if (std::isfinite(value))
-        return value;
-      std::ostringstream message;
-      message << "'" << expression << "' evaluates to " << value
-              << " at t = " << time << ", (x, y) = (" << X[0] << ", " << X[1]
-              << "): give an expression that is finite wherever and whenever "
-                 "it is used (the load program's times, cut-backs included)";
-      throw InputError(entry, message.str());
-    }
-
     /** u(X) = R(angle(t)) (X - c) + c - X: a rigid rotation about c. */
     class RigidRotation : public Function<2>
     {
@@ -56,7 +35,7 @@ namespace glissade
       value(const Point<2> &X, const unsigned int component) const override
       {
         angle.set_time(this->get_time());
-        const double a = checked(
+        const double a = checked_user_value(
           angle.value(X), entry, angle_expression, this->get_time(), X);
         const Tensor<1, 2> d = X - center;
         const double rotated = component == 0 ?
@@ -72,43 +51,11 @@ namespace glissade
       const std::string         entry;
     };
 
-    /** The user's expressions of x, y and t, each value checked. */
-    class Expressions : public Function<2>
-    {
-    public:
-      Expressions(const std::vector<std::string> &expressions,
-                  const std::string              &entry)
-        : Function<2>(expressions.size())
-        , parser(expressions.size())
-        , expressions(expressions)
-        , entry(entry)
-      {
-        parser.initialize(
-          "x,y,t", expressions, {{"pi", numbers::PI}}, true);
-      }
-
-      double
-      value(const Point<2> &X, const unsigned int component) const override
-      {
-        parser.set_time(this->get_time());
-        return checked(parser.value(X, component),
-                       entry,
-                       expressions[component],
-                       this->get_time(),
-                       X);
-      }
-
-    private:
-      mutable FunctionParser<2>      parser;
-      const std::vector<std::string> expressions;
-      const std::string              entry;
-    };
-
     std::shared_ptr<Function<2>>
     make_parser(const std::vector<std::string> &expressions,
                 const std::string              &entry)
     {
-      return std::make_shared<Expressions>(expressions, entry);
+      return std::make_shared<UserFunction>(expressions, entry);
     }
   } // namespace
 
@@ -330,26 +277,19 @@ namespace glissade
     const std::string                      &entry)
   {
     // The outward normal at a boundary vertex: the sum of the unit outward
-    // normals of its faces on that boundary (on any boundary for a point),
-    // which on a uniformly divided circle is the exact radius.
-    std::map<unsigned int, Tensor<1, 2>> normal;
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            (where.is_vertex || cell->face(f)->boundary_id() == where.boundary))
-          {
-            const Tensor<1, 2> along =
-              cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
-            Tensor<1, 2> n({along[1], -along[0]});
-            if (n * (cell->face(f)->center() - cell->center()) < 0.)
-              n = -n;
-            for (const unsigned int v : {0u, 1u})
-              {
-                const unsigned int vertex = cell->face(f)->vertex_index(v);
-                if (!where.is_vertex || vertex == where.vertex)
-                  normal[vertex] += n / n.norm();
-              }
-          }
+    // normals of its faces on that boundary (on any boundary for a point).
+    std::map<unsigned int, Tensor<1, 2>> normal = boundary_vertex_normals(
+      tria, [&where](const types::boundary_id id) {
+        return where.is_vertex || id == where.boundary;
+      });
+    if (where.is_vertex)
+      {
+        const auto at_vertex = normal.find(where.vertex);
+        std::map<unsigned int, Tensor<1, 2>> only;
+        if (at_vertex != normal.end())
+          only.insert(*at_vertex);
+        normal = only;
+      }
     std::vector<std::pair<unsigned int, Tensor<1, 2>>> directions;
     for (const auto &[vertex, n] : normal)
       {

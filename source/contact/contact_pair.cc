@@ -4,6 +4,7 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/surface_registry.h>
+#include <glissade/mesh/boundary_normals.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,9 +45,6 @@ namespace glissade
     const types::boundary_id slave_id =
       slave.boundary_id(description.slave_boundary, entry + "/Slave boundary");
     std::set<unsigned int> seen;
-    // The slave boundary's outward normal at each node (the sum over its
-    // faces), to check that a rigid obstacle faces the slave.
-    std::map<unsigned int, Tensor<1, 2>> outward_normal;
     for (const auto &cell : slave.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
@@ -54,12 +52,6 @@ namespace glissade
           for (const unsigned int v : {0u, 1u})
             {
               const unsigned int vertex = cell->face(f)->vertex_index(v);
-              const Tensor<1, 2> along =
-                cell->face(f)->vertex(1) - cell->face(f)->vertex(0);
-              Tensor<1, 2> normal({along[1], -along[0]});
-              if (normal * (cell->face(f)->center() - cell->center()) < 0.)
-                normal = -normal;
-              outward_normal[vertex] += normal / normal.norm();
               if (!seen.insert(vertex).second)
                 continue;
               ContactNode node;
@@ -72,7 +64,9 @@ namespace glissade
 
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
-      check_obstacle_faces_slave(outward_normal);
+      check_obstacle_faces_slave(boundary_vertex_normals(
+        slave.triangulation(),
+        [slave_id](const types::boundary_id id) { return id == slave_id; }));
   }
 
 

@@ -1,6 +1,4 @@
-#include <deal.II/base/function_parser.h>
-
-#include <glissade/base/input_error.h>
+#include <glissade/base/user_function.h>
 #include <glissade/contact/master_surface.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/scene/scene_description.h>
@@ -25,13 +23,8 @@ namespace glissade
     public:
       RigidObstacle(const ContactDescription &d)
         : reference_point(d.obstacle_point)
-        , motion(std::make_shared<FunctionParser<2>>(2))
-        , entry(d.entry + "/Obstacle/Motion")
-        , expressions(d.obstacle_motion)
-      {
-        motion->initialize("x,y,t", d.obstacle_motion, {{"pi", numbers::PI}},
-                           true);
-      }
+        , motion(d.obstacle_motion, d.entry + "/Obstacle/Motion")
+      {}
 
       void
       update(const double step_start_time, const double time) override
@@ -84,25 +77,15 @@ namespace glissade
       Tensor<1, 2>
       translation(const double time) const
       {
-        motion->set_time(time);
-        const Tensor<1, 2> m({motion->value(Point<2>(), 0),
-                              motion->value(Point<2>(), 1)});
-        for (unsigned int c = 0; c < 2; ++c)
-          if (!std::isfinite(m[c]))
-            throw InputError(entry,
-                             "'" + expressions[c] + "' evaluates to " +
-                               std::to_string(m[c]) + " at t = " +
-                               std::to_string(time) +
-                               ": the obstacle's motion must be finite "
-                               "whenever it is used");
-        return m;
+        motion.set_time(time);
+        return Tensor<1, 2>({motion.value(Point<2>(), 0),
+                             motion.value(Point<2>(), 1)});
       }
 
-      const Point<2>                     reference_point;
-      std::shared_ptr<FunctionParser<2>> motion;
-      const std::string                  entry;
-      const std::vector<std::string>     expressions;
-      Tensor<1, 2>                       step_motion;
+      const Point<2>       reference_point;
+      /** m(t), its values checked finite (UserFunction). */
+      mutable UserFunction motion;
+      Tensor<1, 2>         step_motion;
     };
 
 

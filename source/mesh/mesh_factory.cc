@@ -4,6 +4,7 @@
 #include <deal.II/grid/manifold_lib.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/mesh/mesh_factory.h>
 
 #include <algorithm>
@@ -277,7 +278,8 @@ namespace glissade
      * trusts the declared node and element counts (a wrong digit asks for
      * gigabytes). Found by the fuzzer (tests/fuzz).
      */
-    void
+    /** Returns true for MSH 2.x, false for 4.1 (the only two read). */
+    bool
     check_gmsh_structure(const std::vector<std::string> &lines,
                          const std::string              &file,
                          const std::string              &entry)
@@ -309,8 +311,12 @@ namespace glissade
                          "'" + file + "': MSH version '" + version +
                            "' is not read: glissade reads MSH 2.2 and 4.1 "
                            "(ASCII; gmsh -format msh22 or msh41)");
-      const bool version_2 = format + 1 < format_end &&
-                             lines[format + 1].rfind("2.", 0) == 0;
+      if (lines[format + 1].find(" 1 ") != std::string::npos &&
+          lines[format + 1].find(" 0 ") == std::string::npos)
+        throw InputError(entry,
+                         "'" + file +
+                           "': binary MSH files are not read: save as ASCII");
+      const bool version_2 = version.rfind("2.", 0) == 0;
       std::size_t from = format_end;
       for (const std::string section : {"Nodes", "Elements"})
         {
@@ -336,6 +342,7 @@ namespace glissade
                                std::to_string(std::max(present, 0ll)) +
                                " lines");
         }
+      return version_2;
     }
 
     /** Nodes per element of the Gmsh element types deal.II may meet. */
@@ -386,6 +393,7 @@ namespace glissade
      */
     void
     check_gmsh_records(const std::vector<std::string> &lines,
+                       const bool                      version_2,
                        const std::string              &file,
                        const std::string              &entry)
     {
@@ -403,13 +411,6 @@ namespace glissade
           ++end;
         return std::make_pair(begin, end); // both lines.size() if absent
       };
-      std::size_t format = section("MeshFormat").first;
-      const std::string version =
-        lines[format + 1].substr(0, lines[format + 1].find(' '));
-      if (lines[format + 1].find(" 1 ") != std::string::npos &&
-          lines[format + 1].find(" 0 ") == std::string::npos)
-        refuse(format + 1, "binary MSH files are not read: save as ASCII");
-
       std::vector<long long> v;
       std::set<long long>    nodes;
       const auto             [node_begin, node_end] = section("Nodes");
@@ -436,7 +437,21 @@ namespace glissade
                       ": glissade's meshes lie in the plane z = 0");
       };
 
-      if (version.rfind("2.", 0) == 0)
+      const auto nodes_of_type = [&](const std::size_t k, const long long type) {
+        const int n = gmsh_nodes_per_element(type);
+        if (n < 0)
+          refuse(k, "element type " + std::to_string(type) +
+                      " is not a Gmsh element glissade knows");
+        return n;
+      };
+      const auto check_node_reference = [&](const std::size_t k,
+                                            const long long   tag) {
+        if (!nodes.count(tag))
+          refuse(k, "the element names node " + std::to_string(tag) +
+                      ", which $Nodes does not declare");
+      };
+
+      if (version_2)
         {
           // "N", then N lines "tag x y z".
           for (std::size_t k = node_begin + 2; k < node_end; ++k)
@@ -453,17 +468,12 @@ namespace glissade
               if (!read_integers(lines[k], v) || v.size() < 3)
                 refuse(k, "an element line must read 'id type n_tags tags... "
                           "nodes...'");
-              const int n = gmsh_nodes_per_element(v[1]);
-              if (n < 0)
-                refuse(k, "element type " + std::to_string(v[1]) +
-                            " is not a Gmsh element glissade knows");
+              const int n = nodes_of_type(k, v[1]);
               if (v[2] < 0 || static_cast<long long>(v.size()) != 3 + v[2] + n)
                 refuse(k, "the element's number of tags and of nodes do not "
                           "match its line");
               for (long long i = 3 + v[2]; i < static_cast<long long>(v.size()); ++i)
-                if (!nodes.count(v[i]))
-                  refuse(k, "the element names node " + std::to_string(v[i]) +
-                              ", which $Nodes does not declare");
+                check_node_reference(k, v[i]);
             }
           return;
         }
@@ -535,10 +545,7 @@ namespace glissade
                 v[3] >= static_cast<long long>(element_end - k))
               refuse(k, "an element block header must read 'dimension (0-3) "
                         "tag type count' with its elements following");
-            const int n = gmsh_nodes_per_element(v[2]);
-            if (n < 0)
-              refuse(k, "element type " + std::to_string(v[2]) +
-                          " is not a Gmsh element glissade knows");
+            const int       n     = nodes_of_type(k, v[2]);
             const long long count = v[3];
             for (long long i = 1; i <= count; ++i)
               {
@@ -547,10 +554,7 @@ namespace glissade
                   refuse(k + i, "an element line must hold its tag and " +
                                   std::to_string(n) + " nodes");
                 for (int j = 1; j <= n; ++j)
-                  if (!nodes.count(v[j]))
-                    refuse(k + i, "the element names node " +
-                                    std::to_string(v[j]) +
-                                    ", which $Nodes does not declare");
+                  check_node_reference(k + i, v[j]);
               }
             counted += count;
             k += 1 + count;
@@ -571,6 +575,7 @@ namespace glissade
      */
     void
     check_one_name_per_face(const std::vector<std::string> &lines,
+                            const bool                      version_2,
                             const std::map<int, std::string> &group_name,
                             const std::string              &file,
                             const std::string              &entry)
@@ -591,11 +596,6 @@ namespace glissade
                            "the .prm entry instead, e.g. 'Fixed = bottom: y; "
                            "side: x')");
       };
-      std::size_t format = 0;
-      while (format < lines.size() && lines[format] != "$MeshFormat")
-        ++format;
-      const bool version_2 =
-        format + 1 < lines.size() && lines[format + 1].rfind("2.", 0) == 0;
       if (version_2)
         {
           // "id type n_tags physical elementary ... nodes"; type 1: a line.
@@ -673,18 +673,15 @@ namespace glissade
                          const std::string     &where)
   {
     const std::string entry = where + "/Mesh/File";
-    {
-      // A device (/dev/zero) would be read until memory runs out.
-      std::error_code error;
-      const auto      status = std::filesystem::status(description.file, error);
-      if (!error && std::filesystem::exists(status) &&
-          (!std::filesystem::is_regular_file(status) ||
-           std::filesystem::file_size(description.file, error) > (1ull << 31)))
-        throw InputError(entry,
-                         "'" + description.file +
-                           "' is not a regular file of at most 2 GiB: not "
-                           "a Gmsh mesh");
-    }
+    // A device (/dev/zero) would be read until memory runs out; a missing
+    // file is reported below.
+    std::error_code missing;
+    if (std::filesystem::exists(description.file, missing) &&
+        !text::is_regular_file_of_at_most(description.file, 1ull << 31))
+      throw InputError(entry,
+                       "'" + description.file +
+                         "' is not a regular file of at most 2 GiB: not "
+                         "a Gmsh mesh");
     std::ifstream     file(description.file);
     if (!file)
       throw InputError(entry,
@@ -701,8 +698,9 @@ namespace glissade
           lines.push_back(line);
         }
     }
-    check_gmsh_structure(lines, description.file, entry);
-    check_gmsh_records(lines, description.file, entry);
+    const bool version_2 =
+      check_gmsh_structure(lines, description.file, entry);
+    check_gmsh_records(lines, version_2, description.file, entry);
 
     // deal.II turns the physical tag of each boundary line into its boundary
     // id; the names are in the $PhysicalNames section, which we read here.
@@ -734,7 +732,7 @@ namespace glissade
       std::map<int, std::string> group_name;
       for (const auto &[name, id] : names)
         group_name[id] = name;
-      check_one_name_per_face(lines, group_name, description.file, entry);
+      check_one_name_per_face(lines, version_2, group_name, description.file, entry);
     }
 
     try

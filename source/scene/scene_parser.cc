@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -570,9 +569,7 @@ namespace glissade
         {
           // Only what the mesh reader will accept (it refuses the rest with
           // a message): a device such as /dev/zero never ends.
-          std::error_code error;
-          if (!std::filesystem::is_regular_file(file, error) ||
-              std::filesystem::file_size(file, error) > (1ull << 31))
+          if (!text::is_regular_file_of_at_most(file, 1ull << 31))
             continue;
           std::ifstream in(file, std::ios::binary);
           text << "\nfile " << file << '\n' << in.rdbuf();

@@ -259,7 +259,8 @@ namespace glissade
     }
 
     /**
-     * Body and contact pair names become parts of output file names
+     * Each name once. Body and contact pair names become parts of output
+     * file names
      * ("<body>-00010.vtu", "contact-<pair>-00010.csv"): a name that is a
      * path ("up/../../x") would write outside the output directory.
      */
@@ -300,11 +301,6 @@ namespace glissade
       if (names.empty())
         throw InputError(source + ": Scene/Bodies",
                          "the scene needs at least one body");
-      for (unsigned int i = 0; i < names.size(); ++i)
-        for (unsigned int j = 0; j < i; ++j)
-          if (names[i] == names[j])
-            throw InputError(source + ": Scene/Bodies",
-                             "body '" + names[i] + "' is named twice");
       check_file_name_parts(names, source + ": Scene/Bodies", "body");
       return names;
     }

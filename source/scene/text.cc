@@ -1,6 +1,7 @@
 #include <glissade/base/text.h>
 
 #include <cstdlib>
+#include <filesystem>
 
 namespace glissade
 {
@@ -89,6 +90,19 @@ namespace glissade
             space = false;
           }
       return compact;
+    }
+
+
+
+    bool
+    is_regular_file_of_at_most(const std::string       &path,
+                               const unsigned long long largest)
+    {
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(path, error) || error)
+        return false;
+      const auto size = std::filesystem::file_size(path, error);
+      return !error && size <= largest;
     }
 
 

@@ -69,12 +69,8 @@ namespace glissade
     double last_increment = std::numeric_limits<double>::max();
     double displacement_norm = 0.;
     double size              = 0.;
-    unsigned int n_dofs      = 0;
     for (auto &b : all_bodies)
-      {
-        size = std::max(size, b->size());
-        n_dofs += b->n_dofs();
-      }
+      size = std::max(size, b->size());
 
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
@@ -124,7 +120,7 @@ namespace glissade
           last_increment <=
             std::max(settings.displacement_tolerance * displacement_norm,
                      100. * std::numeric_limits<double>::epsilon() * size *
-                       std::sqrt(double(n_dofs)));
+                       std::sqrt(double(n_dofs())));
         // A converged state with a slave node behind the master that was
         // not active (beyond the alert distance at the start of the
         // increment) is not a solution: iterate on with that node.
@@ -550,17 +546,25 @@ namespace glissade
 
 
 
+  unsigned int
+  Simulation::n_dofs() const
+  {
+    unsigned int n = 0;
+    for (const auto &b : all_bodies)
+      n += b->n_dofs();
+    return n;
+  }
+
+
+
   std::string
   Simulation::summary() const
   {
     const RunStatistics s = statistics();
-    unsigned int        dofs = 0;
-    for (const auto &b : all_bodies)
-      dofs += b->n_dofs();
-    std::ostringstream out;
+    std::ostringstream  out;
     out << std::setprecision(3) << "glissade: " << s.increments
         << " increments, " << s.newton_iterations << " Newton iterations, "
-        << s.cut_backs << " cut-backs, " << dofs << " dofs, "
+        << s.cut_backs << " cut-backs, " << n_dofs() << " dofs, "
         << s.wall_seconds << " s wall (assembly " << s.assembly_seconds
         << " s, factorization " << s.factorization_seconds << " s";
     if (!contact_problem->empty())

@@ -37,5 +37,14 @@ namespace glissade
      */
     std::string
     path_beside(const std::string &file, const std::string &path);
+
+    /**
+     * True for a regular file of at most `largest` bytes: what the readers
+     * accept before reading to the end (a device such as /dev/zero never
+     * ends).
+     */
+    bool
+    is_regular_file_of_at_most(const std::string &path,
+                               unsigned long long largest);
   } // namespace text
 } // namespace glissade

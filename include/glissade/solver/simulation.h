@@ -80,6 +80,10 @@ namespace glissade
       return all_bodies;
     }
 
+    /** The unknowns of every body. */
+    unsigned int
+    n_dofs() const;
+
     ContactProblem &
     contact()
     {
