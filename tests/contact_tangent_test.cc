@@ -22,7 +22,7 @@ namespace
   std::string
   block(const std::string &name, const std::string &corner_1,
         const std::string &corner_2, const std::string &subdivisions,
-        const std::string &space)
+        const std::string &space, const std::string &fixed = "left: x")
   {
     return "subsection Body " + name +
            "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
@@ -30,7 +30,8 @@ namespace
            "\n  set Subdivisions = " + subdivisions +
            "\n end\n subsection Element\n  set Space = " + space +
            "\n end\n subsection Material\n  set Young modulus = 1000\n end\n"
-           " subsection Boundary conditions\n  set Fixed = left: x\n end\nend\n";
+           " subsection Boundary conditions\n  set Fixed = " + fixed +
+           "\n end\nend\n";
   }
 
   /** A slave block on a master block, or on a rigid obstacle. */
@@ -61,7 +62,9 @@ namespace
         const bool hermite = master == "hermite";
         text += "subsection Scene\n set Bodies = upper, lower\n"
                 " set Contact pairs = interface\nend\n";
-        text += block("lower", "0, 0", "1, 0.5", "4, 2", hermite ? "hermite" : "q1");
+        // (the lower block held, so that no motion of the pair is free)
+        text += block("lower", "0, 0", "1, 0.5", "4, 2",
+                      hermite ? "hermite" : "q1", "left: x; bottom: y");
         contact += " set Master body = lower\n set Master boundary = top\n";
         if (master == "faceted" || hermite)
           contact += " set Surface = " + master + "\n";

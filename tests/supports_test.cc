@@ -83,9 +83,12 @@ namespace
 
 // Outer boundary on rollers (u . n = 0 at every node of r = b): u_r(b) = 0
 // and u(r) = A (r - b^2 / r) with 2 (lambda + mu) A + 2 mu A b^2 / a^2 = -p.
+// Rollers all round leave the rotation free (refused: input_free_rotation
+// _on_rollers); one tangential point support holds it, with no force, as
+// Lame's field has no u_theta.
 GLISSADE_TEST(supports_normal_ring_lame)
 {
-  const Simulation  simulation = pressed_ring("outer: n");
+  const Simulation  simulation = pressed_ring("outer: n; point(2, 0): y");
   const RadialField inner      = field_at_radius(simulation, a);
   const RadialField outer      = field_at_radius(simulation, b);
   const double      A =

@@ -60,6 +60,16 @@ namespace glissade
     DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
+
+    // The rigid motions the supports leave free, about the centre of the
+    // body's bounding box.
+    const auto box = GridTools::compute_bounding_box(mesh);
+    const auto basis =
+      rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
+    const std::vector<RigidMotion> all(basis.begin(), basis.end());
+    for (const auto &coefficients : null_space(
+           boundary_conditions->support_rows(dofs, *element_space, basis), 3))
+      free_motions.push_back(combine(all, coefficients));
   }
 
 
@@ -346,7 +356,26 @@ namespace glissade
   void
   Body::factorize()
   {
+    // The springs of a body held by contact: as stiff as an average dof,
+    // so that they neither dominate nor vanish in the factorisation.
+    std::vector<double> assembled(springs.size());
+    if (!springs.empty())
+      {
+        double sum = 0.;
+        for (types::global_dof_index i = 0; i < n_dofs(); ++i)
+          sum += std::abs(tangent.diag_element(i));
+        const double k = sum / n_dofs();
+        for (unsigned int s = 0; s < springs.size(); ++s)
+          {
+            double &diagonal = tangent.diag_element(springs[s].first);
+            assembled[s]     = diagonal;
+            springs[s].second = k;
+            diagonal += k;
+          }
+      }
     factorization.factorize(tangent);
+    for (unsigned int s = 0; s < springs.size(); ++s)
+      tangent.diag_element(springs[s].first) = assembled[s];
     // The compliance of the previous factorisation is stale.
     contact_rows_resolved.clear();
     compliance_columns.clear();
@@ -395,6 +424,79 @@ namespace glissade
       }
     factorization.use_cholesky(tangent_is_symmetric, unknowns);
     contact_rows_resolved.clear();
+    if (!free_motions.empty())
+      choose_spring_dofs(contact_dofs);
+  }
+
+
+
+  void
+  Body::choose_spring_dofs(const std::vector<types::global_dof_index> &contact_dofs)
+  {
+    // The candidates: unconstrained nodal values among the contact dofs,
+    // each with the values that the free motions take there.
+    std::map<types::global_dof_index, std::vector<double>> candidates;
+    for (const auto dof : contact_dofs)
+      if (!constraints.is_constrained(dof))
+        candidates.emplace(dof, std::vector<double>());
+    for (const auto &cell : dofs.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const auto vertex_dofs =
+            BoundaryConditions::cell_vertex_dofs(cell, v, *element_space);
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              const auto found = candidates.find(vertex_dofs[c]);
+              if (found != candidates.end() && found->second.empty())
+                for (const auto &motion : free_motions)
+                  found->second.push_back(motion.at(cell->vertex(v))[c]);
+            }
+        }
+
+    // Pivoted Gram-Schmidt: each time the candidate that moves most under
+    // the free motions not yet held.
+    springs.clear();
+    std::vector<std::vector<double>> held;
+    for (unsigned int step = 0; step < free_motions.size(); ++step)
+      {
+        double                  best = 0.;
+        types::global_dof_index chosen = 0;
+        std::vector<double>     direction;
+        for (const auto &[dof, values] : candidates)
+          {
+            if (values.empty())
+              continue;
+            std::vector<double> rest = values;
+            for (const auto &q : held)
+              {
+                double projection = 0.;
+                for (unsigned int j = 0; j < q.size(); ++j)
+                  projection += q[j] * values[j];
+                for (unsigned int j = 0; j < q.size(); ++j)
+                  rest[j] -= projection * q[j];
+              }
+            double norm = 0.;
+            for (const double r : rest)
+              norm += r * r;
+            norm = std::sqrt(norm);
+            if (norm > best)
+              {
+                best      = norm;
+                chosen    = dof;
+                direction = rest;
+              }
+          }
+        // The motions are scaled to move the body by about 1.
+        if (best < 1e-3)
+          throw InputError(source + ": Body " + name() + "/Boundary conditions",
+                           "body '" + name() + "' relies on contact to hold " +
+                             free_motions[step].describe(reference_size) +
+                             ", but none of its contact nodes moves with it");
+        for (double &d : direction)
+          d /= best;
+        held.push_back(direction);
+        springs.emplace_back(chosen, 0.);
+      }
   }
 
 

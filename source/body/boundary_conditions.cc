@@ -425,6 +425,75 @@ namespace glissade
 
 
 
+  std::vector<std::vector<double>>
+  BoundaryConditions::support_rows(const DoFHandler<2>              &dof_handler,
+                                   const ElementSpace               &space,
+                                   const std::array<RigidMotion, 3> &basis) const
+  {
+    // A rigid motion as a displacement field: the space interpolates it on
+    // a support exactly (it is linear), derivative dofs included.
+    class MotionField : public Function<2>
+    {
+    public:
+      explicit MotionField(const RigidMotion &motion)
+        : Function<2>(2)
+        , motion(motion)
+      {}
+      double
+      value(const Point<2> &X, const unsigned int c) const override
+      {
+        return motion.at(X)[c];
+      }
+
+    private:
+      const RigidMotion motion;
+    };
+
+    std::vector<std::vector<double>> rows;
+    const auto &vertices = dof_handler.get_triangulation().get_vertices();
+    for (const auto &item : dirichlet_items)
+      {
+        if (!item.directed_vertices.empty())
+          {
+            for (const auto &[vertex, d] : item.directed_vertices)
+              {
+                std::vector<double> row;
+                for (const auto &m : basis)
+                  row.push_back(d * m.at(vertices[vertex]));
+                rows.push_back(row);
+              }
+            continue;
+          }
+        if (item.where.is_vertex)
+          {
+            for (unsigned int c = 0; c < 2; ++c)
+              if (item.components[c])
+                {
+                  std::vector<double> row;
+                  for (const auto &m : basis)
+                    row.push_back(m.at(vertices[item.where.vertex])[c]);
+                  rows.push_back(row);
+                }
+            continue;
+          }
+        // The same relations, in the same order, for each motion.
+        std::array<std::vector<DofRelation>, 3> relations;
+        for (unsigned int j = 0; j < 3; ++j)
+          space.boundary_relations(dof_handler,
+                                   item.where.boundary,
+                                   MotionField(basis[j]),
+                                   item.components,
+                                   item.all_derivatives,
+                                   relations[j]);
+        for (unsigned int i = 0; i < relations[0].size(); ++i)
+          rows.push_back(
+            {relations[0][i].value, relations[1][i].value, relations[2][i].value});
+      }
+    return rows;
+  }
+
+
+
   void
   BoundaryConditions::add_point_loads(const DoFHandler<2> &dof_handler,
                                       const ElementSpace  &space,

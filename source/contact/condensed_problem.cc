@@ -12,6 +12,13 @@ dgemm_(const char *transa, const char *transb, const int *m, const int *n,
        const int *k, const double *alpha, const double *a, const int *lda,
        const double *b, const int *ldb, const double *beta, double *c,
        const int *ldc);
+extern "C" double
+dlange_(const char *norm, const int *m, const int *n, const double *a,
+        const int *lda, double *work);
+extern "C" void
+dgecon_(const char *norm, const int *n, const double *a, const int *lda,
+        const double *anorm, double *rcond, double *work, int *iwork,
+        int *info);
 extern "C" void
 dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 extern "C" void
@@ -127,9 +134,19 @@ namespace glissade
     if (t > 0)
       {
         pivots.resize(t);
-        int info = 0;
+        int                 info = 0;
+        std::vector<double> work(4 * t);
+        std::vector<int>    iwork(t);
+        const double        norm = dlange_("1", &t, &t, S.data(), &t, work.data());
         dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
-        is_regular = (info == 0);
+        // Singular in floating point too: a body that relies on contact
+        // with its springs taken out and the contact not holding it leaves
+        // S singular up to round-off, not exactly.
+        double rcond = 0.;
+        if (info == 0)
+          dgecon_("1", &t, S.data(), &t, &norm, &rcond, work.data(),
+                  iwork.data(), &info);
+        is_regular = (info == 0 && rcond > 1e-13);
         if (!is_regular)
           return;
         const int one = 1;

@@ -62,11 +62,12 @@ namespace glissade
               slave_nodes.push_back(node);
             }
 
+    slave_outward_normal = boundary_vertex_normals(
+      slave.triangulation(),
+      [slave_id](const types::boundary_id id) { return id == slave_id; });
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
-      check_obstacle_faces_slave(boundary_vertex_normals(
-        slave.triangulation(),
-        [slave_id](const types::boundary_id id) { return id == slave_id; }));
+      check_obstacle_faces_slave(slave_outward_normal);
   }
 
 
@@ -190,12 +191,26 @@ namespace glissade
     begin_step(0., 0.);
     double       deepest = 0.;
     unsigned int behind  = 0;
+    contacts_at_start.clear();
     for (const auto &node : slave_nodes)
-      if (node.projected && node.gap < 0.)
-        {
-          deepest = std::min(deepest, node.gap);
-          ++behind;
-        }
+      {
+        if (node.projected && node.gap < 0.)
+          {
+            deepest = std::min(deepest, node.gap);
+            ++behind;
+          }
+        // The frame of the slave boundary (its averaged vertex normal),
+        // not the master's: what holds a body is the geometry both sides
+        // share, not the tilt of a facet at a vertex (a faceted circle
+        // would otherwise seem to hold a ring against turning).
+        const Tensor<1, 2> out = slave_outward_normal.at(node.vertex);
+        if (node.active && out.norm() > 0.)
+          {
+            const Tensor<1, 2> n = -out / out.norm();
+            contacts_at_start.push_back(
+              {node.reference_position, n, Tensor<1, 2>({-n[1], n[0]})});
+          }
+      }
     for (auto &node : slave_nodes)
       {
         node.active   = false;

@@ -4,6 +4,7 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/condensed_problem.h>
 #include <glissade/contact/contact_problem.h>
+#include <glissade/contact/held_by_contact.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -38,6 +39,7 @@ namespace glissade
         pairs.push_back(std::move(pair));
       });
     mistakes.throw_if_any();
+    check_free_motions_are_held(bodies, pairs, scene.source);
 
     for (const auto &body : bodies)
       {
@@ -168,7 +170,15 @@ namespace glissade
     result           = BiPotentialSolver::Result();
     result.converged = true;
     if (active.empty())
-      return true;
+      {
+        if (nodes.terms.empty())
+          return true;
+        result.converged = false;
+        result.message   = held_by_contact_message() +
+                         ": no slave node is in contact (all farther than "
+                         "the alert distance)";
+        return false;
+      }
 
     // The reactions, and the condensed problem whose step they go with.
     std::vector<BiPotentialSolver::Vector2> r(active.size());
@@ -204,6 +214,22 @@ namespace glissade
   {
     ActiveNodes nodes;
     active.clear();
+    // The springs of bodies held by contact come out of the Newton matrix
+    // again: K = (K + k e e^T) - (k e) (x) e.
+    spring_loads.clear();
+    spring_rows.clear();
+    std::vector<unsigned int> spring_body;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      for (const auto &[dof, k] : bodies[b]->regularization())
+        {
+          spring_loads.push_back({{0, dof, k}});
+          spring_rows.push_back({{0, dof, 1.}});
+          spring_body.push_back(b);
+        }
+    for (unsigned int s = 0; s < spring_body.size(); ++s)
+      nodes.terms.push_back(
+        {{&spring_loads[s], {{spring_body[s], numbers::invalid_unsigned_int}}},
+         {&spring_rows[s], {{spring_body[s], numbers::invalid_unsigned_int}}}});
     for (auto &pair : pairs)
       {
         const std::array<unsigned int, 2> b = {
@@ -369,12 +395,38 @@ namespace glissade
         else if (stage <= 4)
           augmentation.factor *= 10.;
         else
-          return nullptr;
+          {
+            if (!held_by_contact_message().empty() && !condensed->regular())
+              result.message = held_by_contact_message() +
+                               ": its contact nodes are open or slipping "
+                               "where they would have to hold it";
+            return nullptr;
+          }
       }
 
     for (unsigned int k = 0; k < n; ++k)
       active[k]->augmented = augmentation.directions[k];
     return condensed;
+  }
+
+
+
+  std::string
+  ContactProblem::held_by_contact_message() const
+  {
+    std::string names;
+    for (const auto &body : bodies)
+      if (!body->regularization().empty())
+        {
+          names += (names.empty() ? "'" : ", '") + body->name() + "'";
+          for (const auto &motion : body->free_rigid_motions())
+            names += std::string(names.back() == '\'' ? " (" : ", ") +
+                     motion.describe(body->size());
+          names += ")";
+        }
+    return names.empty() ? "" :
+                           "the contact does not hold the bodies that rely on "
+                           "it, " + names;
   }
 
 

@@ -541,6 +541,11 @@ namespace glissade
     total.local_solve_seconds += seconds(timing::local_solve);
     total.output_seconds += seconds(timing::output);
     total.checkpoint_seconds += seconds(timing::checkpoints);
+    for (const auto &body : all_bodies)
+      {
+        total.n_cholesky += body->direct_solver().n_cholesky;
+        total.n_lu += body->direct_solver().n_lu;
+      }
     return total;
   }
 
@@ -618,6 +623,9 @@ namespace glissade
           << std::setw(11) << std::setprecision(3) << s.wall_seconds
           << std::setw(8) << "100.0" << std::setw(20) << std::setprecision(2)
           << s.wall_seconds * per << '\n';
+    table << "  factorisations: " << s.n_cholesky << " Cholesky, " << s.n_lu
+          << " LU (a tangent that is not positive definite, or not "
+             "symmetric)\n";
     return table.str();
   }
 } // namespace glissade

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/boundary_conditions.h>
+#include <glissade/body/rigid_motion.h>
 #include <glissade/fe/element_space.h>
 #include <glissade/material/material.h>
 #include <glissade/mesh/mesh_factory.h>
@@ -65,8 +66,38 @@ namespace glissade
     double
     force_scale() const;
 
+    /**
+     * Factorises the tangent, with the springs of regularization() added
+     * (the tangent itself is left as assembled).
+     */
     void
     factorize();
+
+    /**
+     * The rigid motions that the body's supports leave free, orthonormal
+     * combinations of rigid_motion_basis(); empty for a body its supports
+     * hold. Contact must hold these (ContactProblem checks that it can
+     * before computing).
+     */
+    const std::vector<RigidMotion> &
+    free_rigid_motions() const
+    {
+      return free_motions;
+    }
+
+    /**
+     * For a body with free rigid motions, whose tangent alone is singular:
+     * springs k e_i e_i^T at one contact dof per free motion, added to the
+     * tangent before it is factorised so that the factorisation exists, as
+     * (dof, k). The contact problem takes them out again exactly, as
+     * rank-one terms of its Newton matrix (theory.md, section 4.6), so no
+     * spring is left in the answer.
+     */
+    const std::vector<std::pair<types::global_dof_index, double>> &
+    regularization() const
+    {
+      return springs;
+    }
 
     /** The tangent of the last assembly (benchmarks factorise it again). */
     const SparseMatrix<double> &
@@ -289,6 +320,18 @@ namespace glissade
     SparsityPattern           sparsity;
     SparseMatrix<double>      tangent;
     DirectSolver              factorization;
+
+    /** See free_rigid_motions() and regularization(). */
+    std::vector<RigidMotion>                                free_motions;
+    std::vector<std::pair<types::global_dof_index, double>> springs;
+
+    /**
+     * The springs' dofs: among the contact dofs, one per free motion, the
+     * best conditioned set (a pivoted Gram-Schmidt on the motions' values
+     * there).
+     */
+    void
+    choose_spring_dofs(const std::vector<types::global_dof_index> &contact_dofs);
 
     /**
      * Per contact dof, the free unknowns it follows (itself, or the entries

@@ -7,6 +7,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 
+#include <glissade/body/rigid_motion.h>
 #include <glissade/fe/element_space.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/scene_description.h>
@@ -60,6 +61,17 @@ namespace glissade
                      const Vector<double>            &current_displacement,
                      const AffineConstraints<double> &element_constraints,
                      AffineConstraints<double>       &constraints) const;
+
+    /**
+     * How much each Dirichlet relation would be violated by each motion of
+     * `basis`: row i, column j is the value that relation i takes (in its
+     * homogeneous form) under motion j. A combination of the motions that
+     * leaves every row zero is one the supports do not hold.
+     */
+    std::vector<std::vector<double>>
+    support_rows(const DoFHandler<2>                   &dof_handler,
+                 const ElementSpace                    &space,
+                 const std::array<RigidMotion, 3>      &basis) const;
 
     /** Point loads at time t, as a vector of nodal forces. */
     void

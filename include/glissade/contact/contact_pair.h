@@ -126,6 +126,26 @@ namespace glissade
     void
     check_initial_state();
 
+    /**
+     * A slave node within the alert distance at t = 0, and the frame of the
+     * slave boundary there (n pointing into the slave, as the master's).
+     */
+    struct InitialContact
+    {
+      Point<2>     position;
+      Tensor<1, 2> normal, tangent;
+    };
+
+    /**
+     * The slave nodes that check_initial_state() found within the alert
+     * distance: the contacts that can hold a body from the start.
+     */
+    const std::vector<InitialContact> &
+    initial_contacts() const
+    {
+      return contacts_at_start;
+    }
+
     /** Rebuilds the surface and re-projects and linearises the active nodes. */
     void
     update_geometry();
@@ -237,6 +257,9 @@ namespace glissade
     TimerOutput                   &timer;
     std::unique_ptr<MasterSurface> master_surface;
     std::vector<ContactNode>       slave_nodes;
+    std::vector<InitialContact>    contacts_at_start;
+    /** The slave boundary's outward normal at each slave vertex (not unit). */
+    std::map<unsigned int, Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */
     double step_start = 0., step_end = 0.;
   };

@@ -111,6 +111,13 @@ namespace glissade
                         const std::vector<Vector<double>>       &predictor,
                         std::vector<BiPotentialSolver::Vector2> &r);
 
+    /**
+     * "the contact does not hold the bodies that rely on it, 'b' (a
+     * translation along (1, 0))", or empty if no body relies on contact.
+     */
+    std::string
+    held_by_contact_message() const;
+
     /** Index of a body in the simulation's list. */
     unsigned int
     body_index(const Body *body) const;
@@ -121,5 +128,7 @@ namespace glissade
     BiPotentialSolver::Settings               solver_settings;
     BiPotentialSolver::Result                 result;
     std::vector<std::vector<ContactNode>>     stored_nodes;
+    /** The springs of bodies held by contact, as rank-one terms (active_nodes). */
+    std::vector<DofVector> spring_loads, spring_rows;
   };
 } // namespace glissade

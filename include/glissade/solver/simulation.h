@@ -33,6 +33,9 @@ namespace glissade
     double       output_seconds        = 0.;
     double       checkpoint_seconds    = 0.;
     double       wall_seconds          = 0.;
+    /** Factorisations of the bodies' tangents by each method (LU: the
+     * tangent was not positive definite, or not symmetric). */
+    unsigned int n_cholesky = 0, n_lu = 0;
   };
 
   /**
