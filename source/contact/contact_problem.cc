@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
 
 namespace glissade
 {
@@ -400,6 +401,12 @@ namespace glissade
               result.message = held_by_contact_message() +
                                ": its contact nodes are open or slipping "
                                "where they would have to hold it";
+            else if (condensed->regular())
+              {
+                const std::string where = not_positive_at(active, *condensed);
+                if (!where.empty())
+                  result.message = where;
+              }
             return nullptr;
           }
       }
@@ -407,6 +414,48 @@ namespace glissade
     for (unsigned int k = 0; k < n; ++k)
       active[k]->augmented = augmentation.directions[k];
     return condensed;
+  }
+
+
+
+  std::string
+  ContactProblem::not_positive_at(const std::vector<ContactNode *> &active,
+                                  const CondensedProblem &condensed) const
+  {
+    // The first node whose own compliance is negative: pushing it gives
+    // way, so the bodies are unstable there with the rest held.
+    for (unsigned int k = 0; k < active.size(); ++k)
+      {
+        const auto         w = condensed.compliance().diagonal_block(k);
+        const unsigned int c = w[1][1] <= 0. ? 1 : w[0][0] < 0. ? 0 : 2;
+        if (c == 2)
+          continue;
+        for (const auto &pair : pairs)
+          for (const auto &node : pair->nodes())
+            if (&node == active[k])
+              {
+                std::ostringstream message;
+                message << "the bodies in contact are unstable at slave node ("
+                        << node.reference_position[0] << ", "
+                        << node.reference_position[1] << ") of pair '"
+                        << pair->name() << "' (body '" << pair->slave().name()
+                        << "'"
+                        << (pair->master() ? " on body '" + pair->master()->name() + "'" :
+                                             std::string(" on the obstacle"))
+                        << "): its " << (c == 1 ? "normal" : "tangential")
+                        << " compliance in the Newton matrix is " << w[c][c]
+                        << " <= 0, so the tangent is not positive there even "
+                           "with the contact's closed directions held. The "
+                           "bodies are past a limit point of their own "
+                           "(buckling, a sidesway, a folding corner), or the "
+                           "increment is too large for the change of contact "
+                           "status. Try more increments (Load program/Stage "
+                           "increments), a support or friction that holds "
+                           "the motion, or a finer mesh there";
+                return message.str();
+              }
+      }
+    return "";
   }
 
 

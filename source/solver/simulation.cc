@@ -159,9 +159,9 @@ namespace glissade
               }
             catch (const std::runtime_error &e)
               {
-                // A singular tangent: a body, or one of its rigid-body
-                // motions, that nothing holds (contact alone does not
-                // hold a body yet), or a structural limit point.
+                // A singular tangent: a structural limit point (free
+                // rigid-body motions are refused before computing, or
+                // regularised where contact holds them).
                 failure_cause = "the tangent of body '" +
                                 all_bodies[b]->name() +
                                 "' cannot be factorised: " + e.what();

@@ -112,6 +112,15 @@ namespace glissade
                         std::vector<BiPotentialSolver::Vector2> &r);
 
     /**
+     * Why the local problem failed, for a user, where a node's own
+     * compliance in W is not positive (the first such node, its pair, its
+     * bodies, what to change); empty if there is none.
+     */
+    std::string
+    not_positive_at(const std::vector<ContactNode *> &active,
+                    const CondensedProblem           &condensed) const;
+
+    /**
      * "the contact does not hold the bodies that rely on it, 'b' (a
      * translation along (1, 0))", or empty if no body relies on contact.
      */
