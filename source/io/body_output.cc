@@ -62,11 +62,10 @@ namespace glissade
     else
       data_out.add_data_vector(solution, nodal_displacement);
     data_out.add_data_vector(solution, stress);
-    NodalDisplacement contact_force(per_dim, "contact_force");
-    // Present in every file of a body that can touch (zero while it does
-    // not), so that ParaView sees the same fields at every time step.
-    if (!contact_rows.empty() || contact_forces.linfty_norm() > 0.)
-      data_out.add_data_vector(contact_forces, contact_force);
+    // No nodal forces here: DataOut writes each node once per cell, so a
+    // force field summed over the points would count a node up to four
+    // times. The contact forces are in the contact surface output
+    // (ContactSurfaceOutput), each node once.
     const unsigned int degree =
       per_dim == 1 ? element_space->finite_element().degree : 1;
     // No time stamp in the file: the same scene must give the same bytes

@@ -52,6 +52,8 @@ namespace glissade
     if (Archive::is_loading::value)
       stats = totals;
     archive &pvd_records;
+    // (a checkpoint from before the contact surfaces had PVD files)
+    pvd_records.resize(all_bodies.size() + contact_outputs.size());
     history->serialize_rows(archive);
     for (auto &b : all_bodies)
       {

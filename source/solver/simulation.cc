@@ -31,8 +31,10 @@ namespace glissade
         all_bodies.push_back(std::make_unique<Body>(description, scene.source));
       });
     mistakes.throw_if_any();
-    pvd_records.resize(all_bodies.size());
     contact_problem = std::make_unique<ContactProblem>(scene, all_bodies, timer);
+    for (const auto &pair : contact_problem->contact_pairs())
+      contact_outputs.emplace_back(*pair);
+    pvd_records.resize(all_bodies.size() + contact_outputs.size());
     history         = std::make_unique<HistoryWriter>(
       scene.output.history,
       all_bodies,
@@ -311,47 +313,19 @@ namespace glissade
         pvd.commit();
       }
     if (scene.output.contact_table_interval == 0)
-      write_contact_table(increment);
+      write_contact_table(increment, t);
   }
 
 
 
   void
-  Simulation::write_contact_table(const unsigned int increment) const
+  Simulation::write_contact_table(const unsigned int increment, const double t)
   {
-    for (const auto &pair : contact_problem->contact_pairs())
-      {
-        std::ostringstream name;
-        name << scene.output.directory << "/contact-" << pair->name() << "-"
-             << std::setw(5) << std::setfill('0') << increment << ".csv";
-        AtomicFile file(name.str());
-        file.stream() << "X,Y,x,y,active,gap,r_t,r_n,fx,fy,status\n";
-        for (const auto &node : pair->nodes())
-          {
-            const Body &slave = pair->slave();
-            const Tensor<1, 2> u({slave.displacement()(node.dofs[0]),
-                                  slave.displacement()(node.dofs[1])});
-            const Tensor<1, 2> f = node.active ? node.force() : Tensor<1, 2>();
-            const char *status =
-              !node.active ? "inactive" :
-              node.status == BiPotentialSolver::NodeStatus::open ? "open" :
-              node.status == BiPotentialSolver::NodeStatus::stick ? "stick" :
-                                                                     "slip";
-            file.stream() << node.reference_position[0] << ','
-                          << node.reference_position[1] << ','
-                          << node.reference_position[0] + u[0] << ','
-                          << node.reference_position[1] + u[1] << ','
-                          << node.active << ',';
-            // A node with no counterpart on the master has no gap: the field
-            // stays empty rather than repeating its last projection's.
-            if (node.projected)
-              file.stream() << node.gap;
-            file.stream() << ','
-                          << node.reaction[0] << ',' << node.reaction[1] << ','
-                          << f[0] << ',' << f[1] << ',' << status << '\n';
-          }
-        file.commit();
-      }
+    for (unsigned int p = 0; p < contact_outputs.size(); ++p)
+      contact_outputs[p].write(scene.output.directory,
+                               increment,
+                               t,
+                               pvd_records[all_bodies.size() + p]);
   }
 
 
@@ -371,7 +345,7 @@ namespace glissade
           write_output(increment, current_time);
         else if (scene.output.contact_table_interval > 0 &&
                  increment % scene.output.contact_table_interval != 0)
-          write_contact_table(increment);
+          write_contact_table(increment, current_time);
         std::cerr << "glissade: the last converged state (increment "
                   << increment << ", t = " << current_time
                   << ") is in " << scene.output.directory << std::endl;
@@ -461,7 +435,7 @@ namespace glissade
             const bool last = (increment == n_total);
             if (scene.output.contact_table_interval > 0 &&
                 (last || increment % scene.output.contact_table_interval == 0))
-              write_contact_table(increment);
+              write_contact_table(increment, t);
             if (last || (scene.output.vtu_interval > 0 &&
                          increment % scene.output.vtu_interval == 0))
               write_output(increment, t);

@@ -230,6 +230,13 @@ namespace glissade
       return problem;
     }
 
+    /** The out-of-plane thickness (Material/Thickness). */
+    double
+    thickness() const
+    {
+      return description.material.thickness;
+    }
+
     /** A length that measures the body (diameter of the reference mesh). */
     double
     size() const

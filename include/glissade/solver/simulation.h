@@ -2,6 +2,7 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/contact_problem.h>
+#include <glissade/io/contact_surface_output.h>
 #include <glissade/io/history_writer.h>
 #include <glissade/scene/scene_description.h>
 
@@ -153,9 +154,12 @@ namespace glissade
     void
     write_last_converged_state(const unsigned int increment);
 
-    /** contact-<pair>-<increment>.csv: every slave node's state. */
+    /**
+     * contact-<pair>-<increment>.csv and .vtu, and contact-<pair>.pvd:
+     * every slave node's state (ContactSurfaceOutput).
+     */
     void
-    write_contact_table(const unsigned int increment) const;
+    write_contact_table(const unsigned int increment, const double t);
 
     /** <Output directory>/checkpoint.bin */
     std::string
@@ -182,7 +186,9 @@ namespace glissade
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
+    /** (time, VTU file) of each body, then of each pair's contact surface. */
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
+    std::vector<ContactSurfaceOutput>  contact_outputs;
     std::vector<double>                residual_history;
     /** Counters; times restored from a checkpoint (0 in a fresh run). */
     RunStatistics                      stats;

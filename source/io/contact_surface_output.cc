@@ -1,0 +1,175 @@
+#include <glissade/io/atomic_file.h>
+#include <glissade/io/contact_surface_output.h>
+
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace glissade
+{
+  namespace
+  {
+    /** What each node's status is called in the table and coded in the VTU. */
+    std::pair<const char *, int>
+    status_of(const ContactNode &node)
+    {
+      if (!node.active)
+        return {"inactive", 0};
+      switch (node.status)
+        {
+          case BiPotentialSolver::NodeStatus::open:
+            return {"open", 1};
+          case BiPotentialSolver::NodeStatus::stick:
+            return {"stick", 2};
+          default:
+            return {"slip", 3};
+        }
+    }
+  } // namespace
+
+
+
+  ContactSurfaceOutput::ContactSurfaceOutput(const ContactPair &pair)
+    : pair(pair)
+  {
+    const Body &slave = pair.slave();
+    const auto  id    = slave.boundary_id(pair.settings().slave_boundary,
+                                      pair.settings().entry);
+    std::map<unsigned int, unsigned int> node_of_vertex;
+    for (unsigned int k = 0; k < pair.nodes().size(); ++k)
+      node_of_vertex[pair.nodes()[k].vertex] = k;
+    for (const auto &cell : slave.triangulation().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+          faces.push_back({{node_of_vertex.at(cell->face(f)->vertex_index(0)),
+                            node_of_vertex.at(cell->face(f)->vertex_index(1))}});
+  }
+
+
+
+  void
+  ContactSurfaceOutput::write(
+    const std::string                           &directory,
+    const unsigned int                           increment,
+    const double                                 t,
+    std::vector<std::pair<double, std::string>> &records) const
+  {
+    const auto        &nodes = pair.nodes();
+    const Body        &slave = pair.slave();
+    const unsigned int n     = nodes.size();
+
+    // Current positions, and the tributary length: half of each adjacent
+    // slave face.
+    std::vector<Point<2>> x(n);
+    for (unsigned int k = 0; k < n; ++k)
+      x[k] = nodes[k].reference_position +
+             Tensor<1, 2>({slave.displacement()(nodes[k].dofs[0]),
+                           slave.displacement()(nodes[k].dofs[1])});
+    std::vector<double> length(n, 0.);
+    for (const auto &[a, b] : faces)
+      {
+        const double half = 0.5 * x[a].distance(x[b]);
+        length[a] += half;
+        length[b] += half;
+      }
+    const double thickness = slave.thickness();
+    const auto   per_area  = [&](const unsigned int k, const double force) {
+      return length[k] > 0. ? force / (length[k] * thickness) : 0.;
+    };
+
+    std::ostringstream stem;
+    stem << "contact-" << pair.name() << "-" << std::setw(5)
+         << std::setfill('0') << increment;
+
+    // The table.
+    AtomicFile table(directory + "/" + stem.str() + ".csv");
+    table.stream() << std::setprecision(16)
+                   << "X,Y,x,y,active,gap,r_t,r_n,fx,fy,status,pressure,"
+                      "shear,slip,tributary_length\n";
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const ContactNode &node = nodes[k];
+        const Tensor<1, 2> f    = node.active ? node.force() : Tensor<1, 2>();
+        table.stream() << node.reference_position[0] << ','
+                       << node.reference_position[1] << ',' << x[k][0] << ','
+                       << x[k][1] << ',' << node.active << ',';
+        // A node with no counterpart on the master has no gap: the field
+        // stays empty rather than repeating its last projection's.
+        if (node.projected)
+          table.stream() << node.gap;
+        table.stream() << ',' << node.reaction[0] << ',' << node.reaction[1]
+                       << ',' << f[0] << ',' << f[1] << ','
+                       << status_of(node).first << ','
+                       << per_area(k, node.reaction[1]) << ','
+                       << per_area(k, node.reaction[0]) << ','
+                       << (node.active ? node.linearization.slip : 0.) << ','
+                       << length[k] << '\n';
+      }
+    table.commit();
+
+    // The line mesh (ASCII VTU: a boundary is small).
+    AtomicFile vtu(directory + "/" + stem.str() + ".vtu");
+    auto      &out = vtu.stream();
+    out << std::setprecision(16)
+        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+        << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\""
+        << faces.size() << "\">\n<Points>\n<DataArray type=\"Float64\" "
+        << "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < n; ++k)
+      out << x[k][0] << ' ' << x[k][1] << " 0\n";
+    out << "</DataArray>\n</Points>\n<Cells>\n"
+        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (const auto &[a, b] : faces)
+      out << a << ' ' << b << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (unsigned int i = 1; i <= faces.size(); ++i)
+      out << 2 * i << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (unsigned int i = 0; i < faces.size(); ++i)
+      out << "3\n";
+    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"pressure\" "
+           "Vectors=\"force\">\n";
+    const auto scalar = [&](const char *name, const auto &value) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name
+          << "\" format=\"ascii\">\n";
+      for (unsigned int k = 0; k < n; ++k)
+        out << value(k) << '\n';
+      out << "</DataArray>\n";
+    };
+    scalar("pressure", [&](unsigned int k) { return per_area(k, nodes[k].reaction[1]); });
+    scalar("shear", [&](unsigned int k) { return per_area(k, nodes[k].reaction[0]); });
+    scalar("r_n", [&](unsigned int k) { return nodes[k].reaction[1]; });
+    scalar("r_t", [&](unsigned int k) { return nodes[k].reaction[0]; });
+    // No gap without a counterpart: 0 there, and status says why.
+    scalar("gap", [&](unsigned int k) { return nodes[k].projected ? nodes[k].gap : 0.; });
+    scalar("slip", [&](unsigned int k) {
+      return nodes[k].active ? nodes[k].linearization.slip : 0.;
+    });
+    scalar("status", [&](unsigned int k) { return status_of(nodes[k]).second; });
+    out << "<DataArray type=\"Float64\" Name=\"force\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const Tensor<1, 2> f = nodes[k].active ? nodes[k].force() : Tensor<1, 2>();
+        out << f[0] << ' ' << f[1] << " 0\n";
+      }
+    out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
+           "</VTKFile>\n";
+    vtu.commit();
+
+    // The PVD of every VTU written so far (no date in it: determinism).
+    records.emplace_back(t, stem.str() + ".vtu");
+    AtomicFile pvd(directory + "/contact-" + pair.name() + ".pvd");
+    pvd.stream() << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+                    "version=\"0.1\" ByteOrder=\"LittleEndian\">\n  <Collection>\n"
+                 << std::setprecision(17);
+    for (const auto &[time, file] : records)
+      pvd.stream() << "    <DataSet timestep=\"" << time
+                   << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
+    pvd.stream() << "  </Collection>\n</VTKFile>\n";
+    pvd.commit();
+  }
+} // namespace glissade

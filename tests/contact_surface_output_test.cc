@@ -1,0 +1,220 @@
+// The contact surface output (issue 20): read back from the files a run
+// writes, as a user's script would. The pressure integrated along the
+// slave boundary must be the support's reaction, each slave node must
+// appear once, and a Hertz contact's pressure must be Hertz's profile
+// within the discretisation error.
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include "test_tools.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+using namespace glissade;
+using namespace glissade_tests;
+
+namespace
+{
+  /** The columns of a CSV file by their header names (numbers; text as NaN). */
+  std::map<std::string, std::vector<double>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream in(file);
+    check(static_cast<bool>(in), "cannot open " + file);
+    const auto split = [](const std::string &line) {
+      std::vector<std::string> fields;
+      std::string              field;
+      std::istringstream       stream(line);
+      while (std::getline(stream, field, ','))
+        fields.push_back(field);
+      return fields;
+    };
+    std::string line;
+    std::getline(in, line);
+    const auto                                 names = split(line);
+    std::map<std::string, std::vector<double>> columns;
+    while (std::getline(in, line))
+      {
+        const auto fields = split(line);
+        for (unsigned int i = 0; i < names.size(); ++i)
+          {
+            double value = std::nan("");
+            try
+              {
+                value = std::stod(fields.at(i));
+              }
+            catch (const std::exception &)
+              {}
+            columns[names[i]].push_back(value);
+          }
+      }
+    return columns;
+  }
+
+  /**
+   * The integral of the pressure along the slave boundary, times the
+   * thickness: the trapezoidal rule between neighbouring nodes in the
+   * given order (current positions).
+   */
+  double
+  integrated_pressure(std::map<std::string, std::vector<double>> &table,
+                      const std::vector<unsigned int>            &order,
+                      const double                                thickness)
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i + 1 < order.size(); ++i)
+      {
+        const unsigned int a = order[i], b = order[i + 1];
+        const double       length =
+          std::hypot(table["x"][a] - table["x"][b], table["y"][a] - table["y"][b]);
+        sum += 0.5 * (table["pressure"][a] + table["pressure"][b]) * length;
+      }
+    return sum * thickness;
+  }
+
+  std::string
+  contents(const std::string &file)
+  {
+    std::ifstream      in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+} // namespace
+
+// A block of thickness 0.5 pressed onto a rigid line: the slave boundary's
+// nine nodes appear once each in the table and the VTU, and the pressure
+// integrated along it balances the top's reaction to round-off. The bulk
+// VTU has no force field (it would count a node once per cell).
+GLISSADE_TEST(contact_surface_block_pressure_balances_support)
+{
+  const std::string prm =
+    "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n"
+    "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
+    "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 0.5\n"
+    "  set Subdivisions = 8, 4\n end\n"
+    " subsection Material\n  set Young modulus = 1000\n"
+    "  set Thickness = 0.5\n end\n"
+    " subsection Boundary conditions\n  set Fixed = left: x\n"
+    "  set Prescribed displacement = top: y: -0.01*t\n end\nend\n"
+    "subsection Contact floor\n set Slave body = block\n"
+    " set Slave boundary = bottom\n set Master body = rigid\n"
+    " set Alert distance = 0.1\n"
+    " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
+    "  set Normal = 0, 1\n end\nend\n"
+    "subsection Load program\n set Stage increments = 2\nend\n"
+    "subsection Newton\n set Residual tolerance = 1e-12\nend\n"
+    "subsection Output\n set Progress = false\n"
+    " set Directory = surface_block\nend\n";
+  Simulation simulation(SceneReader::read_string(prm, "surface"));
+  simulation.run();
+  const double top = simulation.body("block").reaction("top")[1];
+
+  auto table = read_csv("surface_block/contact-floor-00002.csv");
+  const unsigned int n = table["X"].size();
+  std::set<std::pair<double, double>> positions;
+  std::vector<unsigned int>           order(n);
+  for (unsigned int k = 0; k < n; ++k)
+    {
+      positions.emplace(table["X"][k], table["Y"][k]);
+      order[k] = k;
+    }
+  std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+    return table["X"][a] < table["X"][b];
+  });
+  const double integral = integrated_pressure(table, order, 0.5);
+  std::cout << "  " << n << " rows, " << positions.size()
+            << " distinct nodes; pressure integrated " << integral
+            << ", top reaction " << top << std::endl;
+  check(n == 9 && positions.size() == 9, "each of the 9 slave nodes once");
+  check_relative(integral, -top, 1e-10,
+                 "pressure integrated along the surface against the support");
+
+  const std::string vtu = contents("surface_block/contact-floor-00002.vtu");
+  check(vtu.find("NumberOfPoints=\"9\" NumberOfCells=\"8\"") != std::string::npos,
+        "the surface VTU is the 9 nodes and 8 faces of the boundary");
+  check(contents("surface_block/contact-floor.pvd").find("contact-floor-00002.vtu") !=
+          std::string::npos,
+        "the PVD lists the surface VTU");
+  check(contents("surface_block/block-00002.vtu").find("contact_force") ==
+          std::string::npos,
+        "no force field in the bulk VTU");
+}
+
+
+
+// Hertz: the lower half of a disk (R = 1, E = 200, nu = 0.3, plane strain,
+// a hole of radius 0.2 driven down) on a rigid flat. At the load P that
+// the contact carries, Hertz gives a = sqrt(4 P R / (pi E*)) and
+// p(x) = p0 sqrt(1 - x^2 / a^2), p0 = 2 P / (pi a). The profile read from
+// the table must approach it as the mesh is refined (a / R = 0.074).
+GLISSADE_TEST(contact_surface_hertz_pressure_profile)
+{
+  std::vector<double> deviation;
+  for (const std::string subdivisions : {"240, 12", "480, 24"})
+    {
+      const std::string prm =
+        "subsection Scene\n set Bodies = disk\n set Contact pairs = flat\nend\n"
+        "subsection Body disk\n subsection Mesh\n  set Type = half ring\n"
+        "  set Center = 0, 1\n  set Inner radius = 0.2\n"
+        "  set Outer radius = 1\n  set Start angle = 180\n"
+        "  set End angle = 360\n  set Subdivisions = " + subdivisions +
+        "\n end\n subsection Material\n  set Young modulus = 200\n"
+        "  set Poisson ratio = 0.3\n end\n"
+        " subsection Boundary conditions\n"
+        "  set Prescribed displacement = inner: xy: 0, -0.01*t\n end\nend\n"
+        "subsection Contact flat\n set Slave body = disk\n"
+        " set Slave boundary = outer\n set Master body = rigid\n"
+        " set Alert distance = 0.05\n"
+        " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
+        "  set Normal = 0, 1\n end\nend\n"
+        "subsection Load program\n set Stage increments = 2\nend\n"
+        "subsection Newton\n set Residual tolerance = 1e-12\nend\n"
+        "subsection Output\n set Progress = false\n set VTU interval = 0\n"
+        " set Directory = surface_hertz\nend\n";
+      Simulation simulation(SceneReader::read_string(prm, "hertz"));
+      simulation.run();
+      const double support = simulation.body("disk").reaction("inner")[1];
+
+      auto               table = read_csv("surface_hertz/contact-flat-00002.csv");
+      const unsigned int n     = table["X"].size();
+      std::vector<unsigned int> order(n);
+      for (unsigned int k = 0; k < n; ++k)
+        order[k] = k;
+      std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
+        return table["X"][a] < table["X"][b];
+      });
+      const double P = integrated_pressure(table, order, 1.);
+      check_relative(P, -support, 1e-10,
+                     "pressure integrated against the hole's reaction");
+
+      const double E_star = 200. / (1. - 0.3 * 0.3);
+      const double a      = std::sqrt(4. * P / (M_PI * E_star));
+      const double p0     = 2. * P / (M_PI * a);
+      double       worst = 0., widest = 0.;
+      for (unsigned int k = 0; k < n; ++k)
+        if (table["r_n"][k] > 0.)
+          {
+            const double x     = table["x"][k];
+            const double hertz = p0 * std::sqrt(std::max(0., 1. - x * x / (a * a)));
+            worst  = std::max(worst, std::abs(table["pressure"][k] - hertz) / p0);
+            widest = std::max(widest, std::abs(x));
+          }
+      deviation.push_back(worst);
+      std::cout << "  " << subdivisions << ": P " << P << ", a " << a
+                << " (last closed node at " << widest << "), p0 " << p0
+                << "; largest deviation from Hertz " << worst << " p0"
+                << std::endl;
+      const double h = M_PI / std::stod(subdivisions);
+      check(std::abs(widest - a) <= 2. * h,
+            "the contact ends within two elements of Hertz's a");
+    }
+  check(deviation[1] <= 0.05, "Hertz's profile within 5 % of p0 on the fine mesh");
+  check(deviation[1] < 0.5 * deviation[0],
+        "the deviation from Hertz shrinks as the mesh is refined");
+}
