@@ -3,8 +3,52 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/history_writer.h>
 
+#include <cctype>
+
 namespace glissade
 {
+  namespace
+  {
+    /**
+     * A plain identifier from a name or a location, for a column header
+     * that pandas, gnuplot and R read as it is: letters, digits and '_';
+     * '-' becomes 'm' and '.' 'p' in numbers, anything else one '_'
+     * ("point(-0.025, 0.5)" -> "m0p025_0p5", "beam on ring" ->
+     * "beam_on_ring").
+     */
+    std::string
+    identifier(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        {
+          if (std::isalnum(static_cast<unsigned char>(c)) || c == '_')
+            result += c;
+          else if (c == '-')
+            result += 'm';
+          else if (c == '.')
+            result += 'p';
+          else if (!result.empty() && result.back() != '_')
+            result += '_';
+        }
+      while (!result.empty() && result.back() == '_')
+        result.pop_back();
+      return result;
+    }
+
+    /** "point(x, y)" -> "x_y" as an identifier, a boundary name as itself. */
+    std::string
+    location_identifier(const std::string &location)
+    {
+      const std::string trimmed = text::trim(location);
+      if (trimmed.rfind("point(", 0) == 0 && trimmed.back() == ')')
+        return identifier(trimmed.substr(6, trimmed.size() - 7));
+      return identifier(trimmed);
+    }
+  } // namespace
+
+
+
   HistoryWriter::HistoryWriter(
     const std::vector<std::string>                  &items,
     const std::vector<std::unique_ptr<Body>>        &bodies,
@@ -33,9 +77,8 @@ namespace glissade
             pair = p.get();
         if (kind == "contact_force" && pair != nullptr && args.size() == 1)
           {
-            columns.push_back(args[0] + ":Fx");
-            columns.push_back(args[0] + ":Fy");
-            columns.push_back(args[0] + ":active_nodes");
+            for (const std::string q : {"Fx", "Fy", "active_nodes"})
+              columns.push_back(identifier(args[0]) + "_" + q);
             evaluators.emplace_back([pair](std::vector<double> &row) {
               const Tensor<1, 2> f = pair->total_force();
               row.push_back(f[0]);
@@ -54,12 +97,9 @@ namespace glissade
               throw InputError(entry,
                                "'" + item + "': no slave node of pair '" +
                                  args[0] + "' at that reference position");
-            std::string label = args[1].substr(6, args[1].size() - 7);
-            for (char &c : label)
-              if (c == ',')
-                c = ' ';
-            for (const std::string q : {"r_n", "r_t", "|f|", "gap"})
-              columns.push_back(args[0] + ":" + q + "(" + label + ")");
+            for (const std::string q : {"r_n", "r_t", "f", "gap"})
+              columns.push_back(identifier(args[0]) + "_" + q + "_" +
+                                location_identifier(args[1]));
             evaluators.emplace_back([pair, X](std::vector<double> &row) {
               const ContactNode &node = pair->node_at(X);
               row.push_back(node.reaction[1]);
@@ -80,7 +120,7 @@ namespace glissade
 
         if (kind == "max_displacement" && args.size() == 1)
           {
-            columns.push_back(args[0] + ":max|u|");
+            columns.push_back(identifier(args[0]) + "_max_u");
             evaluators.emplace_back([body](std::vector<double> &row) {
               row.push_back(body->max_displacement());
             });
@@ -100,15 +140,9 @@ namespace glissade
               {
                 throw InputError(entry, e.what());
               }
-            // No comma in a CSV header: "point(1, 0.2)" becomes "(1 0.2)".
-            const std::string at =
-              "(" + text::trim(args[1].substr(6, args[1].size() - 7)) + ")";
-            std::string label = at;
-            for (char &c : label)
-              if (c == ',')
-                c = ' ';
-            columns.push_back(args[0] + ":ux" + label);
-            columns.push_back(args[0] + ":uy" + label);
+            for (const std::string q : {"ux", "uy"})
+              columns.push_back(identifier(args[0]) + "_" + q + "_" +
+                                location_identifier(args[1]));
             evaluators.emplace_back([body, p](std::vector<double> &row) {
               const Tensor<1, 2> u = body->vertex_displacement(p);
               row.push_back(u[0]);
@@ -126,12 +160,9 @@ namespace glissade
               {
                 throw InputError(entry, e.what());
               }
-            std::string label = where;
-            for (char &c : label)
-              if (c == ',')
-                c = ' ';
-            columns.push_back(args[0] + ":Rx(" + label + ")");
-            columns.push_back(args[0] + ":Ry(" + label + ")");
+            for (const std::string q : {"Rx", "Ry"})
+              columns.push_back(identifier(args[0]) + "_" + q + "_" +
+                                location_identifier(where));
             evaluators.emplace_back([body, where](std::vector<double> &row) {
               const Tensor<1, 2> r = body->reaction(where);
               row.push_back(r[0]);
@@ -146,6 +177,17 @@ namespace glissade
                              "boundary), contact_force(pair), "
                              "contact_node(pair, point(x, y)))");
       }
+
+    // Names that differ only in what an identifier cannot hold ("a b" and
+    // "a_b") would give two columns one header.
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        if (columns[i] == columns[j])
+          throw InputError(entry,
+                           "two items give the column '" + columns[i] +
+                             "' (body, pair or location names that differ "
+                             "only in spaces, signs or punctuation): rename "
+                             "one, or remove the repeated item");
   }
 
 

@@ -19,6 +19,45 @@
 
 namespace glissade
 {
+  namespace
+  {
+    /** "12 s", "3 min 05 s", "2 h 10 min": a duration for a person. */
+    std::string
+    duration(const double seconds)
+    {
+      std::ostringstream text;
+      const long         s = std::lround(seconds);
+      if (seconds < 10.)
+        text << std::setprecision(2) << seconds << " s";
+      else if (s < 120)
+        text << s << " s";
+      else if (s < 7200)
+        text << s / 60 << " min " << std::setw(2) << std::setfill('0') << s % 60
+             << " s";
+      else
+        text << s / 3600 << " h " << std::setw(2) << std::setfill('0')
+             << (s % 3600) / 60 << " min";
+      return text.str();
+    }
+
+    /**
+     * "elapsed 12 s, about 40 s left": the increments still to do at the
+     * mean pace of those done in this run.
+     */
+    std::string
+    time_left(const double       elapsed,
+              const unsigned int done,
+              const unsigned int remaining)
+    {
+      std::string text = "elapsed " + duration(elapsed);
+      if (done > 0 && remaining > 0)
+        text += ", about " + duration(elapsed / done * remaining) + " left";
+      return text;
+    }
+  } // namespace
+
+
+
   Simulation::Simulation(const SceneDescription &scene)
     : scene(scene)
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
@@ -26,9 +65,17 @@ namespace glissade
     // Every body is built, and its boundary names checked against its mesh,
     // before the first mistake is reported: all of them in one message.
     InputErrorList mistakes;
+    Timer setup;
     for (const auto &description : scene.bodies)
       mistakes.collect([&]() {
         all_bodies.push_back(std::make_unique<Body>(description, scene.source));
+        // A large mesh takes a while to set up: say what is happening.
+        if (scene.output.progress)
+          std::cout << "body '" << description.name << "': "
+                    << all_bodies.back()->triangulation().n_active_cells()
+                    << " cells, " << all_bodies.back()->n_dofs()
+                    << " dofs (set up, elapsed " << duration(setup.wall_time())
+                    << ")" << std::endl;
       });
     mistakes.throw_if_any();
     contact_problem = std::make_unique<ContactProblem>(scene, all_bodies, timer);
@@ -428,6 +475,9 @@ namespace glissade
                               std::string() :
                               "  active contact nodes " +
                                 std::to_string(contact_problem->n_active()))
+                        << "  " << time_left(wall.wall_time(),
+                                             increment - restart_increment,
+                                             n_total - increment)
                         << std::endl;
             history->record(increment, t, iterations);
             if (on_increment)
