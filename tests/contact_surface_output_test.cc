@@ -91,9 +91,12 @@ namespace
 // nine nodes appear once each in the table and the VTU, and the pressure
 // integrated along it balances the top's reaction to round-off. The bulk
 // VTU has no force field (it would count a node once per cell).
-GLISSADE_TEST(contact_surface_block_pressure_balances_support)
+namespace
 {
-  const std::string prm =
+  std::string
+  block_on_line(const std::string &slave_boundary, const std::string &directory)
+  {
+    return
     "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n"
     "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
     "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 0.5\n"
@@ -103,15 +106,21 @@ GLISSADE_TEST(contact_surface_block_pressure_balances_support)
     " subsection Boundary conditions\n  set Fixed = left: x\n"
     "  set Prescribed displacement = top: y: -0.01*t\n end\nend\n"
     "subsection Contact floor\n set Slave body = block\n"
-    " set Slave boundary = bottom\n set Master body = rigid\n"
+    " set Slave boundary = " + slave_boundary + "\n set Master body = rigid\n"
     " set Alert distance = 0.1\n"
     " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
     "  set Normal = 0, 1\n end\nend\n"
     "subsection Load program\n set Stage increments = 2\nend\n"
     "subsection Newton\n set Residual tolerance = 1e-12\nend\n"
     "subsection Output\n set Progress = false\n"
-    " set Directory = surface_block\nend\n";
-  Simulation simulation(SceneReader::read_string(prm, "surface"));
+    " set Directory = " + directory + "\nend\n";
+  }
+} // namespace
+
+GLISSADE_TEST(contact_surface_block_pressure_balances_support)
+{
+  Simulation simulation(SceneReader::read_string(
+    block_on_line("bottom", "surface_block"), "surface"));
   simulation.run();
   const double top = simulation.body("block").reaction("top")[1];
 
@@ -217,4 +226,28 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
   check(deviation[1] <= 0.05, "Hertz's profile within 5 % of p0 on the fine mesh");
   check(deviation[1] < 0.5 * deviation[0],
         "the deviation from Hertz shrinks as the mesh is refined");
+}
+
+
+
+// A slave boundary given as several names: the corners where they meet
+// are one node each (8 x 4 block: 9 + 4 + 4 = 17 nodes), and the contact
+// still carries exactly what the top's support does.
+GLISSADE_TEST(contact_pair_several_slave_boundaries)
+{
+  Simulation simulation(SceneReader::read_string(
+    block_on_line("bottom, left, right", "surface_sides"), "surface"));
+  simulation.run();
+  const auto &pair = *simulation.contact().contact_pairs()[0];
+  std::set<unsigned int> vertices;
+  for (const auto &node : pair.nodes())
+    vertices.insert(node.vertex);
+  const double top   = simulation.body("block").reaction("top")[1];
+  const double total = pair.total_force()[1];
+  std::cout << "  " << pair.nodes().size() << " slave nodes (" << vertices.size()
+            << " distinct); contact force " << total << ", top reaction " << top
+            << std::endl;
+  check(pair.nodes().size() == 17 && vertices.size() == 17,
+        "bottom, left and right give 17 nodes, corners once");
+  check_relative(total, -top, 1e-10, "contact force against the support");
 }

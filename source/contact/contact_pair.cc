@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/surface_registry.h>
@@ -41,14 +42,16 @@ namespace glissade
                            "node-to-segment contact would leave out; contact "
                            "bodies must use q1 or hermite");
 
-    // The slave nodes: the vertices of the declared contact area.
-    const types::boundary_id slave_id =
-      slave.boundary_id(description.slave_boundary, entry + "/Slave boundary");
+    // The slave nodes: the vertices of the declared contact area, one or
+    // several boundaries ("bottom, left, right"); a vertex where two of
+    // them meet is one node, not two constraints on the same point.
+    for (const auto &name : text::split_top_level(description.slave_boundary, ','))
+      slave_ids.insert(slave.boundary_id(text::trim(name), entry + "/Slave boundary"));
     std::set<unsigned int> seen;
     for (const auto &cell : slave.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() == slave_id)
+            slave_ids.count(cell->face(f)->boundary_id()) > 0)
           for (const unsigned int v : {0u, 1u})
             {
               const unsigned int vertex = cell->face(f)->vertex_index(v);
@@ -64,7 +67,7 @@ namespace glissade
 
     slave_outward_normal = boundary_vertex_normals(
       slave.triangulation(),
-      [slave_id](const types::boundary_id id) { return id == slave_id; });
+      [this](const types::boundary_id id) { return slave_ids.count(id) > 0; });
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
       check_obstacle_faces_slave(slave_outward_normal);

@@ -33,14 +33,13 @@ namespace glissade
     : pair(pair)
   {
     const Body &slave = pair.slave();
-    const auto  id    = slave.boundary_id(pair.settings().slave_boundary,
-                                      pair.settings().entry);
+    const auto &ids   = pair.slave_boundary_ids();
     std::map<unsigned int, unsigned int> node_of_vertex;
     for (unsigned int k = 0; k < pair.nodes().size(); ++k)
       node_of_vertex[pair.nodes()[k].vertex] = k;
     for (const auto &cell : slave.triangulation().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+        if (cell->face(f)->at_boundary() && ids.count(cell->face(f)->boundary_id()) > 0)
           faces.push_back({{node_of_vertex.at(cell->face(f)->vertex_index(0)),
                             node_of_vertex.at(cell->face(f)->vertex_index(1))}});
   }

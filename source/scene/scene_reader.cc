@@ -168,7 +168,9 @@ namespace glissade
       prm.declare_entry("Slave body", "", Patterns::Anything(),
                         "The body whose boundary nodes are the slave nodes.");
       prm.declare_entry("Slave boundary", "", Patterns::Anything(),
-                        "The declared contact area on the slave body.");
+                        "The declared contact area on the slave body: a boundary "
+                        "name, or several separated by commas "
+                        "('bottom, left, right'), whose nodes form one set.");
       prm.declare_entry("Master body", "rigid", Patterns::Anything(),
                         "The body that carries the master surface, or "
                         "'rigid' for an analytic obstacle (subsection "

@@ -10,6 +10,7 @@
 #include <glissade/scene/scene_description.h>
 
 #include <map>
+#include <set>
 #include <memory>
 #include <vector>
 
@@ -183,6 +184,13 @@ namespace glissade
       return slave_body;
     }
 
+    /** The boundary ids of the slave boundary (Slave boundary lists names). */
+    const std::set<types::boundary_id> &
+    slave_boundary_ids() const
+    {
+      return slave_ids;
+    }
+
     /** nullptr for a rigid obstacle. */
     Body *
     master()
@@ -258,6 +266,7 @@ namespace glissade
     std::unique_ptr<MasterSurface> master_surface;
     std::vector<ContactNode>       slave_nodes;
     std::vector<InitialContact>    contacts_at_start;
+    std::set<types::boundary_id>   slave_ids;
     /** The slave boundary's outward normal at each slave vertex (not unit). */
     std::map<unsigned int, Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */
