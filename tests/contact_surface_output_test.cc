@@ -251,3 +251,23 @@ GLISSADE_TEST(contact_pair_several_slave_boundaries)
         "bottom, left and right give 17 nodes, corners once");
   check_relative(total, -top, 1e-10, "contact force against the support");
 }
+
+
+
+// Output/Plots: any scene draws its history and its pressure along the
+// interface as PNG files (scripts/plot_scene.py, Debian's matplotlib).
+GLISSADE_TEST(scene_plots_written)
+{
+  Simulation simulation(SceneReader::read_string(
+    block_on_line("bottom", "scene_plots"), "plots",
+    {"Output/Plots=true",
+     "Output/History=contact_force(floor); reaction(block, top)"}));
+  simulation.run();
+  for (const std::string file : {"history.png", "contact-floor-pressure.png"})
+    {
+      const std::string png = contents("scene_plots/" + file);
+      std::cout << "  " << file << ": " << png.size() << " bytes" << std::endl;
+      check(png.size() > 1000 && png.compare(0, 4, "\x89PNG") == 0,
+            file + " is a PNG picture");
+    }
+}

@@ -4,7 +4,7 @@
 #include <glissade/base/config.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/study/plotting.h>
+#include <glissade/io/plotting.h>
 
 #include "test_tools.h"
 

@@ -723,6 +723,7 @@ namespace glissade
       if (!item.empty())
         scene.output.history.push_back(item);
     scene.output.progress = prm.get_bool("Progress");
+    scene.output.plots    = prm.get_bool("Plots");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpoint");

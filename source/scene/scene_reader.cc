@@ -405,6 +405,14 @@ namespace glissade
       "at that reference position).");
     prm.declare_entry("Progress", "true", Patterns::Bool(),
                       "Print one line per increment.");
+    prm.declare_entry("Plots", "false", Patterns::Bool(),
+                      "At the end of the run (or at a stop), draw PNGs "
+                      "from the written files: history.png (every history "
+                      "column against t, and the Newton iterations), and "
+                      "contact-<pair>-pressure.png (the pressure along "
+                      "each slave boundary at the written increments). "
+                      "Needs Debian's /usr/bin/python3 with matplotlib; "
+                      "without it the run says so and goes on.");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpoint");

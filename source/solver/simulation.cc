@@ -6,6 +6,7 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/directory_lock.h>
+#include <glissade/io/plotting.h>
 #include <glissade/solver/simulation.h>
 
 #include <algorithm>
@@ -396,6 +397,8 @@ namespace glissade
         std::cerr << "glissade: the last converged state (increment "
                   << increment << ", t = " << current_time
                   << ") is in " << scene.output.directory << std::endl;
+        if (scene.output.plots)
+          plot_with_python("plot_scene.py", scene.output.directory);
       }
     catch (const std::exception &e)
       {
@@ -541,6 +544,8 @@ namespace glissade
         << "stopped after increment " << increment << " of " << n_total
         << " (Checkpoint/Stop after increment); continue with --restart\n";
     summary_file.commit();
+    if (scene.output.plots)
+      plot_with_python("plot_scene.py", scene.output.directory);
     return completed;
   }
 

@@ -8,7 +8,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/contact_case_study.h>
-#include <glissade/study/plotting.h>
+#include <glissade/io/plotting.h>
 
 #include <algorithm>
 #include <cmath>

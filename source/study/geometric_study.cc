@@ -8,7 +8,7 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/study/geometric_study.h>
-#include <glissade/study/plotting.h>
+#include <glissade/io/plotting.h>
 
 #include <cmath>
 #include <filesystem>

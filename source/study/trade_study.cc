@@ -5,7 +5,7 @@
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
-#include <glissade/study/plotting.h>
+#include <glissade/io/plotting.h>
 #include <glissade/study/trade_measures.h>
 #include <glissade/study/trade_study.h>
 

@@ -128,6 +128,7 @@ namespace glissade
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
     bool                     progress = true;
+    bool                     plots    = false; // scripts/plot_scene.py
   };
 
   /** Checkpoints of a long run (Simulation::run). */

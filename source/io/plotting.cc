@@ -1,5 +1,5 @@
 #include <glissade/base/config.h>
-#include <glissade/study/plotting.h>
+#include <glissade/io/plotting.h>
 
 #include <cstdlib>
 #include <filesystem>
