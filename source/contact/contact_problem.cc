@@ -172,7 +172,9 @@ namespace glissade
     result.converged = true;
     if (active.empty())
       {
-        if (nodes.terms.empty())
+        // (with no node in contact, only a body that relies on contact
+        // has a problem: nothing holds it)
+        if (held_by_contact_message().empty())
           return true;
         result.converged = false;
         result.message   = held_by_contact_message() +

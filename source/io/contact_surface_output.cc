@@ -1,5 +1,6 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/contact_surface_output.h>
+#include <glissade/io/pvd_index.h>
 
 #include <iomanip>
 #include <map>
@@ -159,16 +160,8 @@ namespace glissade
            "</VTKFile>\n";
     vtu.commit();
 
-    // The PVD of every VTU written so far (no date in it: determinism).
+    // The PVD of every VTU written so far.
     records.emplace_back(t, stem.str() + ".vtu");
-    AtomicFile pvd(directory + "/contact-" + pair.name() + ".pvd");
-    pvd.stream() << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
-                    "version=\"0.1\" ByteOrder=\"LittleEndian\">\n  <Collection>\n"
-                 << std::setprecision(17);
-    for (const auto &[time, file] : records)
-      pvd.stream() << "    <DataSet timestep=\"" << time
-                   << "\" group=\"\" part=\"0\" file=\"" << file << "\"/>\n";
-    pvd.stream() << "  </Collection>\n</VTKFile>\n";
-    pvd.commit();
+    write_pvd_index(directory + "/contact-" + pair.name() + ".pvd", records);
   }
 } // namespace glissade

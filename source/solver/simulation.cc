@@ -7,6 +7,7 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
+#include <glissade/io/pvd_index.h>
 #include <glissade/solver/simulation.h>
 
 #include <algorithm>
@@ -344,21 +345,9 @@ namespace glissade
         const std::string vtu =
           all_bodies[b]->write_vtu(scene.output.directory, increment);
         pvd_records[b].emplace_back(t, vtu);
-        AtomicFile pvd(scene.output.directory + "/" + all_bodies[b]->name() +
-                       ".pvd");
-        // Written here rather than by DataOutBase::write_pvd_record, which
-        // stamps the date into the file: the same scene must give the same
-        // bytes (ctest -R determinism).
-        pvd.stream() << "<?xml version=\"1.0\"?>\n"
-                     << "<VTKFile type=\"Collection\" version=\"0.1\" "
-                        "ByteOrder=\"LittleEndian\">\n  <Collection>\n"
-                     << std::setprecision(17);
-        for (const auto &[time, file] : pvd_records[b])
-          pvd.stream() << "    <DataSet timestep=\"" << time
-                       << "\" group=\"\" part=\"0\" file=\"" << file
-                       << "\"/>\n";
-        pvd.stream() << "  </Collection>\n</VTKFile>\n";
-        pvd.commit();
+        write_pvd_index(scene.output.directory + "/" + all_bodies[b]->name() +
+                          ".pvd",
+                        pvd_records[b]);
       }
     if (scene.output.contact_table_interval == 0)
       write_contact_table(increment, t);
