@@ -93,3 +93,129 @@ end
                  1e-9,
                  "reaction on 'clamp' (N)");
 }
+
+// A bar of two materials in series, read from a Gmsh file whose Physical
+// Surfaces 'soft' (x < 1) and 'stiff' (x > 1) are material regions, pulled
+// by a traction s at x = 2: u_x(1) = s / E_soft, u_x(2) = s (1 / E_soft +
+// 1 / E_stiff) (nu = 0: uniaxial, no lateral mismatch; s / E ~ 1e-6 keeps
+// the strains small). MSH 2.2 with the soft part on the body's own
+// Material, MSH 4.1 with both parts listed as regions.
+GLISSADE_TEST(mesh_gmsh_two_material_bar)
+{
+  for (const std::string version : {"v22", "v41"})
+    {
+      const bool        both_listed = version == "v41";
+      const std::string prm =
+        R"(
+subsection Scene
+  set Bodies = bar
+end
+subsection Body bar
+  subsection Mesh
+    set Type = gmsh
+    set File = )" +
+        source_path("tests/data/two_material_bar_" + version + ".msh") + R"(
+  end
+  subsection Material
+    set Young modulus = )" +
+        (both_listed ? "5e5" : "1e6") + R"(
+    set Poisson ratio = 0
+    set Hypothesis = plane stress
+    set Regions = )" +
+        (both_listed ? "soft, stiff" : "stiff") + R"(
+  end
+  subsection Material stiff
+    set Young modulus = 3e6
+  end
+)" + (both_listed ? "  subsection Material soft\n    set Young modulus = 1e6\n  end\n" :
+                    "") +
+        R"(  subsection Boundary conditions
+    set Fixed = clamp: x; point(0, 0): y
+    set Tractions = pull: 1*t, 0
+  end
+end
+subsection Newton
+  set Residual tolerance = 1e-13
+end
+subsection Output
+  set Progress = false
+end
+)";
+      std::cout << "MSH " << version << ":" << std::endl;
+      Simulation simulation(SceneReader::read_string(prm, "two-material bar"));
+      simulation.advance_to(1., "increment 1");
+      const Body &bar = simulation.body("bar");
+      check_relative(bar.vertex_displacement(Point<2>(1., 0.5))[0],
+                     1. / 1e6,
+                     1e-5,
+                     "u_x at the interface x = 1");
+      check_relative(bar.vertex_displacement(Point<2>(2., 1.))[0],
+                     1. / 1e6 + 1. / 3e6,
+                     1e-5,
+                     "u_x at x = 2 (elongation)");
+      check_relative(bar.reaction("clamp")[0], -1., 1e-9, "reaction (N)");
+    }
+}
+
+// A thick cylinder under internal pressure p (plane strain, Lame): u_r(b) =
+// (1 + nu) p a^2 / (E (b^2 - a^2)) ((1 - 2 nu) b + b^2 / b), a = 1, b = 2,
+// on a quarter annulus of 4 x 2 cells read from second-order Gmsh files
+// whose mid-side nodes lie on the arcs. Read with a quadratic space the arcs
+// are followed (9-node MSH 4.1 with q2, 8-node MSH 2.2 with q8); the same
+// corners as straight chords (first-order file, q8) give a body of another
+// shape, whose error the curved ones must beat by far.
+GLISSADE_TEST(mesh_gmsh_second_order_curved_edges)
+{
+  const double E = 1000., nu = 0.3, p = 0.01, a = 1., b = 2.;
+  const double exact =
+    (1. + nu) * p * a * a / (E * (b * b - a * a)) * ((1. - 2. * nu) * b + b);
+  const auto run = [&](const std::string &file, const std::string &space) {
+    const std::string prm = R"(
+subsection Scene
+  set Bodies = ring
+end
+subsection Body ring
+  subsection Mesh
+    set Type = gmsh
+    set File = )" + source_path("tests/data/" + file) +
+                            R"(
+  end
+  subsection Element
+    set Space = )" + space + R"(
+  end
+  subsection Material
+    set Young modulus = 1000
+    set Poisson ratio = 0.3
+  end
+  subsection Boundary conditions
+    set Fixed = x0: x; y0: y
+    set Pressure = inner: 0.01*t
+  end
+end
+subsection Newton
+  set Residual tolerance = 1e-12
+end
+subsection Output
+  set Progress = false
+end
+)";
+    Simulation simulation(SceneReader::read_string(prm, file));
+    simulation.advance_to(1., "increment 1");
+    const Body  &ring = simulation.body("ring");
+    const double u_x  = ring.vertex_displacement(Point<2>(2., 0.))[0];
+    const double u_y  = ring.vertex_displacement(Point<2>(0., 2.))[1];
+    std::cout << "  " << file << " (" << space << "): u_r(2) = " << u_x
+              << " at theta = 0, " << u_y << " at theta = pi/2; Lame "
+              << exact << std::endl;
+    return std::max(std::abs(u_x - exact), std::abs(u_y - exact)) / exact;
+  };
+  const double q8     = run("quarter_annulus_q8_v22.msh", "q8");
+  const double q2     = run("quarter_annulus_q9_v41.msh", "q2");
+  const double chords = run("quarter_annulus_chords_v22.msh", "q8");
+  std::cout << "  relative errors: q8 " << q8 << ", q2 " << q2
+            << ", chords " << chords << std::endl;
+  check(q8 < 2e-3 && q2 < 2e-3,
+        "a curved quadratic mesh is off Lame by more than 0.2 %");
+  check(chords > 10. * std::max(q8, q2),
+        "the curved edges do not change the answer: are they read?");
+}

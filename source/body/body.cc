@@ -11,32 +11,33 @@
 
 namespace glissade
 {
-  namespace
-  {
-    PlaneHypothesis
-    hypothesis_from_name(const std::string &name)
-    {
-      return name == "plane stress" ? PlaneHypothesis::plane_stress :
-                                      PlaneHypothesis::plane_strain;
-    }
-  } // namespace
-
-
-
   Body::Body(const BodyDescription &description, const std::string &source)
     : description(description)
     , source(source)
-    , body_material(Material::create(description.material.law,
-                                     description.material.young_modulus,
-                                     description.material.poisson_ratio,
-                                     hypothesis_from_name(
-                                       description.material.hypothesis)))
   {
-    const std::string where = source + ": Body " + description.name;
-    boundary_names = MeshFactory::create(description.mesh, mesh, where);
-    reference_size = GridTools::diameter(mesh);
+    const std::string where  = source + ": Body " + description.name;
+    const MeshLabels  labels = MeshFactory::create(description.mesh, mesh, where);
+    boundary_names           = labels.boundaries;
+    reference_size           = GridTools::diameter(mesh);
+    materials                = std::make_unique<BodyMaterials>(
+      description.material,
+      labels.regions,
+      description.mesh.type == "gmsh" ? description.mesh.file : "",
+      where);
 
     element_space = ElementSpaceRegistry::create(description.element_space);
+    // A second-order file's curved edges are followed by a mapping of
+    // degree two or more; a bilinear or Hermite body would silently see
+    // the chords instead.
+    if (labels.second_order &&
+        (description.element_space == "q1" ||
+         description.element_space == "hermite"))
+      throw InputError(where + "/Element/Space",
+                       "'" + description.mesh.file +
+                         "' has second-order quadrilaterals, whose curved "
+                         "edges a '" + description.element_space +
+                         "' body cannot follow: choose q2, q8, q3 or q12, "
+                         "or save the mesh first-order (gmsh -order 1)");
     dofs.reinit(mesh);
     dofs.distribute_dofs(element_space->finite_element());
     element_space->setup(dofs, element_constraints);
@@ -134,6 +135,7 @@ namespace glissade
         cell->get_dof_indices(local_dofs);
         cell_matrix = 0.;
         cell_rhs    = 0.;
+        const Material &cell_material = materials->of_cell(cell->material_id());
 
         for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
           {
@@ -157,17 +159,17 @@ namespace glissade
                 reject_cell(cell, why.str());
                 continue;
               }
-            const MaterialPointResponse response = body_material.evaluate(H);
+            const MaterialPointResponse response = cell_material.evaluate(H);
             // The tangent too: at u = 0 the stress is zero however large
             // E is, and only the stiffness overflows.
             if (!std::isfinite(response.stress.norm()) ||
                 !std::isfinite(response.tangent.norm()))
               {
                 std::ostringstream why;
-                why << "has a stress or stiffness that is not finite: the Material/Young "
-                       "modulus ("
-                    << description.material.young_modulus
-                    << ") times the strain is beyond double precision; "
+                const auto [young_modulus, entry] =
+                  materials->young_modulus_of_cell(cell->material_id());
+                why << "has a stress or stiffness that is not finite: the "
+                    << entry << " (" << young_modulus << ") times the strain is beyond double precision; "
                        "express the scene in other units";
                 reject_cell(cell, why.str());
                 continue;
@@ -342,7 +344,7 @@ namespace glissade
     // displacements) has no force to compare the residual with; the floor
     // is the force a strain of 1e-4 |u| / L would carry over the length L
     // (round-off of a rigid motion stays 1e-12 (L / h) below it).
-    const double floor = 1e-4 * description.material.young_modulus *
+    const double floor = 1e-4 * materials->largest_young_modulus() *
                          description.material.thickness *
                          solution.linfty_norm();
     return std::max({internal_force_norm,

@@ -43,7 +43,7 @@ namespace glissade
   Body::write_vtu(const std::string &directory, const unsigned int index) const
   {
     const unsigned int  per_dim = element_space->components_per_displacement();
-    StressPostprocessor stress(body_material, per_dim);
+    StressPostprocessor stress(*materials, per_dim);
     NodalDisplacement   nodal_displacement(per_dim);
     DataOut<2>          data_out;
     data_out.attach_dof_handler(dofs);

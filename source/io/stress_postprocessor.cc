@@ -5,9 +5,9 @@
 namespace glissade
 {
   StressPostprocessor::StressPostprocessor(
-    const Material    &material,
-    const unsigned int components_per_displacement)
-    : material(material)
+    const BodyMaterials &materials,
+    const unsigned int   components_per_displacement)
+    : materials(materials)
     , per_dim(components_per_displacement)
   {}
 
@@ -34,6 +34,8 @@ namespace glissade
     const DataPostprocessorInputs::Vector<2> &inputs,
     std::vector<Vector<double>>              &computed) const
   {
+    const Material &material =
+      materials.of_cell(inputs.template get_cell<2>()->material_id());
     for (unsigned int p = 0; p < computed.size(); ++p)
       {
         Tensor<2, 2> H;

@@ -394,14 +394,62 @@ namespace glissade
       material.poisson_ratio = prm.get_double("Poisson ratio");
       material.hypothesis    = prm.get("Hypothesis");
       material.thickness     = prm.get_double("Thickness");
+      const std::vector<std::string> regions =
+        Utilities::split_string_list(prm.get("Regions"), ',');
       prm.leave_subsection();
-      if (!(material.young_modulus > 0.))
-        throw InputError(where + "/Material/Young modulus", "must be > 0");
-      if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
-        throw InputError(where + "/Material/Poisson ratio",
-                         "must lie in (-1, 0.5)");
+      const auto check_moduli = [&where](const double       young_modulus,
+                                         const double       poisson_ratio,
+                                         const std::string &subsection) {
+        if (!(young_modulus > 0.))
+          throw InputError(where + "/" + subsection + "/Young modulus",
+                           "must be > 0");
+        if (!(poisson_ratio > -1. && poisson_ratio < 0.5))
+          throw InputError(where + "/" + subsection + "/Poisson ratio",
+                           "must lie in (-1, 0.5)");
+      };
+      check_moduli(material.young_modulus, material.poisson_ratio, "Material");
       if (!(material.thickness > 0.))
         throw InputError(where + "/Material/Thickness", "must be > 0");
+
+      // Each region: its own entries, the body's where it sets none.
+      for (const std::string &name : regions)
+        {
+          const std::string subsection = "Material " + name;
+          MaterialRegionDescription region;
+          region.name = name;
+          prm.enter_subsection(subsection);
+          const auto number = [&](const std::string &entry,
+                                  const double       inherited) {
+            const std::string value = text::trim(prm.get(entry));
+            if (value.empty())
+              return inherited;
+            try
+              {
+                std::size_t  end    = 0;
+                const double parsed = std::stod(value, &end);
+                if (end == value.size())
+                  return parsed;
+              }
+            catch (const std::exception &)
+              {}
+            throw InputError(where + "/" + subsection + "/" + entry,
+                             "'" + value + "' is not a number");
+          };
+          region.law           = text::trim(prm.get("Law"));
+          region.young_modulus = number("Young modulus", material.young_modulus);
+          region.poisson_ratio = number("Poisson ratio", material.poisson_ratio);
+          prm.leave_subsection();
+          if (region.law.empty())
+            region.law = material.law;
+          if (region.law != "neo-Hookean" &&
+              region.law != "Saint Venant-Kirchhoff")
+            throw InputError(where + "/" + subsection + "/Law",
+                             "'" + region.law +
+                               "' is not a law (neo-Hookean or Saint "
+                               "Venant-Kirchhoff)");
+          check_moduli(region.young_modulus, region.poisson_ratio, subsection);
+          material.regions.push_back(region);
+        }
       return material;
     }
 

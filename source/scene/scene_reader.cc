@@ -20,8 +20,26 @@ namespace glissade
 {
   namespace
   {
+    /** The entries a material region may set; unset ones are the body's. */
     void
-    declare_body(ParameterHandler &prm)
+    declare_region_material(ParameterHandler &prm)
+    {
+      prm.declare_entry("Law",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Law; empty: the body's.");
+      prm.declare_entry("Young modulus",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Young modulus; empty: the body's.");
+      prm.declare_entry("Poisson ratio",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Poisson ratio; empty: the body's.");
+    }
+
+    void
+    declare_body(ParameterHandler &prm, const std::vector<std::string> &regions)
     {
       prm.enter_subsection("Mesh");
       {
@@ -98,8 +116,24 @@ namespace glissade
         prm.declare_entry("Thickness", "1", Patterns::Double(),
                           "Out-of-plane thickness (m), > 0: forces are per "
                           "this thickness.");
+        prm.declare_entry(
+          "Regions",
+          "",
+          Patterns::Anything(),
+          "Gmsh meshes: comma-separated names of Physical Surfaces that "
+          "have a material of their own, each set in a subsection "
+          "'Material <name>' beside this one (Law, Young modulus, Poisson "
+          "ratio; an entry left unset is this subsection's). Cells of other "
+          "Physical Surfaces take this subsection's material. Hypothesis and "
+          "Thickness belong to the body.");
       }
       prm.leave_subsection();
+      for (const std::string &region : regions)
+        {
+          prm.enter_subsection("Material " + region);
+          declare_region_material(prm);
+          prm.leave_subsection();
+        }
 
       prm.enter_subsection("Boundary conditions");
       {
@@ -312,9 +346,11 @@ namespace glissade
 
 
   void
-  SceneReader::declare_parameters(ParameterHandler               &prm,
-                                  const std::vector<std::string> &body_names,
-                                  const std::vector<std::string> &contact_names)
+  SceneReader::declare_parameters(
+    ParameterHandler                                      &prm,
+    const std::vector<std::string>                        &body_names,
+    const std::vector<std::string>                        &contact_names,
+    const std::map<std::string, std::vector<std::string>> &regions)
   {
     prm.declare_entry("Study",
                       "simulation",
@@ -351,7 +387,11 @@ namespace glissade
     for (const auto &name : body_names)
       {
         prm.enter_subsection("Body " + name);
-        declare_body(prm);
+        const auto body_regions = regions.find(name);
+        declare_body(prm,
+                     body_regions == regions.end() ?
+                       std::vector<std::string>() :
+                       body_regions->second);
         prm.leave_subsection();
       }
 
@@ -471,9 +511,55 @@ namespace glissade
       prm.leave_subsection();
     }
 
+    // Pass 1b: each body's material regions, whose subsections are
+    // declared by name in pass 2.
+    std::map<std::string, std::vector<std::string>> regions;
+    {
+      ParameterHandler prm;
+      for (const auto &name : body_names)
+        {
+          prm.enter_subsection("Body " + name);
+          prm.enter_subsection("Material");
+          prm.declare_entry("Regions", "", Patterns::Anything());
+          prm.leave_subsection();
+          prm.leave_subsection();
+        }
+      try
+        {
+          prm.parse_input_from_string(text_value, "", true);
+          for (const auto &o : overrides)
+            if (o.find("/Material/Regions=") != std::string::npos)
+              apply_override(prm, o);
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(source, text::essential_message(e));
+        }
+      for (const auto &name : body_names)
+        {
+          prm.enter_subsection("Body " + name);
+          prm.enter_subsection("Material");
+          regions[name] = Utilities::split_string_list(prm.get("Regions"), ',');
+          prm.leave_subsection();
+          prm.leave_subsection();
+          const std::string entry =
+            source + ": Body " + name + "/Material/Regions";
+          for (unsigned int i = 0; i < regions[name].size(); ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              if (regions[name][i] == regions[name][j])
+                throw InputError(entry,
+                                 "region '" + regions[name][i] +
+                                   "' is named twice");
+        }
+    }
+
     // Pass 2: everything, strictly: an undeclared entry is an error.
     ParameterHandler prm;
-    declare_parameters(prm, body_names, contact_names);
+    declare_parameters(prm, body_names, contact_names, regions);
     try
       {
         prm.parse_input_from_string(text_value, "", false);

@@ -10,7 +10,7 @@
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/body/rigid_motion.h>
 #include <glissade/fe/element_space.h>
-#include <glissade/material/material.h>
+#include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/scene_description.h>
 #include <glissade/solver/direct_solver.h>
@@ -288,7 +288,7 @@ namespace glissade
     const Material &
     material() const
     {
-      return body_material;
+      return materials->of_body();
     }
     const Vector<double> &
     displacement() const
@@ -317,7 +317,7 @@ namespace glissade
     BoundaryNames                       boundary_names;
     std::unique_ptr<ElementSpace>       element_space;
     DoFHandler<2>                       dofs;
-    Material                            body_material;
+    std::unique_ptr<BodyMaterials>      materials;
     std::unique_ptr<BoundaryConditions> boundary_conditions;
     double                              reference_size = 1.;
     double                              time           = 0.;

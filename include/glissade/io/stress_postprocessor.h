@@ -2,7 +2,7 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <glissade/material/material.h>
+#include <glissade/material/body_materials.h>
 
 namespace glissade
 {
@@ -19,7 +19,7 @@ namespace glissade
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:
-    StressPostprocessor(const Material    &material,
+    StressPostprocessor(const BodyMaterials &materials,
                         const unsigned int components_per_displacement);
 
     void
@@ -33,7 +33,7 @@ namespace glissade
     get_needed_update_flags() const override;
 
   private:
-    const Material    &material;
+    const BodyMaterials &materials;
     const unsigned int per_dim;
   };
 } // namespace glissade

@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <glissade/mesh/mesh_labels.h>
 #include <glissade/scene/scene_description.h>
 
 #include <map>
@@ -9,9 +10,6 @@
 
 namespace glissade
 {
-  /** Boundary names of a mesh and the deal.II boundary ids they stand for. */
-  using BoundaryNames = std::map<std::string, types::boundary_id>;
-
   /**
    * Builds a body's triangulation from its MeshDescription: the paper's
    * shapes (rectangle/beam, square, half ring, ring) or a Gmsh file.
@@ -26,7 +24,7 @@ namespace glissade
   {
   public:
     /** `where` names the .prm subsection, for messages. */
-    static BoundaryNames
+    static MeshLabels
     create(const MeshDescription &description,
            Triangulation<2>      &triangulation,
            const std::string     &where);
@@ -42,11 +40,6 @@ namespace glissade
     create_ring(const MeshDescription &description,
                 const bool             closed,
                 Triangulation<2>      &triangulation);
-
-    static BoundaryNames
-    read_gmsh(const MeshDescription &description,
-              Triangulation<2>      &triangulation,
-              const std::string     &where);
 
     /** Refuses a mesh with a hanging node (a vertex inside another edge). */
     static void

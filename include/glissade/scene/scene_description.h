@@ -83,6 +83,15 @@ namespace glissade
     std::string              entry;
   };
 
+  /** The material of one region of a body (a Gmsh Physical Surface). */
+  struct MaterialRegionDescription
+  {
+    std::string name;
+    std::string law;
+    double      young_modulus = 1.;
+    double      poisson_ratio = 0.3;
+  };
+
   struct MaterialDescription
   {
     std::string law           = "neo-Hookean";
@@ -90,6 +99,8 @@ namespace glissade
     double      poisson_ratio = 0.3;
     std::string hypothesis    = "plane strain";
     double      thickness     = 1.;
+    /** Regions with a material of their own; other cells take the above. */
+    std::vector<MaterialRegionDescription> regions;
   };
 
   struct BodyDescription

@@ -5,6 +5,7 @@
 #include <glissade/scene/scene_description.h>
 
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -77,10 +78,13 @@ namespace glissade
     print_parameters(std::ostream &out);
 
   private:
+    /** `regions`: each body's material regions (Material/Regions). */
     static void
-    declare_parameters(ParameterHandler               &prm,
-                       const std::vector<std::string> &body_names,
-                       const std::vector<std::string> &contact_names);
+    declare_parameters(
+      ParameterHandler                                      &prm,
+      const std::vector<std::string>                        &body_names,
+      const std::vector<std::string>                        &contact_names,
+      const std::map<std::string, std::vector<std::string>> &regions = {});
 
     static SceneDescription
     parse_parameters(ParameterHandler               &prm,
