@@ -6,21 +6,28 @@ run wrote into its output directory:
 - contact-<pair>-pressure.png: the contact pressure along each pair's
   slave boundary (against the arc length of the reference boundary) at up
   to six written increments, from contact-<pair>-NNNNN.csv and the order
-  of the nodes along the boundary in contact-<pair>-NNNNN.vtu.
+  of the nodes along the boundary in contact-<pair>-NNNNN.vtu;
+- deformed-mesh.png: every body in its last written state, deformed at
+  true scale and coloured by the von Mises stress (one colour scale for
+  all bodies), over the reference outline, from the <body>.pvd files.
 
 Run by glissade with Debian's /usr/bin/python3 (matplotlib); by hand:
 /usr/bin/python3 scripts/plot_scene.py <output directory>."""
+import base64
 import csv
 import glob
 import math
 import os
 import re
+import struct
 import sys
+import zlib
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic_png import save_atomically  # noqa: E402
@@ -131,9 +138,111 @@ def plot_pressure(pair):
     plt.close(fig)
 
 
+VTK_TYPES = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
+             "UInt8": "B", "UInt32": "I", "UInt64": "Q"}
+
+
+def vtu_arrays(path):
+    """The DataArrays of a VTU file by name ("Points" for the points), as
+    flat lists: ASCII, or deal.II's binary (base64 of a header of UInt32
+    block sizes, then of the zlib-compressed blocks)."""
+    with open(path) as f:
+        text = f.read()
+    compressed = "vtkZLibDataCompressor" in text[:1000]
+    arrays = {}
+    for match in re.finditer(r"<DataArray([^>]*)>(.*?)</DataArray>", text, re.S):
+        attributes, body = match.group(1), match.group(2).strip()
+        kind = re.search(r'type="(\w+)"', attributes).group(1)
+        name = re.search(r'Name="([^"]*)"', attributes)
+        name = name.group(1) if name else "Points"
+        if 'format="ascii"' in attributes:
+            values = [float(v) for v in body.split()]
+        else:
+            code = VTK_TYPES[kind]
+            if compressed:
+                n_blocks = struct.unpack("<I", base64.b64decode(body[:8])[:4])[0]
+                header_chars = 4 * math.ceil(4 * (3 + n_blocks) / 3)
+                header = struct.unpack(f"<{3 + n_blocks}I",
+                                       base64.b64decode(body[:header_chars]))
+                data = base64.b64decode(body[header_chars:])
+                raw, start = b"", 0
+                for size in header[3:]:
+                    raw += zlib.decompress(data[start:start + size])
+                    start += size
+            else:
+                raw = base64.b64decode(body)[4:]
+            values = list(struct.unpack(f"<{len(raw) // struct.calcsize(code)}{code}", raw))
+        arrays[name] = values
+    return arrays
+
+
+def last_dataset(pvd_path):
+    with open(pvd_path) as f:
+        files = re.findall(r'file="([^"]+)"', f.read())
+    return os.path.join(os.path.dirname(pvd_path), files[-1]) if files else None
+
+
+def plot_deformed_mesh():
+    """deformed-mesh.png: each body's last written state, von Mises colour."""
+    bodies = []
+    for pvd in sorted(glob.glob(os.path.join(directory, "*.pvd"))):
+        name = os.path.basename(pvd)[:-4]
+        if name.startswith("contact-"):
+            continue
+        vtu = last_dataset(pvd)
+        if vtu is None or not os.path.exists(vtu):
+            continue
+        a = vtu_arrays(vtu)
+        if not {"Points", "connectivity", "offsets", "displacement",
+                "von_Mises"} <= a.keys():
+            continue
+        X, u = a["Points"], a["displacement"]
+        reference = [(X[3 * i], X[3 * i + 1]) for i in range(len(X) // 3)]
+        current = [(x + u[3 * i], y + u[3 * i + 1]) for i, (x, y) in enumerate(reference)]
+        cells, start = [], 0
+        for end in a["offsets"]:
+            cells.append([int(k) for k in a["connectivity"][start:int(end)]])
+            start = int(end)
+        # deal.II's quadrilateral patches list their corners as
+        # (0, 0), (1, 0), (1, 1), (0, 1): a polygon in that order.
+        stress = [sum(a["von_Mises"][k] for k in c) / len(c) for c in cells]
+        increment = re.search(r"-(\d+)\.vtu$", vtu)
+        bodies.append((name, reference, current, cells, stress,
+                       int(increment.group(1)) if increment else None))
+    if not bodies:
+        return
+    highest = max(max(b[4]) for b in bodies)
+    fig, axis = plt.subplots(figsize=(6.4, 5.2))
+    collection = None
+    for name, reference, current, cells, stress, increment in bodies:
+        axis.add_collection(PolyCollection(
+            [[reference[k] for k in c] for c in cells], facecolors="none",
+            edgecolors="0.75", linewidths=0.3))
+        collection = PolyCollection(
+            [[current[k] for k in c] for c in cells], array=stress,
+            cmap="viridis", edgecolors="k", linewidths=0.15)
+        collection.set_clim(0.0, highest if highest > 0 else 1.0)
+        axis.add_collection(collection)
+    points = [p for b in bodies for p in b[1] + b[2]]
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    margin = 0.03 * max(max(xs) - min(xs), max(ys) - min(ys))
+    axis.set_xlim(min(xs) - margin, max(xs) + margin)
+    axis.set_ylim(min(ys) - margin, max(ys) + margin)
+    axis.set_aspect("equal")
+    fig.colorbar(collection, ax=axis, label="von Mises stress", shrink=0.8)
+    increments = sorted({b[5] for b in bodies if b[5] is not None})
+    axis.set_title("deformed (true scale), reference in grey" +
+                   (f"; increment {increments[-1]}" if increments else ""),
+                   fontsize=9)
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(directory, "deformed-mesh.png"), dpi=110)
+    plt.close(fig)
+
+
 plot_history()
 pairs = set()
 for path in glob.glob(os.path.join(directory, "contact-*.pvd")):
     pairs.add(os.path.basename(path)[len("contact-"):-len(".pvd")])
 for pair in sorted(pairs):
     plot_pressure(pair)
+plot_deformed_mesh()

@@ -254,8 +254,10 @@ GLISSADE_TEST(contact_pair_several_slave_boundaries)
 
 
 
-// Output/Plots: any scene draws its history and its pressure along the
-// interface as PNG files (scripts/plot_scene.py, Debian's matplotlib).
+// Output/Plots: any scene draws its history, its pressure along the
+// interface and its deformed mesh as PNG files (scripts/plot_scene.py,
+// Debian's matplotlib; the body VTU read back from deal.II's compressed
+// binary).
 GLISSADE_TEST(scene_plots_written)
 {
   Simulation simulation(SceneReader::read_string(
@@ -263,7 +265,8 @@ GLISSADE_TEST(scene_plots_written)
     {"Output/Plots=true",
      "Output/History=contact_force(floor); reaction(block, top)"}));
   simulation.run();
-  for (const std::string file : {"history.png", "contact-floor-pressure.png"})
+  for (const std::string file :
+       {"history.png", "contact-floor-pressure.png", "deformed-mesh.png"})
     {
       const std::string png = contents("scene_plots/" + file);
       std::cout << "  " << file << ": " << png.size() << " bytes" << std::endl;

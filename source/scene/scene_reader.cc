@@ -450,7 +450,9 @@ namespace glissade
                       "from the written files: history.png (every history "
                       "column against t, and the Newton iterations), and "
                       "contact-<pair>-pressure.png (the pressure along "
-                      "each slave boundary at the written increments). "
+                      "each slave boundary at the written increments) and "
+                      "deformed-mesh.png (the bodies in their last written "
+                      "state, coloured by von Mises). "
                       "Needs Debian's /usr/bin/python3 with matplotlib; "
                       "without it the run says so and goes on.");
     prm.leave_subsection();
