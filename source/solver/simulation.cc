@@ -4,6 +4,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/base/progress_text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
@@ -21,42 +22,8 @@
 
 namespace glissade
 {
-  namespace
-  {
-    /** "12 s", "3 min 05 s", "2 h 10 min": a duration for a person. */
-    std::string
-    duration(const double seconds)
-    {
-      std::ostringstream text;
-      const long         s = std::lround(seconds);
-      if (seconds < 10.)
-        text << std::setprecision(2) << seconds << " s";
-      else if (s < 120)
-        text << s << " s";
-      else if (s < 7200)
-        text << s / 60 << " min " << std::setw(2) << std::setfill('0') << s % 60
-             << " s";
-      else
-        text << s / 3600 << " h " << std::setw(2) << std::setfill('0')
-             << (s % 3600) / 60 << " min";
-      return text.str();
-    }
-
-    /**
-     * "elapsed 12 s, about 40 s left": the increments still to do at the
-     * mean pace of those done in this run.
-     */
-    std::string
-    time_left(const double       elapsed,
-              const unsigned int done,
-              const unsigned int remaining)
-    {
-      std::string text = "elapsed " + duration(elapsed);
-      if (done > 0 && remaining > 0)
-        text += ", about " + duration(elapsed / done * remaining) + " left";
-      return text;
-    }
-  } // namespace
+  using progress_text::duration;
+  using progress_text::time_left;
 
 
 

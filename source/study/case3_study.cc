@@ -7,6 +7,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/case3_study.h>
+#include <glissade/study/study_progress.h>
 #include <glissade/io/plotting.h>
 
 #include <algorithm>
@@ -173,16 +174,23 @@ namespace glissade
     std::filesystem::create_directories(directory);
 
     std::vector<Case3Result> results;
+    unsigned int             n_runs = 0;
     for (const auto &variant : variants)
-      {
-        std::cout << "case 3, " << variant << ": compression (10 increments), "
-                  << "rotation by " << angle << " degrees (" << increments
-                  << " increments) ..." << std::endl;
-        for (const unsigned int n :
-             variant == "hermite" ? outer_elements : std::vector<unsigned int>{40})
+      n_runs += variant == "hermite" ? outer_elements.size() : 1;
+    StudyProgress progress(n_runs);
+    for (const auto &variant : variants)
+      for (const unsigned int n :
+           variant == "hermite" ? outer_elements : std::vector<unsigned int>{40})
+        {
+          std::ostringstream what;
+          what << "case 3, " << variant << " (" << n
+               << " outer elements): compression (10 increments), rotation "
+                  "by "
+               << angle << " degrees (" << increments << " increments)";
+          progress.next(what.str());
           results.push_back(
             run_variant(scene, variant, angle, increments, directory, n));
-      }
+        }
 
     AtomicFile csv(directory + "/case3_spread.csv");
     csv.stream() << "variant,increment,spread_percent,node_force\n";

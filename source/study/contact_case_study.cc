@@ -8,6 +8,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/contact_case_study.h>
+#include <glissade/study/study_progress.h>
 #include <glissade/io/plotting.h>
 
 #include <algorithm>
@@ -491,6 +492,7 @@ namespace glissade
     table << std::setw(22) << "scene" << std::setw(9) << "variant" << std::setw(8)
           << "dofs" << std::setw(7) << "incr." << std::setw(8) << "Newton"
           << std::setw(10) << "wall (s)" << "  measure\n";
+    StudyProgress progress(scenes.size() * variants.size());
     for (const auto &scene_file : scenes)
       {
         const SceneDescription scene  = SceneReader::read_file(scene_file);
@@ -505,9 +507,10 @@ namespace glissade
                 std::cout << stem_of(scene_file) << ", bspline: skipped (the "
                           << "master is an exact rigid circle; the run would "
                           << "be the q4 run)" << std::endl;
+                progress.skip();
                 continue;
               }
-            std::cout << stem_of(scene_file) << ", " << variant << " ..." << std::endl;
+            progress.next(stem_of(scene_file) + ", " + variant);
             runs.push_back(
               run_variant(scene_file, variant, increments, fraction, directory, true));
           }

@@ -7,6 +7,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/io/plotting.h>
 #include <glissade/study/trade_measures.h>
+#include <glissade/study/study_progress.h>
 #include <glissade/study/trade_study.h>
 
 #include <algorithm>
@@ -384,10 +385,12 @@ namespace glissade
           }
         prm.leave_subsection();
 
-        const auto run_point = [&](const std::string &discretisation,
+        StudyProgress progress(points.size() + reference.size());
+        const auto    run_point = [&](const std::string &discretisation,
                                    const unsigned int n) {
-          std::cout << "trade study, " << measure << ": " << discretisation
-                    << ", n = " << n << " ..." << std::flush;
+          progress.next("trade study, " + measure + ": " + discretisation +
+                          ", n = " + std::to_string(n),
+                        "");
           SweepPoint p;
           p.discretisation = discretisation;
           p.n              = n;
