@@ -7,6 +7,8 @@ run wrote into its output directory:
   slave boundary (against the arc length of the reference boundary) at up
   to six written increments, from contact-<pair>-NNNNN.csv and the order
   of the nodes along the boundary in contact-<pair>-NNNNN.vtu;
+- curves.png: the curves of Output/Plot curves, "x:y" arguments after
+  the directory, each a pair of history.csv columns (or time);
 - deformed-mesh.png: every body in its last written state, deformed at
   true scale and coloured by the von Mises stress (one colour scale for
   all bodies), over the reference outline, from the <body>.pvd files.
@@ -33,6 +35,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic_png import save_atomically  # noqa: E402
 
 directory = sys.argv[1]
+curves = [tuple(a.split(":", 1)) for a in sys.argv[2:]]
 
 
 def read_csv(path):
@@ -138,6 +141,31 @@ def plot_pressure(pair):
     plt.close(fig)
 
 
+def plot_curves():
+    """curves.png: one panel per (x, y) pair of history columns."""
+    path = os.path.join(directory, "history.csv")
+    if not curves or not os.path.exists(path):
+        return
+    rows = read_csv(path)
+    per_row = min(len(curves), 3)
+    n_rows = math.ceil(len(curves) / per_row)
+    fig, axes = plt.subplots(n_rows, per_row, figsize=(4.2 * per_row, 3.4 * n_rows),
+                             squeeze=False)
+    flat = [a for row in axes for a in row]
+    for axis, (x, y) in zip(flat, curves):
+        if rows and x in rows[0] and y in rows[0]:
+            axis.plot([number(r[x]) for r in rows], [number(r[y]) for r in rows],
+                      marker=".", markersize=3)
+        axis.set_xlabel(x)
+        axis.set_ylabel(y)
+        axis.grid(alpha=0.3)
+    for axis in flat[len(curves):]:
+        axis.set_visible(False)
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(directory, "curves.png"), dpi=110)
+    plt.close(fig)
+
+
 VTK_TYPES = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
              "UInt8": "B", "UInt32": "I", "UInt64": "Q"}
 
@@ -240,6 +268,7 @@ def plot_deformed_mesh():
 
 
 plot_history()
+plot_curves()
 pairs = set()
 for path in glob.glob(os.path.join(directory, "contact-*.pvd")):
     pairs.add(os.path.basename(path)[len("contact-"):-len(".pvd")])

@@ -263,10 +263,12 @@ GLISSADE_TEST(scene_plots_written)
   Simulation simulation(SceneReader::read_string(
     block_on_line("bottom", "scene_plots"), "plots",
     {"Output/Plots=true",
-     "Output/History=contact_force(floor); reaction(block, top)"}));
+     "Output/History=contact_force(floor); reaction(block, top)",
+     "Output/Plot curves=time: floor_Fy; block_Ry_top: floor_Fy"}));
   simulation.run();
   for (const std::string file :
-       {"history.png", "contact-floor-pressure.png", "deformed-mesh.png"})
+       {"history.png", "contact-floor-pressure.png", "deformed-mesh.png",
+        "curves.png"})
     {
       const std::string png = contents("scene_plots/" + file);
       std::cout << "  " << file << ": " << png.size() << " bytes" << std::endl;

@@ -772,7 +772,26 @@ namespace glissade
         scene.output.history.push_back(item);
     scene.output.progress = prm.get_bool("Progress");
     scene.output.plots    = prm.get_bool("Plots");
+    const std::string curves = prm.get("Plot curves");
     prm.leave_subsection();
+    check_part([&]() {
+      for (const auto &item : text::split_top_level(curves, ';'))
+        {
+          if (text::trim(item).empty())
+            continue;
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() != 2 || parts[0].empty() || parts[1].empty())
+            throw InputError(source + ": Output/Plot curves",
+                             "'" + text::trim(item) +
+                               "' is not 'x column: y column' (names of "
+                               "history.csv, e.g. 'pad_uy_0_10: "
+                               "pad_Ry_top')");
+          scene.output.plot_curves.emplace_back(parts[0], parts[1]);
+        }
+      if (!scene.output.plot_curves.empty() && !scene.output.plots)
+        throw InputError(source + ": Output/Plot curves",
+                         "draws with Output/Plots = true only");
+    });
 
     prm.enter_subsection("Checkpoint");
     scene.checkpoint.interval   = prm.get_integer("Interval");

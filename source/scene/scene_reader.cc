@@ -455,6 +455,13 @@ namespace glissade
                       "state, coloured by von Mises). "
                       "Needs Debian's /usr/bin/python3 with matplotlib; "
                       "without it the run says so and goes on.");
+    prm.declare_entry("Plot curves",
+                      "",
+                      Patterns::Anything(),
+                      "With Plots: curves.png, one panel per 'x column: y "
+                      "column' item (';'-separated), each a column of "
+                      "history.csv (or time), e.g. a force-displacement "
+                      "curve 'pad_uy_0_10: pad_Ry_top'.");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpoint");

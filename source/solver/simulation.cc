@@ -25,6 +25,19 @@ namespace glissade
   using progress_text::duration;
   using progress_text::time_left;
 
+  namespace
+  {
+    /** plot_scene.py's arguments for Output/Plot curves: "x:y" each. */
+    std::vector<std::string>
+    curve_arguments(const OutputSettings &output)
+    {
+      std::vector<std::string> arguments;
+      for (const auto &[x, y] : output.plot_curves)
+        arguments.push_back(x + ":" + y);
+      return arguments;
+    }
+  } // namespace
+
 
 
   Simulation::Simulation(const SceneDescription &scene)
@@ -57,6 +70,21 @@ namespace glissade
       contact_problem->contact_pairs(),
       scene.output.directory + "/history.csv",
       scene.source);
+    // The curves to plot name history columns: known only now.
+    const auto &columns = history->column_names();
+    for (const auto &[x, y] : scene.output.plot_curves)
+      for (const std::string &name : {x, y})
+        if (name != "time" &&
+            std::find(columns.begin(), columns.end(), name) == columns.end())
+          {
+            std::string known = "time";
+            for (const std::string &c : columns)
+              if (c != "increment" && c != "time")
+                known += ", " + c;
+            throw InputError(scene.source + ": Output/Plot curves",
+                             "'" + name + "' is not a column of history.csv (" +
+                               known + ")");
+          }
   }
 
 
@@ -354,7 +382,9 @@ namespace glissade
                   << increment << ", t = " << current_time
                   << ") is in " << scene.output.directory << std::endl;
         if (scene.output.plots)
-          plot_with_python("plot_scene.py", scene.output.directory);
+          plot_with_python("plot_scene.py",
+                           scene.output.directory,
+                           curve_arguments(scene.output));
       }
     catch (const std::exception &e)
       {
@@ -501,7 +531,9 @@ namespace glissade
         << " (Checkpoint/Stop after increment); continue with --restart\n";
     summary_file.commit();
     if (scene.output.plots)
-      plot_with_python("plot_scene.py", scene.output.directory);
+      plot_with_python("plot_scene.py",
+                           scene.output.directory,
+                           curve_arguments(scene.output));
     return completed;
   }
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glissade
@@ -140,6 +141,8 @@ namespace glissade
     std::vector<std::string> history;
     bool                     progress = true;
     bool                     plots    = false; // scripts/plot_scene.py
+    /** (x column, y column) of history.csv: curves.png, with Plots. */
+    std::vector<std::pair<std::string, std::string>> plot_curves;
   };
 
   /** Checkpoints of a long run (Simulation::run). */
