@@ -276,3 +276,61 @@ GLISSADE_TEST(scene_plots_written)
             file + " is a PNG picture");
     }
 }
+
+
+
+// The walkthrough's scene (prm/pad_on_roller.prm, doc/walkthrough.md): a
+// rubber pad pressed on a rigid roller, then dragged 4 mm with mu = 0.3. At
+// the end every active node obeys Coulomb's law as its table reports it:
+// slipping nodes |r_t| = mu r_n, sticking ones |r_t| <= mu r_n; the nodal
+// forces add up to minus the top's reaction (balance of the pad).
+GLISSADE_TEST(walkthrough_pad_on_roller)
+{
+  Simulation simulation(SceneReader::read_file(
+    source_path("prm/pad_on_roller.prm"),
+    {"Output/Directory=walkthrough_pad", "Output/Plots=false",
+     "Output/Progress=false"}));
+  simulation.run();
+  const double mu       = 0.3;
+  unsigned int slipping = 0, sticking = 0;
+  double       worst_slip = 0., fx = 0., fy = 0.;
+  // Increment 12: the drag has begun, part of the contact still sticks;
+  // increment 20: the end (its forces are balanced below).
+  for (const std::string increment : {"00012", "00020"})
+    {
+      const std::string file =
+        "walkthrough_pad/contact-roller-" + increment + ".csv";
+      auto               table = read_csv(file);
+      std::istringstream lines(contents(file));
+      std::string        line;
+      std::getline(lines, line);
+      fx = fy = 0.;
+      for (unsigned int k = 0; std::getline(lines, line); ++k)
+        {
+          const double r_n = table["r_n"][k];
+          const double r_t = std::abs(table["r_t"][k]);
+          fx += table["fx"][k];
+          fy += table["fy"][k];
+          if (line.find(",slip,") != std::string::npos)
+            {
+              ++slipping;
+              worst_slip = std::max(worst_slip, std::abs(r_t - mu * r_n) / r_n);
+            }
+          else if (line.find(",stick,") != std::string::npos)
+            {
+              ++sticking;
+              check(r_t <= mu * r_n * (1. + 1e-10),
+                    "a sticking node is outside the cone");
+            }
+        }
+    }
+  std::cout << "  " << slipping << " slipping and " << sticking
+            << " sticking nodes; worst | |r_t| / r_n - mu | / mu of the "
+               "slipping ones: "
+            << worst_slip / mu << std::endl;
+  check(slipping > 0 && sticking > 0, "the pad both sticks and slips");
+  check(worst_slip / mu < 1e-8, "a slipping node is off the cone");
+  const Tensor<1, 2> top = simulation.body("pad").reaction("top");
+  check_relative(fx, -top[0], 1e-8, "contact force x against the top's reaction");
+  check_relative(fy, -top[1], 1e-8, "contact force y against the top's reaction");
+}

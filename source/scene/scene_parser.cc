@@ -788,9 +788,6 @@ namespace glissade
                                "pad_Ry_top')");
           scene.output.plot_curves.emplace_back(parts[0], parts[1]);
         }
-      if (!scene.output.plot_curves.empty() && !scene.output.plots)
-        throw InputError(source + ": Output/Plot curves",
-                         "draws with Output/Plots = true only");
     });
 
     prm.enter_subsection("Checkpoint");

@@ -461,7 +461,8 @@ namespace glissade
                       "With Plots: curves.png, one panel per 'x column: y "
                       "column' item (';'-separated), each a column of "
                       "history.csv (or time), e.g. a force-displacement "
-                      "curve 'pad_uy_0_10: pad_Ry_top'.");
+                      "curve 'pad_uy_0_10: pad_Ry_top'. Checked, but drawn only with "
+                      "Plots = true.");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpoint");
