@@ -98,12 +98,40 @@ namespace glissade
     for (const auto &b : simulation.bodies())
       result.dofs += b->n_dofs();
     auto &pair = *simulation.contact().contact_pairs().at(0);
+    const Body  &inner = pair.slave();
+    const double step  = rotation_degrees * M_PI / 180. / rotation_increments;
+    double       previous_torque = 0., previous_force = 0.;
     simulation.on_increment = [&](const unsigned int increment, double) {
       std::vector<double> forces;
+      double              torque = 0., total_force = 0.;
       for (const auto &node : pair.nodes())
         if (node.active)
-          forces.push_back(node.force().norm());
+          {
+            forces.push_back(node.force().norm());
+            // The slave nodes are on the inner ring: x x f about (0, 0) at
+            // the node's current position.
+            const Point<2> x =
+              node.reference_position +
+              inner.vertex_displacement(node.reference_position);
+            const Tensor<1, 2> f = node.force();
+            torque += x[0] * f[1] - x[1] * f[0];
+            total_force += f.norm();
+          }
       result.node_force.push_back(pair.node_at(Point<2>(1.25, 0.)).force().norm());
+      if (increment > 10)
+        {
+          // The trapezoidal rule over the increment's rotation.
+          result.spurious_work += 0.5 * (previous_torque + torque) * step;
+          result.tangential_work_scale +=
+            0.5 * (previous_force + total_force) * 1.25 * step;
+          const double ratio =
+            total_force > 0. ? 100. * torque / (1.25 * total_force) : 0.;
+          result.torque_percent.push_back(ratio);
+          result.worst_torque_percent =
+            std::max(result.worst_torque_percent, std::abs(ratio));
+        }
+      previous_torque = torque;
+      previous_force  = total_force;
       if (increment <= 10 || forces.empty())
         return;
       double mean = 0.;
@@ -193,12 +221,13 @@ namespace glissade
         }
 
     AtomicFile csv(directory + "/case3_spread.csv");
-    csv.stream() << "variant,increment,spread_percent,node_force\n";
+    csv.stream() << "variant,increment,spread_percent,node_force,torque_percent\n";
     for (const auto &r : results)
       for (unsigned int i = 0; i < r.node_force.size(); ++i)
         csv.stream() << r.variant << ',' << i + 1 << ','
                      << (i >= 10 ? r.spread_percent[i - 10] : 0.) << ','
-                     << r.node_force[i] << '\n';
+                     << r.node_force[i] << ','
+                     << (i >= 10 ? r.torque_percent[i - 10] : 0.) << '\n';
     csv.commit();
     AtomicFile worst(directory + "/case3_worst.csv");
     worst.stream() << "variant,node,deviation_percent\n";
@@ -218,7 +247,9 @@ namespace glissade
                  "(worst rotation increment)\n"
               << std::setw(10) << "method" << std::setw(14) << "spread (%)"
               << std::setw(14) << "paper (%)" << std::setw(10) << "dofs"
-              << std::setw(14) << "wall (s)" << '\n';
+              << std::setw(14) << "wall (s)" << std::setw(16) << "|T|/(R F) (%)"
+              << std::setw(16) << "work of T (J)" << std::setw(14)
+              << "/ R F theta" << '\n';
     for (const auto &r : results)
       std::cout << std::setw(10) << r.variant << std::setw(14)
                 << std::setprecision(3) << r.worst_spread << std::setw(14)
@@ -227,7 +258,14 @@ namespace glissade
                       paper_figure(r.variant) :
                       std::string("-"))
                 << std::setw(10) << r.dofs
-                << std::setw(14) << r.wall_seconds << '\n';
+                << std::setw(14) << r.wall_seconds << std::setw(16)
+                << r.worst_torque_percent << std::setw(16) << r.spurious_work
+                << std::setw(14)
+                << r.spurious_work / std::max(r.tangential_work_scale, 1e-300)
+                << '\n';
+    std::cout << "(T: the torque of the contact forces on the inner ring, "
+                 "zero for exact frictionless contact of round rings: its "
+                 "largest value over the rotation and its work)\n";
     std::cout << std::flush;
     plot_with_python("plot_case3.py", directory);
   }

@@ -18,6 +18,19 @@ namespace glissade
     double              worst_spread = 0.;
     unsigned int        worst_increment = 0;
     std::vector<double> worst_distribution; // (|f| - F_e) / F_e in %, per node
+    /**
+     * Spurious torque: frictionless contact between rotationally symmetric
+     * rings transmits no torque, so the torque T of the contact forces on
+     * the inner ring about the centre is a discretisation error. Per
+     * rotation increment, T / (R sum_k |f_k|) in % (the share of the forces
+     * that acts as a tangential force at the interface radius R = 1.25).
+     */
+    std::vector<double> torque_percent;
+    double              worst_torque_percent = 0.;
+    /** The work of T over the rotation (J per unit thickness). */
+    double              spurious_work = 0.;
+    /** The work if every contact force were tangential: R sum |f| theta. */
+    double              tangential_work_scale = 0.;
   };
 
   /**
