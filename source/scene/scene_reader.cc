@@ -430,6 +430,13 @@ namespace glissade
     prm.declare_entry("VTU interval", "1", Patterns::Integer(0),
                       "Write a VTU every this many increments (0: only the "
                       "initial and final states).");
+    prm.declare_entry("VTU compression",
+                      "fast",
+                      Patterns::Selection("fast|small|none"),
+                      "zlib compression of the bodies' VTU files: fast "
+                      "(zlib level 1), small (level 9, deal.II's default: "
+                      "0.6 % smaller, written 5.6 times slower on the 160 x "
+                      "16 rings), none (3.4 times larger).");
     prm.declare_entry("Contact table interval", "0", Patterns::Integer(0),
                       "Write contact-<pair>-<increment>.csv (every slave "
                       "node's gap, reaction, status) every this many "

@@ -338,7 +338,9 @@ namespace glissade
     for (unsigned int b = 0; b < all_bodies.size(); ++b)
       {
         const std::string vtu =
-          all_bodies[b]->write_vtu(scene.output.directory, increment);
+          all_bodies[b]->write_vtu(scene.output.directory,
+                                   increment,
+                                   scene.output.vtu_compression);
         pvd_records[b].emplace_back(t, vtu);
         write_pvd_index(scene.output.directory + "/" + all_bodies[b]->name() +
                           ".pvd",

@@ -268,7 +268,9 @@ namespace glissade
 
     /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
     std::string
-    write_vtu(const std::string &directory, const unsigned int index) const;
+    write_vtu(const std::string &directory,
+              const unsigned int index,
+              const std::string &compression = "fast") const;
 
     const DoFHandler<2> &
     dof_handler() const

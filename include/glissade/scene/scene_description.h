@@ -137,6 +137,7 @@ namespace glissade
   {
     std::string directory     = "output";
     unsigned int vtu_interval = 1; // 0: final state only
+    std::string  vtu_compression = "fast"; // fast, small, none
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
     bool                     progress = true;
