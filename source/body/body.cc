@@ -638,6 +638,15 @@ namespace glissade
   Tensor<1, 2>
   Body::vertex_displacement(const Point<2> &point) const
   {
+    const auto dof_pair = vertex_value_dofs(point);
+    return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
+  }
+
+
+
+  std::array<types::global_dof_index, 2>
+  Body::vertex_value_dofs(const Point<2> &point) const
+  {
     std::ostringstream location;
     location.precision(17);
     location << "point(" << point[0] << ", " << point[1] << ")";
@@ -646,10 +655,10 @@ namespace glissade
                                   boundary_names,
                                   mesh,
                                   description.name,
-                                  "");
-    const auto dof_pair =
-      BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
-    return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
+                                  "",
+                                  false,
+                                  reference_size);
+    return BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
   }
 
 

@@ -67,7 +67,8 @@ namespace glissade
                               const Triangulation<2> &triangulation,
                               const std::string      &body_name,
                               const std::string      &entry,
-                              const bool              allow_face_point)
+                              const bool              allow_face_point,
+                              const double            mesh_diameter)
   {
     Location result;
     double   x, y;
@@ -85,7 +86,11 @@ namespace glissade
               best   = vertices[v].distance(result.point);
               best_v = v;
             }
-        const double size = GridTools::diameter(triangulation);
+        // GridTools::diameter compares every pair of boundary vertices:
+        // callers that resolve many points pass it.
+        const double size = mesh_diameter > 0. ?
+                              mesh_diameter :
+                              GridTools::diameter(triangulation);
         if (best > 1e-8 * size && allow_face_point)
           for (const auto &cell : triangulation.active_cell_iterators())
             for (const unsigned int f : cell->face_indices())

@@ -249,6 +249,13 @@ namespace glissade
     vertex_displacement(const Point<2> &point) const;
 
     /**
+     * The x and y value dofs of the mesh vertex at `point` (an input error
+     * if there is none): found once, read at every increment (history).
+     */
+    std::array<types::global_dof_index, 2>
+    vertex_value_dofs(const Point<2> &point) const;
+
+    /**
      * The displacement of every vertex of the mesh, indexed like
      * triangulation().get_vertices() (zero for unused vertices).
      */

@@ -104,7 +104,8 @@ namespace glissade
             const Triangulation<2> &triangulation,
             const std::string      &body_name,
             const std::string      &entry,
-            const bool              allow_face_point = false);
+            const bool              allow_face_point = false,
+            const double            mesh_diameter    = 0.);
 
     /** The two global value dofs (x, y) at vertex v of a cell. */
     static std::array<types::global_dof_index, 2>
