@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <exception>
 #include <map>
 #include <sstream>
 
@@ -131,12 +132,27 @@ namespace glissade
           // other). The factorisations stay in sequence: they call the
           // threaded BLAS, and two at once took 1.7 times as long
           // (doc/performance.md).
-          std::vector<char>        assembled(all_bodies.size());
-          Threads::TaskGroup<void> tasks;
+          // What a body's assembly throws (a boundary datum that is not
+          // finite: an input error naming it) is rethrown here, the first
+          // body's first, as the sequential loop would have.
+          std::vector<char>               assembled(all_bodies.size());
+          std::vector<std::exception_ptr> thrown(all_bodies.size());
+          Threads::TaskGroup<void>        tasks;
           for (unsigned int b = 0; b < all_bodies.size(); ++b)
-            tasks += Threads::new_task(
-              [&, b]() { assembled[b] = all_bodies[b]->assemble(); });
+            tasks += Threads::new_task([&, b]() {
+              try
+                {
+                  assembled[b] = all_bodies[b]->assemble();
+                }
+              catch (...)
+                {
+                  thrown[b] = std::current_exception();
+                }
+            });
           tasks.join_all();
+          for (const std::exception_ptr &e : thrown)
+            if (e)
+              std::rethrow_exception(e);
           for (unsigned int b = 0; b < all_bodies.size(); ++b)
             {
               admissible = assembled[b] && admissible;
