@@ -183,7 +183,8 @@ namespace glissade
     }
 
     TradePoint
-    case3_point(const std::string         &variant,
+    case3_point(const std::string         &measure,
+                const std::string         &variant,
                 const unsigned int         n,
                 const std::string         &scene_file,
                 const std::vector<double> &settings,
@@ -203,7 +204,8 @@ namespace glissade
       point.newton_iterations = r.newton_iterations;
       point.active_nodes      = r.active_nodes;
       point.wall_seconds      = r.wall_seconds;
-      point.value             = r.worst_spread;
+      point.value = measure == "case3_torque" ? r.worst_torque_percent :
+                                                r.worst_spread;
       return point;
     }
   } // namespace
@@ -214,7 +216,8 @@ namespace glissade
   TradeMeasures::names()
   {
     static const std::vector<std::string> all = {
-      "geometric_gap", "geometric_normal", "table1", "case1", "case2", "case3"};
+      "geometric_gap", "geometric_normal", "table1", "case1", "case2", "case3",
+      "case3_torque"};
     return all;
   }
 
@@ -229,7 +232,8 @@ namespace glissade
       {"table1", "largest displacement, error against the reference (%)"},
       {"case1", "tip displacement, error against the reference (%)"},
       {"case2", "corner contact-force roughness"},
-      {"case3", "worst contact-force spread (%)"}};
+      {"case3", "worst contact-force spread (%)"},
+      {"case3_torque", "largest spurious torque, |T| / (R sum |f|) (%)"}};
     return names.at(measure);
   }
 
@@ -288,8 +292,9 @@ namespace glissade
     if (measure == "case1" || measure == "case2")
       return contact_case_point(measure, discretisation, n, scene, settings,
                                 output_directory);
-    if (measure == "case3")
-      return case3_point(discretisation, n, scene, settings, output_directory);
+    if (measure == "case3" || measure == "case3_torque")
+      return case3_point(measure, discretisation, n, scene, settings,
+                         output_directory);
     throw InputError("Trade study/Measures", "unknown measure '" + measure + "'");
   }
 } // namespace glissade

@@ -45,7 +45,8 @@ namespace glissade
         return "Geometric";
       if (measure == "table1")
         return "Table 1";
-      return "Case " + measure.substr(4);
+      // "case3_torque" reads case 3's settings.
+      return "Case " + measure.substr(4, 1);
     }
 
     /**
@@ -372,7 +373,7 @@ namespace glissade
         if (measure == "case2")
           settings = {double(SceneReader::get_integer(prm, "Increments", prm_file)),
                       SceneReader::get_double(prm, "Load fraction", prm_file)};
-        if (measure == "case3")
+        if (measure.rfind("case3", 0) == 0)
           settings = {SceneReader::get_double(prm, "Rotation angle", prm_file),
                       double(SceneReader::get_integer(prm, "Increments per element", prm_file))};
         std::vector<std::pair<std::string, unsigned int>> reference;

@@ -41,6 +41,9 @@ namespace glissade
    *   with n elements around each ring (the square refined alike).
    * - "case3" (section 4.3): the worst spread of the interface contact
    *   forces (%), n elements around the rings.
+   * - "case3_torque": the same runs' largest spurious torque on the inner
+   *   ring, |T| / (R sum |f|) in % (exactly 0 for frictionless round rings:
+   *   an error against a closed form, not against a reference run).
    *
    * Discretisations: q4 (Q4 bodies, faceted masters), bspline and
    * bspline-spline (Q4 bodies, B-spline masters with the segment or the
