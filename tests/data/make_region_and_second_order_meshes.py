@@ -80,15 +80,20 @@ LINE_TYPE = {2: 1, 3: 8}
 QUAD_TYPE = {4: 3, 8: 16, 9: 10}
 
 
+def write_physical_names(f, groups, surfaces):
+    """The $PhysicalNames records: curves (dimension 1), then surfaces."""
+    f.write(f"{len(groups) + len(surfaces)}\n")
+    for g, tag in groups.items():
+        f.write(f'1 {tag} "{g}"\n')
+    for s, (tag, _) in surfaces.items():
+        f.write(f'2 {tag} "{s}"\n')
+
+
 def write_v22(path, mesh):
     nodes, lines, groups, surfaces = mesh
     with open(path, "w") as f:
         f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n")
-        f.write(f"{len(groups) + len(surfaces)}\n")
-        for g, tag in groups.items():
-            f.write(f'1 {tag} "{g}"\n')
-        for s, (tag, _) in surfaces.items():
-            f.write(f'2 {tag} "{s}"\n')
+        write_physical_names(f, groups, surfaces)
         f.write("$EndPhysicalNames\n$Nodes\n" + f"{len(nodes)}\n")
         for k in sorted(nodes):
             f.write(f"{k} {nodes[k][0]!r} {nodes[k][1]!r} 0\n")
@@ -110,11 +115,7 @@ def write_v41(path, mesh):
     box = f"{min(xs)!r} {min(ys)!r} 0 {max(xs)!r} {max(ys)!r} 0"
     with open(path, "w") as f:
         f.write("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n")
-        f.write(f"{len(groups) + len(surfaces)}\n")
-        for g, tag in groups.items():
-            f.write(f'1 {tag} "{g}"\n')
-        for s, (tag, _) in surfaces.items():
-            f.write(f'2 {tag} "{s}"\n')
+        write_physical_names(f, groups, surfaces)
         f.write("$EndPhysicalNames\n$Entities\n")
         f.write(f"0 {len(groups)} {len(surfaces)} 0\n")
         for g, tag in groups.items():
