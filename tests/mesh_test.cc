@@ -27,6 +27,34 @@ namespace
            ", 4\n end\n subsection Boundary conditions\n"
            "  set Fixed = inner: xy\n end\nend\n";
   }
+
+  /**
+   * A body read from a Gmsh file whose physical lines 'clamp' (x = 0) and
+   * 'pull' are held in x and pulled by a unit traction; `materials` is the
+   * text of its Material subsection(s).
+   */
+  std::string
+  pulled_gmsh_body(const std::string &body,
+                   const std::string &file,
+                   const std::string &materials)
+  {
+    return "subsection Scene\n  set Bodies = " + body +
+           "\nend\nsubsection Body " + body +
+           "\n  subsection Mesh\n    set Type = gmsh\n    set File = " +
+           source_path("tests/data/" + file) + "\n  end\n" + materials +
+           R"(  subsection Boundary conditions
+    set Fixed = clamp: x; point(0, 0): y
+    set Tractions = pull: 1*t, 0
+  end
+end
+subsection Newton
+  set Residual tolerance = 1e-13
+end
+subsection Output
+  set Progress = false
+end
+)";
+  }
 } // namespace
 
 // A Q4 ring of n cells around is the annulus between two regular n-gons:
@@ -55,33 +83,12 @@ GLISSADE_TEST(mesh_ring_area)
 // (plane stress, small strain: the load keeps strains near 1e-6).
 GLISSADE_TEST(mesh_gmsh_import)
 {
-  const std::string prm = R"(
-subsection Scene
-  set Bodies = plate
-end
-subsection Body plate
-  subsection Mesh
-    set Type = gmsh
-    set File = )" + source_path("tests/data/plate_2x1.msh") +
-                          R"(
-  end
-  subsection Material
+  const std::string prm = pulled_gmsh_body("plate", "plate_2x1.msh", R"(  subsection Material
     set Young modulus = 1e6
     set Poisson ratio = 0.25
     set Hypothesis = plane stress
   end
-  subsection Boundary conditions
-    set Fixed = clamp: x; point(0, 0): y
-    set Tractions = pull: 1*t, 0
-  end
-end
-subsection Newton
-  set Residual tolerance = 1e-13
-end
-subsection Output
-  set Progress = false
-end
-)";
+)");
   Simulation simulation(SceneReader::read_string(prm, "gmsh plate"));
   simulation.advance_to(1., "increment 1");
   const Tensor<1, 2> u = simulation.body("plate").vertex_displacement(
@@ -105,42 +112,19 @@ GLISSADE_TEST(mesh_gmsh_two_material_bar)
   for (const std::string version : {"v22", "v41"})
     {
       const bool        both_listed = version == "v41";
-      const std::string prm =
-        R"(
-subsection Scene
-  set Bodies = bar
-end
-subsection Body bar
-  subsection Mesh
-    set Type = gmsh
-    set File = )" +
-        source_path("tests/data/two_material_bar_" + version + ".msh") + R"(
-  end
-  subsection Material
-    set Young modulus = )" +
-        (both_listed ? "5e5" : "1e6") + R"(
-    set Poisson ratio = 0
-    set Hypothesis = plane stress
-    set Regions = )" +
-        (both_listed ? "soft, stiff" : "stiff") + R"(
-  end
-  subsection Material stiff
-    set Young modulus = 3e6
-  end
-)" + (both_listed ? "  subsection Material soft\n    set Young modulus = 1e6\n  end\n" :
-                    "") +
-        R"(  subsection Boundary conditions
-    set Fixed = clamp: x; point(0, 0): y
-    set Tractions = pull: 1*t, 0
-  end
-end
-subsection Newton
-  set Residual tolerance = 1e-13
-end
-subsection Output
-  set Progress = false
-end
-)";
+      const std::string prm = pulled_gmsh_body(
+        "bar",
+        "two_material_bar_" + version + ".msh",
+        std::string("  subsection Material\n    set Young modulus = ") +
+          (both_listed ? "5e5" : "1e6") +
+          "\n    set Poisson ratio = 0\n    set Hypothesis = plane stress\n"
+          "    set Regions = " +
+          (both_listed ? "soft, stiff" : "stiff") +
+          "\n  end\n  subsection Material stiff\n    set Young modulus = "
+          "3e6\n  end\n" +
+          (both_listed ?
+             "  subsection Material soft\n    set Young modulus = 1e6\n  end\n" :
+             ""));
       std::cout << "MSH " << version << ":" << std::endl;
       Simulation simulation(SceneReader::read_string(prm, "two-material bar"));
       simulation.advance_to(1., "increment 1");

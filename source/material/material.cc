@@ -1,4 +1,5 @@
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/material/material.h>
 #include <glissade/material/neo_hookean.h>
 #include <glissade/material/saint_venant_kirchhoff.h>
@@ -31,8 +32,18 @@ namespace glissade
       return Material(std::make_unique<SaintVenantKirchhoff>(lambda, mu),
                       hypothesis);
     throw InputError("Material/Law",
-                     "unknown law '" + law_name +
-                       "' (known: neo-Hookean, Saint Venant-Kirchhoff)");
+                     "unknown law '" + law_name + "' (known: " +
+                       text::joined(law_names(), ", ") + ")");
+  }
+
+
+
+  const std::vector<std::string> &
+  Material::law_names()
+  {
+    static const std::vector<std::string> names = {"neo-Hookean",
+                                                   "Saint Venant-Kirchhoff"};
+    return names;
   }
 
 

@@ -464,6 +464,13 @@ namespace glissade
         return p;
       }
 
+      /** True if a curved edge joins a and b (either way round). */
+      bool
+      is_curved(const Point<2> &a, const Point<2> &b) const
+      {
+        return midpoints.count(key(a, b)) > 0;
+      }
+
     private:
       using Key = std::pair<std::array<double, 2>, std::array<double, 2>>;
 
@@ -709,11 +716,6 @@ namespace glissade
                            "' as a Gmsh mesh of quadrilaterals: " +
                            text::essential_message(e));
       }
-    if (!triangulation.all_reference_cells_are_hyper_cube())
-      throw InputError(entry,
-                       "'" + file_name +
-                         "' has non-quadrilateral cells; glissade needs "
-                         "quadrilaterals (Recombine in Gmsh)");
 
     if (!census.curved_edges.empty())
       {
@@ -724,11 +726,8 @@ namespace glissade
         for (const auto &cell : triangulation.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             {
-              const auto     face = cell->face(f);
-              const Point<2> a = face->vertex(0), b = face->vertex(1);
-              const Point<2> middle = edges.get_new_point(
-                std::vector<Point<2>>{a, b}, std::vector<double>{0.5, 0.5});
-              if (middle != Point<2>(0.5 * (a + b)))
+              const auto face = cell->face(f);
+              if (edges.is_curved(face->vertex(0), face->vertex(1)))
                 face->set_manifold_id(curved);
             }
         triangulation.set_manifold(curved, edges);

@@ -8,6 +8,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/material/material.h>
 #include <glissade/scene/scene_reader.h>
 
 #include <algorithm>
@@ -441,12 +442,11 @@ namespace glissade
           prm.leave_subsection();
           if (region.law.empty())
             region.law = material.law;
-          if (region.law != "neo-Hookean" &&
-              region.law != "Saint Venant-Kirchhoff")
+          const auto &laws = Material::law_names();
+          if (std::find(laws.begin(), laws.end(), region.law) == laws.end())
             throw InputError(where + "/" + subsection + "/Law",
-                             "'" + region.law +
-                               "' is not a law (neo-Hookean or Saint "
-                               "Venant-Kirchhoff)");
+                             "'" + region.law + "' is not a law (" +
+                               text::joined(laws, ", ") + ")");
           check_moduli(region.young_modulus, region.poisson_ratio, subsection);
           material.regions.push_back(region);
         }

@@ -5,6 +5,7 @@
 #include <glissade/base/text.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/fe/element_space_registry.h>
+#include <glissade/material/material.h>
 #include <glissade/scene/parameter_file.h>
 #include <glissade/scene/scene_reader.h>
 
@@ -102,8 +103,8 @@ namespace glissade
       {
         prm.declare_entry("Law",
                           "neo-Hookean",
-                          Patterns::Selection(
-                            "neo-Hookean|Saint Venant-Kirchhoff"),
+                          Patterns::Selection(text::joined(
+                            Material::law_names(), "|")),
                           "Hyperelastic law (total Lagrangian).");
         prm.declare_entry("Young modulus", "1", Patterns::Double(),
                           "E in Pa, > 0.");

@@ -116,5 +116,19 @@ namespace glissade
       return slash == std::string::npos ? path :
                                           file.substr(0, slash + 1) + path;
     }
+
+
+
+    std::string
+    joined(const std::vector<std::string> &items, const std::string &separator)
+    {
+      std::string text;
+      for (std::size_t i = 0; i < items.size(); ++i)
+        text += (i > 0 ? separator : std::string()) + items[i];
+      return text;
+    }
+
+
+
   } // namespace text
 } // namespace glissade

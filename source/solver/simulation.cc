@@ -4,8 +4,8 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
-#include <glissade/base/timing_sections.h>
 #include <glissade/base/progress_text.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
@@ -15,10 +15,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <exception>
 #include <map>
 #include <sstream>
 
@@ -562,8 +562,8 @@ namespace glissade
     summary_file.commit();
     if (scene.output.plots)
       plot_with_python("plot_scene.py",
-                           scene.output.directory,
-                           curve_arguments(scene.output));
+                       scene.output.directory,
+                       curve_arguments(scene.output));
     return completed;
   }
 

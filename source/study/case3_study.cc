@@ -4,11 +4,11 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/case3_study.h>
 #include <glissade/study/study_progress.h>
-#include <glissade/io/plotting.h>
 
 #include <algorithm>
 #include <cmath>
@@ -99,6 +99,8 @@ namespace glissade
       result.dofs += b->n_dofs();
     auto &pair = *simulation.contact().contact_pairs().at(0);
     const Body  &inner = pair.slave();
+    // The interface radius of prm/case3_rings.prm (the scale of a torque).
+    const double interface_radius = 1.25;
     const double step  = rotation_degrees * M_PI / 180. / rotation_increments;
     double       previous_torque = 0., previous_force = 0.;
     simulation.on_increment = [&](const unsigned int increment, double) {
@@ -109,23 +111,27 @@ namespace glissade
           {
             forces.push_back(node.force().norm());
             // The slave nodes are on the inner ring: x x f about (0, 0) at
-            // the node's current position.
+            // the node's current position (its own value dofs: no vertex
+            // search at every increment).
             const Point<2> x =
               node.reference_position +
-              inner.vertex_displacement(node.reference_position);
+              Tensor<1, 2>({inner.displacement()(node.dofs[0]),
+                            inner.displacement()(node.dofs[1])});
             const Tensor<1, 2> f = node.force();
             torque += x[0] * f[1] - x[1] * f[0];
             total_force += f.norm();
           }
-      result.node_force.push_back(pair.node_at(Point<2>(1.25, 0.)).force().norm());
+      result.node_force.push_back(
+        pair.node_at(Point<2>(interface_radius, 0.)).force().norm());
       if (increment > 10)
         {
           // The trapezoidal rule over the increment's rotation.
           result.spurious_work += 0.5 * (previous_torque + torque) * step;
           result.tangential_work_scale +=
-            0.5 * (previous_force + total_force) * 1.25 * step;
+            0.5 * (previous_force + total_force) * interface_radius * step;
           const double ratio =
-            total_force > 0. ? 100. * torque / (1.25 * total_force) : 0.;
+            total_force > 0. ? 100. * torque / (interface_radius * total_force) :
+                               0.;
           result.torque_percent.push_back(ratio);
           result.worst_torque_percent =
             std::max(result.worst_torque_percent, std::abs(ratio));

@@ -5,11 +5,11 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/study/contact_case_study.h>
 #include <glissade/study/study_progress.h>
-#include <glissade/io/plotting.h>
 
 #include <algorithm>
 #include <cmath>

@@ -19,6 +19,10 @@ namespace glissade
     std::vector<std::string>
     split_top_level(const std::string &s, const char separator);
 
+    /** The items with `separator` between them ("a|b|c", "a, b, c"). */
+    std::string
+    joined(const std::vector<std::string> &items, const std::string &separator);
+
     /** True for "point(x, y)"; fills x and y. */
     bool
     parse_point_location(const std::string &location, double &x, double &y);

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
@@ -45,7 +46,11 @@ namespace glissade
     Material(std::unique_ptr<HyperelasticLaw> law,
              const PlaneHypothesis            hypothesis);
 
-    /** Creates the law by name ("neo-Hookean" or "Saint Venant-Kirchhoff"). */
+    /** The names create() knows, for the .prm's patterns and checks. */
+    static const std::vector<std::string> &
+    law_names();
+
+    /** Creates the law by name (one of law_names()). */
     static Material
     create(const std::string    &law_name,
            const double          young_modulus,
