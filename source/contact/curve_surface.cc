@@ -207,6 +207,32 @@ namespace glissade
 
 
   SurfacePoint
+  CurveSurface::corner_point(const Point<2> &x, const unsigned int segment) const
+  {
+    SurfacePoint point = point_at(x, segment, 0.);
+    if (segment == 0 && !curve->is_closed())
+      return point;
+    const unsigned int incoming =
+      segment == 0 ? curve->n_segments() - 1 : segment - 1;
+    const auto t_in  = curve->unit_tangent(incoming, 1.);
+    const auto t_out = curve->unit_tangent(segment, 0.);
+    Tensor<1, 2> t({t_in[0] + t_out[0], t_in[1] + t_out[1]});
+    // Two segments folded back on each other have no mean direction: keep
+    // the outgoing one's.
+    if (!(t.norm() > 1e-12))
+      return point;
+    t /= t.norm();
+    point.on_vertex = true;
+    point.tangent   = t;
+    point.normal    = Tensor<1, 2>({-t[1], t[0]});
+    point.gap       = (x - point.point) * point.normal;
+    set_vertex_rotation(point);
+    return point;
+  }
+
+
+
+  SurfacePoint
   CurveSurface::project(const Point<2> &x, const SegmentHint &keep) const
   {
     if (keep.segment >= 0)

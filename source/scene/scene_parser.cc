@@ -245,6 +245,15 @@ namespace glissade
       c.master_boundary = prm.get("Master boundary");
       c.surface         = prm.get("Surface");
       c.force_transfer  = prm.get("Force transfer");
+      {
+        const std::string rule = prm.get("Faceted vertex rule");
+        c.vertex_rule =
+          rule == "closest point" ?
+            ContactDescription::VertexRule::closest_point :
+          rule == "vertex normal" ?
+            ContactDescription::VertexRule::vertex_normal :
+            ContactDescription::VertexRule::kept_segment;
+      }
       c.alert_distance  = prm.get_double("Alert distance");
       if (prm.get("Frame update") == "increment")
         throw InputError(

@@ -226,6 +226,20 @@ namespace glissade
         "How a B-spline master receives the reaction: segment hands it to "
         "the two nodes of the underlying straight segment (the paper); "
         "spline uses the spline's own weights (consistent, symmetric W).");
+      prm.declare_entry(
+        "Faceted vertex rule",
+        "vertex normal",
+        Patterns::Selection("kept segment|closest point|vertex normal"),
+        "What a faceted master does at a vertex, where its normal jumps "
+        "(doc/contact.md). kept segment: a node keeps its segment over "
+        "the increment, up to half its length past either end; a new "
+        "choice takes the closest point, and a node exactly on a vertex the "
+        "segment leaving it. closest point: the closest point at every "
+        "iteration, a node in the corner's wedge (behind both facets) "
+        "meeting the vertex with the mean normal of the two facets. vertex "
+        "normal: as closest point, and a node on a vertex (to 1e-9 of the "
+        "segment) meets it with the mean normal too, instead of the "
+        "segment leaving it. Other surfaces ignore this entry.");
       prm.declare_entry("Alert distance", "0", Patterns::Double(0.),
                         "Slave nodes farther than this from the master at the "
                         "start of an increment start it inactive; they join "

@@ -82,6 +82,16 @@ namespace glissade
       return 0.;
     }
 
+    /**
+     * The point of x at the curve node where `segment` starts, taken as a
+     * corner: the node itself, which does not slide, with the mean of the
+     * two adjacent segments' normals (as MasterCurve::project() reports a
+     * convex corner). The first node of an open curve has one segment, whose
+     * normal it keeps.
+     */
+    SurfacePoint
+    corner_point(const dealii::Point<2> &x, unsigned int segment) const;
+
     const Body                  &master;
     const MasterChain            chain;
     std::unique_ptr<MasterCurve> curve;

@@ -166,6 +166,18 @@ namespace glissade
     std::string master_boundary;
     std::string surface        = "faceted"; // faceted | bspline | hermite
     std::string force_transfer = "segment"; // B-spline: segment | spline
+    /**
+     * How a faceted master resolves the normal a vertex lacks (contact.md,
+     * "The faceted master at a vertex"): the segment kept over the
+     * increment, the closest point, or the vertex's mean normal.
+     */
+    enum class VertexRule
+    {
+      kept_segment,
+      closest_point,
+      vertex_normal
+    };
+    VertexRule  vertex_rule    = VertexRule::vertex_normal;
     double      alert_distance = 0.;
     double      friction       = 0.;
     double      beta           = 1.;
