@@ -228,7 +228,7 @@ namespace glissade
         "spline uses the spline's own weights (consistent, symmetric W).");
       prm.declare_entry(
         "Faceted vertex rule",
-        "vertex normal",
+        "kept segment",
         Patterns::Selection("kept segment|closest point|vertex normal"),
         "What a faceted master does at a vertex, where its normal jumps "
         "(doc/contact.md). kept segment: a node keeps its segment over "
@@ -239,7 +239,9 @@ namespace glissade
         "meeting the vertex with the mean normal of the two facets. vertex "
         "normal: as closest point, and a node on a vertex (to 1e-9 of the "
         "segment) meets it with the mean normal too, instead of the "
-        "segment leaving it. Other surfaces ignore this entry.");
+        "segment leaving it: the only rule objective under a rigid turn, "
+        "but a node that must slide off a vertex with friction does not "
+        "converge. Other surfaces ignore this entry.");
       prm.declare_entry("Alert distance", "0", Patterns::Double(0.),
                         "Slave nodes farther than this from the master at the "
                         "start of an increment start it inactive; they join "

@@ -177,7 +177,7 @@ namespace glissade
       closest_point,
       vertex_normal
     };
-    VertexRule  vertex_rule    = VertexRule::vertex_normal;
+    VertexRule  vertex_rule    = VertexRule::kept_segment;
     double      alert_distance = 0.;
     double      friction       = 0.;
     double      beta           = 1.;
