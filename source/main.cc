@@ -12,11 +12,13 @@
 #include <glissade/solver/simulation.h>
 #include <glissade/study/case3_study.h>
 #include <glissade/study/contact_case_study.h>
+#include <glissade/study/friction_study.h>
 #include <glissade/study/geometric_study.h>
 #include <glissade/study/trade_study.h>
 
 #include <cstring>
 #include <iostream>
+#include <map>
 
 namespace
 {
@@ -91,24 +93,19 @@ main(int argc, char **argv)
                          "--restart continues a scene; this file is a '" +
                            study + "' study driver, which runs its scenes "
                                    "from the start");
-      if (study == "geometric")
+      // The study drivers, by the name their file's Study entry gives.
+      using StudyDriver =
+        void (*)(const std::string &, const std::vector<std::string> &);
+      const std::map<std::string, StudyDriver> studies = {
+        {"geometric", &GeometricStudy::run},
+        {"case1", &ContactCaseStudy::run},
+        {"case2", &ContactCaseStudy::run},
+        {"case3", &Case3Study::run},
+        {"friction", &FrictionStudy::run},
+        {"trade", &TradeStudy::run}};
+      if (const auto driver = studies.find(study); driver != studies.end())
         {
-          GeometricStudy::run(argv[1], overrides);
-          return 0;
-        }
-      if (study == "case1" || study == "case2")
-        {
-          ContactCaseStudy::run(argv[1], overrides);
-          return 0;
-        }
-      if (study == "trade")
-        {
-          TradeStudy::run(argv[1], overrides);
-          return 0;
-        }
-      if (study == "case3")
-        {
-          Case3Study::run(argv[1], overrides);
+          driver->second(argv[1], overrides);
           return 0;
         }
       const SceneDescription scene =

@@ -3,6 +3,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/contact/curve_surface.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
@@ -24,7 +25,7 @@ namespace glissade
   double
   Case3Study::paper_spread(const std::string &variant)
   {
-    return variant == "q4" ? 4.8 : variant == "bspline" ? 0.0015 : 0.1;
+    return variant.rfind("q4", 0) == 0 ? 4.8 : variant == "bspline" ? 0.0015 : 0.1;
   }
 
 
@@ -75,6 +76,14 @@ namespace glissade
       }
     if (variant == "q4")
       overrides.push_back("Contact interface/Surface=faceted");
+    else if (variant == "q4-closest" || variant == "q4-vertex")
+      {
+        // The faceted master with another vertex rule (issue 22's study).
+        overrides.push_back("Contact interface/Surface=faceted");
+        overrides.push_back(std::string("Contact interface/Faceted vertex rule=") +
+                            (variant == "q4-closest" ? "closest point" :
+                                                       "vertex normal"));
+      }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
     else if (variant == "bspline-spline")
@@ -90,7 +99,8 @@ namespace glissade
     else
       throw InputError("Case 3 study/Variants",
                        "unknown variant '" + variant +
-                         "' (known: q4, bspline, bspline-spline, hermite)");
+                         "' (known: q4, q4-closest, q4-vertex, bspline, bspline-spline, "
+                         "hermite)");
 
     Simulation simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -103,7 +113,28 @@ namespace glissade
     const double interface_radius = 1.25;
     const double step  = rotation_degrees * M_PI / 180. / rotation_increments;
     double       previous_torque = 0., previous_force = 0.;
+    // Fig 28: the master curve (a deformable master's) near the node, two
+    // elements either side.
+    const auto *curve_surface =
+      dynamic_cast<const CurveSurface *>(&pair.surface());
+    const double window_degrees = 2. * 360. / outer_elements;
     simulation.on_increment = [&](const unsigned int increment, double) {
+      if (curve_surface)
+        {
+          const MasterCurve             &curve = curve_surface->master_curve();
+          std::vector<std::array<double, 2>> profile;
+          for (unsigned int segment = 0; segment < curve.n_segments(); ++segment)
+            for (unsigned int k = 0; k < 16; ++k)
+              {
+                MasterCurve::Point c, dc, ddc;
+                curve.evaluate(segment, k / 16., c, dc, ddc);
+                const double angle = std::atan2(c[1], c[0]) * 180. / M_PI;
+                if (std::abs(angle) <= window_degrees)
+                  profile.push_back({{angle, std::hypot(c[0], c[1])}});
+              }
+          std::sort(profile.begin(), profile.end());
+          result.master_profile.push_back(std::move(profile));
+        }
       std::vector<double> forces;
       double              torque = 0., total_force = 0.;
       for (const auto &node : pair.nodes())
@@ -138,11 +169,16 @@ namespace glissade
         }
       previous_torque = torque;
       previous_force  = total_force;
-      if (increment <= 10 || forces.empty())
-        return;
       double mean = 0.;
       for (const double f : forces)
         mean += f / forces.size();
+      result.mean_force.push_back(mean);
+      result.smallest_force.push_back(
+        forces.empty() ? 0. : *std::min_element(forces.begin(), forces.end()));
+      result.largest_force.push_back(
+        forces.empty() ? 0. : *std::max_element(forces.begin(), forces.end()));
+      if (increment <= 10 || forces.empty())
+        return;
       double spread = 0.;
       for (const double f : forces)
         spread = std::max(spread, std::abs(f - mean) / mean * 100.);
@@ -167,6 +203,58 @@ namespace glissade
 
 
   void
+  Case3Study::write_fig28(const std::vector<Case3Result> &results,
+                          const double                    rotation_degrees,
+                          const unsigned int              rotation_increments,
+                          const std::string              &directory)
+  {
+    const Case3Result *bspline = nullptr, *hermite = nullptr;
+    for (const auto &r : results)
+      {
+        if (r.variant == "bspline")
+          bspline = &r;
+        if (r.variant == "hermite")
+          hermite = &r;
+      }
+    // The first element of rotation, where fig 27's pattern shows once.
+    const unsigned int per_element = static_cast<unsigned int>(
+      std::lround(rotation_increments * 9. / rotation_degrees));
+    if (!bspline || !hermite || per_element < 4 ||
+        bspline->node_force.size() < 10 + per_element ||
+        hermite->node_force.size() < 10 + per_element)
+      return;
+    // i1: the node at mid-element, where the paper sees the two smooth
+    // masters match; i2: where their forces on the node differ most.
+    const unsigned int i1 = 10 + per_element / 2;
+    unsigned int       i2 = 11;
+    for (unsigned int i = 11; i <= 10 + per_element; ++i)
+      if (std::abs(hermite->node_force[i - 1] - bspline->node_force[i - 1]) >
+          std::abs(hermite->node_force[i2 - 1] - bspline->node_force[i2 - 1]))
+        i2 = i;
+    AtomicFile csv(directory + "/case3_fig28.csv");
+    csv.stream() << "variant,increment,role,node_angle,angle,radius\n"
+                 << std::setprecision(12);
+    for (const auto *r : {bspline, hermite})
+      for (const auto &[i, role] :
+           {std::pair<unsigned int, const char *>{i1, "i1"}, {i2, "i2"}})
+        for (const auto &[angle, radius] : r->master_profile.at(i - 1))
+          csv.stream() << r->variant << ',' << i << ',' << role << ','
+                       << (i - 10) * rotation_degrees / rotation_increments
+                       << ',' << angle << ',' << radius << '\n';
+    csv.commit();
+    std::cout << "Fig 28: master curves at increment " << i1
+              << " (node at mid-element: |F_hermite - F_bspline| = "
+              << std::abs(hermite->node_force[i1 - 1] -
+                          bspline->node_force[i1 - 1])
+              << " N) and " << i2 << " (the largest difference, "
+              << std::abs(hermite->node_force[i2 - 1] -
+                          bspline->node_force[i2 - 1])
+              << " N)\n";
+  }
+
+
+
+  void
   Case3Study::run(const std::string              &prm_file,
                   const std::vector<std::string> &overrides)
   {
@@ -176,8 +264,12 @@ namespace glissade
     prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
                       "The rings' scene (relative to this file's folder).");
     prm.declare_entry("Variants", "q4, bspline, hermite",
-                      Patterns::List(Patterns::Selection("q4|bspline|hermite")),
-                      "Discretisations of the interface.");
+                      Patterns::List(Patterns::Selection(
+                        "q4|q4-closest|q4-vertex|bspline|hermite")),
+                      "Discretisations of the interface. q4 uses the "
+                      "scene's Faceted vertex rule; q4-closest and "
+                      "q4-vertex the rules closest point and vertex normal "
+                      "(doc/contact.md).");
     prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
                       "Degrees of rotation after the compression (the paper: "
                       "180; one element of the outer ring: 9).");
@@ -227,13 +319,16 @@ namespace glissade
         }
 
     AtomicFile csv(directory + "/case3_spread.csv");
-    csv.stream() << "variant,increment,spread_percent,node_force,torque_percent\n";
+    csv.stream() << "variant,increment,spread_percent,node_force,torque_percent,"
+                    "mean_force,smallest_force,largest_force\n";
     for (const auto &r : results)
       for (unsigned int i = 0; i < r.node_force.size(); ++i)
         csv.stream() << r.variant << ',' << i + 1 << ','
                      << (i >= 10 ? r.spread_percent[i - 10] : 0.) << ','
                      << r.node_force[i] << ','
-                     << (i >= 10 ? r.torque_percent[i - 10] : 0.) << '\n';
+                     << (i >= 10 ? r.torque_percent[i - 10] : 0.) << ','
+                     << r.mean_force[i] << ',' << r.smallest_force[i] << ','
+                     << r.largest_force[i] << '\n';
     csv.commit();
     AtomicFile worst(directory + "/case3_worst.csv");
     worst.stream() << "variant,node,deviation_percent\n";
@@ -242,6 +337,7 @@ namespace glissade
         worst.stream() << r.variant << ',' << k << ','
                        << r.worst_distribution[k] << '\n';
     worst.commit();
+    write_fig28(results, angle, increments, directory);
 
     // The paper's figure where it gives one (not for 12 or 20 elements).
     const auto paper_figure = [](const std::string &variant) {
@@ -259,7 +355,7 @@ namespace glissade
     for (const auto &r : results)
       std::cout << std::setw(10) << r.variant << std::setw(14)
                 << std::setprecision(3) << r.worst_spread << std::setw(14)
-                << (r.variant == "q4" || r.variant == "bspline" ||
+                << (r.variant.rfind("q4", 0) == 0 || r.variant == "bspline" ||
                         r.variant == "hermite" ?
                       paper_figure(r.variant) :
                       std::string("-"))

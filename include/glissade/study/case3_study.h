@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,13 @@ namespace glissade
     unsigned int        active_nodes = 0; // at the end
     std::vector<double> spread_percent; // per rotation increment
     std::vector<double> node_force;     // |f| of node (1.25, 0), per increment
+    /**
+     * Fig 28: per increment, the master curve near node (1.25, 0) as
+     * (angle in degrees, radius) samples, over two elements either side.
+     */
+    std::vector<std::vector<std::array<double, 2>>> master_profile;
+    /** Per increment, the mean, smallest and largest |f| over the active nodes. */
+    std::vector<double> mean_force, smallest_force, largest_force;
     double              worst_spread = 0.;
     unsigned int        worst_increment = 0;
     std::vector<double> worst_distribution; // (|f| - F_e) / F_e in %, per node
@@ -63,6 +71,19 @@ namespace glissade
                 const unsigned int rotation_increments,
                 const std::string &output_directory,
                 const unsigned int outer_elements = 40);
+
+    /**
+     * Fig 28: the B-spline and Hermite master curves near node (1.25, 0) at
+     * two increments of the first element of rotation, i1 (the node at
+     * mid-element, where the paper's two smooth masters match) and i2 (the
+     * largest difference of their forces on the node), as
+     * case3_fig28.csv. Nothing without both variants.
+     */
+    static void
+    write_fig28(const std::vector<Case3Result> &results,
+                double                          rotation_degrees,
+                unsigned int                    rotation_increments,
+                const std::string              &directory);
 
     /** Reads the study's .prm, runs its variants, writes CSV and PNG. */
     static void
