@@ -71,8 +71,9 @@ GLISSADE_TEST(case3_spurious_torque)
 // - Hermite within 10 % of 0.1 % (measured 0.1016 %: reproduced);
 // - B-spline within a factor 2 of 0.0015 % (measured 0.0023 %: the order
 //   of magnitude, the paper gives one digit and no material);
-// - Q4 within a factor 3 of 4.8 % (measured 1.91 %: NOT reproduced; the
-//   faceted master's treatment of a vertex is issue 22's open question).
+// - Q4 within a factor 3 of 4.8 % (measured 1.91 %: NOT reproduced; no
+//   vertex rule, increment size or load ramp gives 4.8 %, see
+//   doc/studies/case3.md, "The paper's 4.8 % for Q4: what we tested").
 GLISSADE_TEST(case3_rotation_spread_order)
 {
   const Case3Result q4 = run("q4"), bspline = run("bspline"),

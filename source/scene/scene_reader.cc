@@ -371,7 +371,8 @@ namespace glissade
   {
     prm.declare_entry("Study",
                       "simulation",
-                      Patterns::Selection("simulation|geometric|case1|case2|case3"),
+                      Patterns::Selection(
+                        "simulation|geometric|case1|case2|case3|friction|trade"),
                       "simulation: run the scene below. geometric: the "
                       "geometric study of the paper's section 3.3 (see "
                       "prm/geometric_study.prm); case1, case2: the beam on a "
@@ -379,8 +380,11 @@ namespace glissade
                       "(sections 4.1, 4.2; prm/case1_study.prm, "
                       "prm/case2_study.prm); case3: the concentric rings "
                       "of section 4.3 in several variants (see "
-                      "prm/case3_default.prm). A study's own entries replace "
-                      "these.");
+                      "prm/case3_default.prm); friction: a scene for every "
+                      "master and friction coefficient "
+                      "(prm/case3_friction.prm); trade: time and dofs "
+                      "against accuracy (prm/trade_study.prm). A study's "
+                      "own entries replace these.");
     prm.enter_subsection("Scene");
     prm.declare_entry("Bodies",
                       "body",

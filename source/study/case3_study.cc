@@ -116,7 +116,9 @@ namespace glissade
     // Fig 28: the master curve (a deformable master's) near the node, two
     // elements either side.
     const auto *curve_surface =
-      dynamic_cast<const CurveSurface *>(&pair.surface());
+      variant == "bspline" || variant == "hermite" ?
+        dynamic_cast<const CurveSurface *>(&pair.surface()) :
+        nullptr;
     const double window_degrees = 2. * 360. / outer_elements;
     simulation.on_increment = [&](const unsigned int increment, double) {
       if (curve_surface)
