@@ -70,7 +70,8 @@ namespace glissade
                                name +
                                ": the active nodes of all pairs form one "
                                "local problem, solved with one set of "
-                               "settings; give every pair the same value");
+                               "settings; set Contact solver/" + name +
+                               " once for all pairs");
       }
     if (!pairs.empty())
       {

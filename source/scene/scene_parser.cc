@@ -12,6 +12,7 @@
 #include <glissade/scene/scene_reader.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
@@ -230,10 +231,37 @@ namespace glissade
       return items;
     }
 
+    /**
+     * A pair's own value of a Contact solver entry (kept for old scenes):
+     * the section's value if the entry is empty.
+     */
+    double
+    pair_override(TrackedParameters &prm, const std::string &entry,
+                  const double section_value, const std::string &where)
+    {
+      const std::string value = text::trim(prm.get(entry));
+      if (value.empty())
+        return section_value;
+      try
+        {
+          std::size_t  used   = 0;
+          const double result = std::stod(value, &used);
+          if (used == value.size() && std::isfinite(result))
+            return result;
+        }
+      catch (const std::exception &)
+        {}
+      throw InputError(where + "/" + entry,
+                       "'" + value + "' is not a number (this entry is "
+                       "kept for old scenes: set Contact solver/" + entry +
+                       " instead, once for all pairs)");
+    }
+
     ContactDescription
     parse_contact(TrackedParameters              &prm,
                   const std::string              &name,
                   const std::vector<std::string> &body_names,
+                  const ContactSolverSettings    &solver,
                   const std::string              &source)
     {
       ContactDescription c;
@@ -264,9 +292,14 @@ namespace glissade
           "quadratically in the true frame (doc/contact.md); delete this "
           "line");
       c.friction        = prm.get_double("Friction coefficient");
-      c.beta            = prm.get_double("Beta");
-      c.tolerance       = prm.get_double("Tolerance");
-      c.max_sweeps      = prm.get_integer("Maximum sweeps");
+      c.beta      = pair_override(prm, "Beta", solver.beta, c.entry);
+      c.tolerance = pair_override(prm, "Tolerance", solver.tolerance, c.entry);
+      const double sweeps = pair_override(prm, "Maximum sweeps",
+                                          solver.max_sweeps, c.entry);
+      if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
+        throw InputError(c.entry + "/Maximum sweeps",
+                         "must be a whole number of at least 1");
+      c.max_sweeps = static_cast<unsigned int>(sweeps);
       if (!(c.tolerance > 0.))
         throw InputError(c.entry + "/Tolerance",
                          "must be > 0: the local solver's residual is never "
@@ -674,10 +707,24 @@ namespace glissade
       });
     };
 
+    check_part([&]() {
+      prm.enter_subsection("Contact solver");
+      scene.contact_solver.beta       = prm.get_double("Beta");
+      scene.contact_solver.tolerance  = prm.get_double("Tolerance");
+      scene.contact_solver.max_sweeps = prm.get_integer("Maximum sweeps");
+      prm.leave_subsection();
+      if (!(scene.contact_solver.beta > 0. && scene.contact_solver.beta < 2.))
+        throw InputError(source + ": Contact solver/Beta", "must lie in (0, 2)");
+      if (!(scene.contact_solver.tolerance > 0.))
+        throw InputError(source + ": Contact solver/Tolerance",
+                         "must be > 0: the local solver's residual is never "
+                         "exactly zero (1e-10 is the default)");
+    });
     for (const auto &name : contact_names)
       check_part([&]() {
         prm.enter_subsection("Contact " + name);
-        scene.contacts.push_back(parse_contact(prm, name, body_names, source));
+        scene.contacts.push_back(parse_contact(
+          prm, name, body_names, scene.contact_solver, source));
         prm.leave_subsection();
       });
     for (const auto &name : body_names)

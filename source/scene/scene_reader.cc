@@ -257,18 +257,19 @@ namespace glissade
         "is refused with a message.");
       prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
                         "Coulomb's mu (0: frictionless).");
-      prm.declare_entry("Beta", "1", Patterns::Double(0.),
-                        "Bi-potential parameter in (0, 2): rho_k = beta / "
-                        "W_kk(nn) on a frictionless node, beta / the largest "
-                        "eigenvalue of its 2x2 block W_kk with friction. The "
-                        "active nodes of "
-                        "all pairs form one local problem, solved with the "
-                        "Beta, Tolerance and Maximum sweeps of the first "
-                        "pair.");
-      prm.declare_entry("Tolerance", "1e-10", Patterns::Double(0.),
-                        "Relative tolerance of the local solver.");
-      prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
-                        "Gauss-Seidel sweeps of the local solver.");
+      // The local solver's settings belong to the scene (section Contact
+      // solver): the active nodes of all pairs form one local problem.
+      // These entries are kept for old scenes.
+      for (const auto &[entry, owner] :
+           {std::pair<const char *, const char *>{"Beta", "Beta"},
+            {"Tolerance", "Tolerance"},
+            {"Maximum sweeps", "Maximum sweeps"}})
+        prm.declare_entry(entry, "", Patterns::Anything(),
+                          std::string("Kept for old scenes: empty, or this "
+                                      "pair's value of Contact solver/") +
+                            owner +
+                            ", which replaces the section's (every pair "
+                            "that gives one must give the same).");
       prm.enter_subsection("Obstacle");
       prm.declare_entry(
         "Type",
@@ -442,6 +443,19 @@ namespace glissade
     prm.declare_entry("Displacement tolerance", "1e-9", Patterns::Double(0.),
                       "...and |du| <= tol * |u| (tol * 1e-12 * the largest "
                       "body's diameter while u = 0).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry("Beta", "1", Patterns::Double(0.),
+                      "Bi-potential parameter in (0, 2): rho_k = beta / "
+                      "W_kk(nn) on a frictionless node, beta / the largest "
+                      "eigenvalue of its 2x2 block W_kk with friction. The "
+                      "active nodes of all contact pairs form one local "
+                      "problem, solved with these settings.");
+    prm.declare_entry("Tolerance", "1e-10", Patterns::Double(0.),
+                      "Relative tolerance of the local solver.");
+    prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
+                      "Gauss-Seidel sweeps of the local solver.");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");

@@ -126,6 +126,17 @@ namespace glissade
     unsigned int              max_cut_back_depth = 6;
   };
 
+  /**
+   * The local solver of the condensed contact problem (section Contact
+   * solver): the active nodes of all pairs form one problem.
+   */
+  struct ContactSolverSettings
+  {
+    double       beta       = 1.;
+    double       tolerance  = 1e-10;
+    unsigned int max_sweeps = 10000;
+  };
+
   struct NewtonSettings
   {
     unsigned int max_iterations         = 25;
@@ -180,6 +191,8 @@ namespace glissade
     VertexRule  vertex_rule    = VertexRule::kept_segment;
     double      alert_distance = 0.;
     double      friction       = 0.;
+    // The local solver's settings in effect for this pair: the scene's
+    // Contact solver section, or the pair's own entries of an old scene.
     double      beta           = 1.;
     double      tolerance      = 1e-10;
     unsigned int max_sweeps    = 10000;
@@ -200,6 +213,7 @@ namespace glissade
     std::vector<ContactDescription> contacts;
     LoadProgram                  load_program;
     NewtonSettings               newton;
+    ContactSolverSettings        contact_solver;
     OutputSettings               output;
     CheckpointSettings           checkpoint;
     /** Hash of every value but the Checkpoint section (see SceneReader). */
