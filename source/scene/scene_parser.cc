@@ -232,16 +232,19 @@ namespace glissade
     }
 
     /**
-     * A pair's own value of a Contact solver entry (kept for old scenes):
-     * the section's value if the entry is empty.
+     * An entry that may be left empty to inherit a value (a material
+     * region's moduli, a pair's old Contact solver entries): `inherited`
+     * if empty, else the number it holds; anything else is an input error
+     * naming `where`/entry, with `hint` after the complaint.
      */
     double
-    pair_override(TrackedParameters &prm, const std::string &entry,
-                  const double section_value, const std::string &where)
+    number_or_inherited(TrackedParameters &prm, const std::string &entry,
+                        const double inherited, const std::string &where,
+                        const std::string &hint = "")
     {
       const std::string value = text::trim(prm.get(entry));
       if (value.empty())
-        return section_value;
+        return inherited;
       try
         {
           std::size_t  used   = 0;
@@ -252,9 +255,7 @@ namespace glissade
       catch (const std::exception &)
         {}
       throw InputError(where + "/" + entry,
-                       "'" + value + "' is not a number (this entry is "
-                       "kept for old scenes: set Contact solver/" + entry +
-                       " instead, once for all pairs)");
+                       "'" + value + "' is not a number" + hint);
     }
 
     ContactDescription
@@ -292,10 +293,18 @@ namespace glissade
           "quadratically in the true frame (doc/contact.md); delete this "
           "line");
       c.friction        = prm.get_double("Friction coefficient");
-      c.beta      = pair_override(prm, "Beta", solver.beta, c.entry);
-      c.tolerance = pair_override(prm, "Tolerance", solver.tolerance, c.entry);
-      const double sweeps = pair_override(prm, "Maximum sweeps",
-                                          solver.max_sweeps, c.entry);
+      // A pair's own value of a Contact solver entry (old scenes)
+      // replaces the section's.
+      const auto solver_entry = [&](const std::string &entry,
+                                    const double       section_value) {
+        return number_or_inherited(prm, entry, section_value, c.entry,
+                                   " (this entry is kept for old scenes: set "
+                                   "Contact solver/" + entry +
+                                     " instead, once for all pairs)");
+      };
+      c.beta      = solver_entry("Beta", solver.beta);
+      c.tolerance = solver_entry("Tolerance", solver.tolerance);
+      const double sweeps = solver_entry("Maximum sweeps", solver.max_sweeps);
       if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
         throw InputError(c.entry + "/Maximum sweeps",
                          "must be a whole number of at least 1");
@@ -461,26 +470,13 @@ namespace glissade
           MaterialRegionDescription region;
           region.name = name;
           prm.enter_subsection(subsection);
-          const auto number = [&](const std::string &entry,
-                                  const double       inherited) {
-            const std::string value = text::trim(prm.get(entry));
-            if (value.empty())
-              return inherited;
-            try
-              {
-                std::size_t  end    = 0;
-                const double parsed = std::stod(value, &end);
-                if (end == value.size())
-                  return parsed;
-              }
-            catch (const std::exception &)
-              {}
-            throw InputError(where + "/" + subsection + "/" + entry,
-                             "'" + value + "' is not a number");
-          };
           region.law           = text::trim(prm.get("Law"));
-          region.young_modulus = number("Young modulus", material.young_modulus);
-          region.poisson_ratio = number("Poisson ratio", material.poisson_ratio);
+          region.young_modulus =
+            number_or_inherited(prm, "Young modulus", material.young_modulus,
+                                where + "/" + subsection);
+          region.poisson_ratio =
+            number_or_inherited(prm, "Poisson ratio", material.poisson_ratio,
+                                where + "/" + subsection);
           prm.leave_subsection();
           if (region.law.empty())
             region.law = material.law;

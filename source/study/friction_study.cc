@@ -247,7 +247,8 @@ namespace glissade
                  "over the increments after the first stage)\n"
               << std::setw(9) << "master" << std::setw(6) << "mu"
               << std::setw(8) << "dofs" << std::setw(10) << "wall (s)"
-              << std::setw(8) << "Newton" << std::setw(14) << "sum r_n"
+              << std::setw(8) << "Newton" << std::setw(6) << "cuts"
+              << std::setw(14) << "sum r_n"
               << std::setw(14) << "sum |r_t|" << std::setw(11) << "ratio"
               << std::setw(7) << "stick" << std::setw(6) << "slip"
               << std::setw(13) << "spread (%)" << std::setw(13)
@@ -271,8 +272,8 @@ namespace glissade
         std::cout << std::setw(9) << r.variant << std::setw(6) << r.friction
                   << std::setw(8) << r.dofs << std::setw(10)
                   << std::setprecision(3) << r.wall_seconds << std::setw(8)
-                  << r.newton_iterations << std::setw(14)
-                  << std::setprecision(6) << n << std::setw(14) << t
+                  << r.newton_iterations << std::setw(6) << r.cut_backs
+                  << std::setw(14) << std::setprecision(6) << n << std::setw(14) << t
                   << std::setw(11) << std::setprecision(4)
                   << (n > 0. ? t / n : 0.) << std::setw(7)
                   << (r.sticking.empty() ? 0 : r.sticking.back())
@@ -282,7 +283,8 @@ namespace glissade
                   << std::setw(13) << std::setprecision(2)
                   << r.worst_cone_excess << '\n';
       }
-    std::cout << "(cone excess: max over closed nodes of |r_t| - mu r_n, "
+    std::cout << "(Newton: iterations in the run; cuts: increments cut "
+                 "back; cone excess: max over closed nodes of |r_t| - mu r_n, "
                  "relative to the increment's largest r_n; Coulomb's law "
                  "holds if it is at round-off)\n"
               << std::flush;
