@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
@@ -250,6 +251,40 @@ GLISSADE_TEST(contact_pair_several_slave_boundaries)
   check(pair.nodes().size() == 17 && vertices.size() == 17,
         "bottom, left and right give 17 nodes, corners once");
   check_relative(total, -top, 1e-10, "contact force against the support");
+}
+
+
+
+// Output/Initial state = false: the reference configuration's VTU files
+// and contact table are left out, the final state's are written and the
+// PVD index lists only them; with the default both are there.
+GLISSADE_TEST(output_initial_state_left_out)
+{
+  for (const bool initial : {true, false})
+    {
+      const std::string directory =
+        initial ? "initial_state_kept" : "initial_state_left_out";
+      std::filesystem::remove_all(directory); // no file of an earlier run
+      Simulation simulation(SceneReader::read_string(
+        block_on_line("bottom", directory), "initial state",
+        {"Output/VTU interval=0",
+         std::string("Output/Initial state=") + (initial ? "true" : "false")}));
+      simulation.run();
+      const bool vtu_0   = !contents(directory + "/block-00000.vtu").empty();
+      const bool table_0 = !contents(directory + "/contact-floor-00000.csv").empty();
+      const bool vtu_2   = !contents(directory + "/block-00002.vtu").empty();
+      const bool table_2 = !contents(directory + "/contact-floor-00002.csv").empty();
+      const std::string pvd = contents(directory + "/block.pvd");
+      std::cout << "  Initial state = " << initial << ": increment 0 VTU "
+                << vtu_0 << ", table " << table_0 << "; final VTU " << vtu_2
+                << ", table " << table_2 << std::endl;
+      check(vtu_0 == initial && table_0 == initial,
+            "increment 0 written if and only if asked for");
+      check(vtu_2 && table_2, "the final state is always written");
+      check((pvd.find("block-00000.vtu") != std::string::npos) == initial &&
+              pvd.find("block-00002.vtu") != std::string::npos,
+            "the PVD index lists the files written");
+    }
 }
 
 

@@ -818,6 +818,7 @@ namespace glissade
     scene.output.directory    = prm.get("Directory");
     scene.output.vtu_interval = prm.get_integer("VTU interval");
     scene.output.vtu_compression = prm.get("VTU compression");
+    scene.output.initial_state   = prm.get_bool("Initial state");
     scene.output.contact_table_interval =
       prm.get_integer("Contact table interval");
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))

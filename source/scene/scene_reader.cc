@@ -465,6 +465,11 @@ namespace glissade
     prm.declare_entry("VTU interval", "1", Patterns::Integer(0),
                       "Write a VTU every this many increments (0: only the "
                       "initial and final states).");
+    prm.declare_entry("Initial state", "true", Patterns::Bool(),
+                      "Write the VTU files and contact tables of increment "
+                      "0 (the reference configuration, no contact force); "
+                      "false: only the increments that the intervals ask "
+                      "for and the final state.");
     prm.declare_entry("VTU compression",
                       "fast",
                       Patterns::Selection("fast|small|none"),

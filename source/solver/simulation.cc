@@ -398,8 +398,8 @@ namespace glissade
     // Its VTU and contact tables are written already if the increment was
     // an output increment; otherwise write them now, so that a failed run
     // shows where it stood.
-    const bool vtu_written = increment == 0 ||
-                             (scene.output.vtu_interval > 0 &&
+    const bool vtu_written = (increment == 0 && scene.output.initial_state) ||
+                             (increment > 0 && scene.output.vtu_interval > 0 &&
                               increment % scene.output.vtu_interval == 0);
     try
       {
@@ -451,7 +451,8 @@ namespace glissade
     else
       {
         history->record(0, 0., 0);
-        write_output(0, 0.);
+        if (scene.output.initial_state)
+          write_output(0, 0.);
       }
     const double wall_before = stats.wall_seconds;
 

@@ -147,7 +147,8 @@ namespace glissade
   struct OutputSettings
   {
     std::string directory     = "output";
-    unsigned int vtu_interval = 1; // 0: final state only
+    unsigned int vtu_interval = 1; // 0: initial and final states only
+    bool         initial_state = true; // the VTU and tables of increment 0
     std::string  vtu_compression = "fast"; // fast, small, none
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
