@@ -1,13 +1,16 @@
 // The mesh generators and the Gmsh reader, against closed forms.
 
+#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
 #include "test_tools.h"
 
 #include <cmath>
+#include <iomanip>
 
 using namespace glissade;
 using namespace glissade_tests;
@@ -202,4 +205,41 @@ end
         "a curved quadratic mesh is off Lame by more than 0.2 %");
   check(chords > 10. * std::max(q8, q2),
         "the curved edges do not change the answer: are they read?");
+}
+
+
+
+// The mesh diameter from the boundary's convex hull is deal.II's, to the
+// bit, on a ring (two boundaries, the inner one inside the hull), a
+// randomly distorted rectangle and an L (a boundary that is not convex).
+GLISSADE_TEST(mesh_diameter_is_deal_ii_s)
+{
+  std::vector<std::pair<std::string, Triangulation<2>>> meshes;
+  {
+    Triangulation<2> ring;
+    GridGenerator::hyper_shell(ring, Point<2>(0.3, -0.2), 0.5, 2., 40);
+    ring.refine_global(2);
+    meshes.emplace_back("ring", std::move(ring));
+  }
+  {
+    Triangulation<2> rectangle;
+    GridGenerator::subdivided_hyper_rectangle(rectangle, {37, 11},
+                                              Point<2>(-1, 0), Point<2>(3, 0.7));
+    GridTools::distort_random(0.3, rectangle, true, 7);
+    meshes.emplace_back("distorted rectangle", std::move(rectangle));
+  }
+  {
+    Triangulation<2> l_shape;
+    GridGenerator::hyper_L(l_shape, -1., 1.);
+    l_shape.refine_global(4);
+    meshes.emplace_back("L", std::move(l_shape));
+  }
+  for (const auto &[name, mesh] : meshes)
+    {
+      const double ours = mesh_diameter(mesh), theirs = GridTools::diameter(mesh);
+      std::cout << "  " << name << ": " << mesh.n_vertices() << " vertices, diameter "
+                << std::setprecision(17) << ours << " (deal.II " << theirs
+                << ")" << std::endl;
+      check(ours == theirs, name + ": the same diameter as deal.II's");
+    }
 }

@@ -3,6 +3,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/body/body.h>
 #include <glissade/fe/element_space_registry.h>
 
@@ -18,7 +19,7 @@ namespace glissade
     const std::string where  = source + ": Body " + description.name;
     const MeshLabels  labels = MeshFactory::create(description.mesh, mesh, where);
     boundary_names           = labels.boundaries;
-    reference_size           = GridTools::diameter(mesh);
+    reference_size           = mesh_diameter(mesh);
     materials                = std::make_unique<BodyMaterials>(
       description.material,
       labels.regions,

@@ -2,6 +2,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/base/text.h>
 #include <glissade/base/user_function.h>
 #include <glissade/body/boundary_conditions.h>
@@ -68,7 +69,7 @@ namespace glissade
                               const std::string      &body_name,
                               const std::string      &entry,
                               const bool              allow_face_point,
-                              const double            mesh_diameter)
+                              const double            known_diameter)
   {
     Location result;
     double   x, y;
@@ -86,11 +87,11 @@ namespace glissade
               best   = vertices[v].distance(result.point);
               best_v = v;
             }
-        // GridTools::diameter compares every pair of boundary vertices:
-        // callers that resolve many points pass it.
-        const double size = mesh_diameter > 0. ?
-                              mesh_diameter :
-                              GridTools::diameter(triangulation);
+        // The diameter walks the boundary: callers that resolve many
+        // points pass it.
+        const double size = known_diameter > 0. ?
+                              known_diameter :
+                              mesh_diameter(triangulation);
         if (best > 1e-8 * size && allow_face_point)
           for (const auto &cell : triangulation.active_cell_iterators())
             for (const unsigned int f : cell->face_indices())

@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
@@ -78,7 +79,7 @@ namespace glissade
               const std::string &where)
     {
       const unsigned int v = GridTools::find_closest_vertex(mesh, point);
-      if (mesh.get_vertices()[v].distance(point) > 1e-9 * GridTools::diameter(mesh))
+      if (mesh.get_vertices()[v].distance(point) > 1e-9 * mesh_diameter(mesh))
         throw InputError(where, "no mesh vertex at the point the study measures");
       return v;
     }
@@ -88,7 +89,7 @@ namespace glissade
     mirror_vertices(const Triangulation<2> &a, const Triangulation<2> &b,
                     const std::string &where)
     {
-      const double tolerance = 1e-9 * GridTools::diameter(a);
+      const double tolerance = 1e-9 * mesh_diameter(a);
       std::map<std::pair<long long, long long>, unsigned int> index;
       const auto key = [&](const Point<2> &p) {
         return std::make_pair(std::llround(p[0] / tolerance),

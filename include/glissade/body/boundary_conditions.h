@@ -105,7 +105,7 @@ namespace glissade
             const std::string      &body_name,
             const std::string      &entry,
             const bool              allow_face_point = false,
-            const double            mesh_diameter    = 0.);
+            const double            known_diameter   = 0.);
 
     /** The two global value dofs (x, y) at vertex v of a cell. */
     static std::array<types::global_dof_index, 2>
