@@ -13,11 +13,15 @@ using namespace glissade_tests;
 
 namespace
 {
+  /**
+   * Each test writes in its own directory: ctest -j runs two of them at
+   * once, and a directory is locked by the run that writes in it.
+   */
   Case3Result
-  run(const std::string &variant)
+  run(const std::string &variant, const std::string &directory)
   {
     return Case3Study::run_variant(source_path("prm/case3_rings.prm"),
-                                   variant, 9., 50, "case3_test");
+                                   variant, 9., 50, directory);
   }
 
   /**
@@ -44,7 +48,7 @@ GLISSADE_TEST(case3_spurious_torque)
 {
   for (const std::string variant : {"q4", "bspline", "hermite"})
     {
-      const Case3Result r = run(variant);
+      const Case3Result r = run(variant, "case3_torque");
       const double      work_share =
         std::abs(r.spurious_work) / r.tangential_work_scale;
       std::cout << "  " << variant << ": largest |T| / (R sum |f|) "
@@ -76,8 +80,9 @@ GLISSADE_TEST(case3_spurious_torque)
 //   doc/studies/case3.md, "The paper's 4.8 % for Q4: what we tested").
 GLISSADE_TEST(case3_rotation_spread_order)
 {
-  const Case3Result q4 = run("q4"), bspline = run("bspline"),
-                    hermite = run("hermite");
+  const Case3Result q4      = run("q4", "case3_spread"),
+                    bspline = run("bspline", "case3_spread"),
+                    hermite = run("hermite", "case3_spread");
   for (const auto *r : {&q4, &bspline, &hermite})
     std::cout << "  " << r->variant << ": worst spread " << r->worst_spread
               << " % at increment " << r->worst_increment << " (paper "
