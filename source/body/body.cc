@@ -2,10 +2,12 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <deal.II/base/work_stream.h>
+
 #include <glissade/base/input_error.h>
-#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/body/body.h>
 #include <glissade/fe/element_space_registry.h>
+#include <glissade/mesh/mesh_diameter.h>
 
 #include <cmath>
 #include <sstream>
@@ -95,18 +97,12 @@ namespace glissade
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
 
-    const double thickness = description.material.thickness;
-    const auto   evaluator = element_space->create_evaluator();
-    const unsigned int n_local = evaluator->dofs_per_cell();
-
-    FullMatrix<double>                   cell_matrix(n_local, n_local);
-    Vector<double>                       cell_rhs(n_local);
-    std::vector<types::global_dof_index> local_dofs(n_local);
-    std::vector<unsigned int>            component(n_local);
+    const double       thickness = description.material.thickness;
+    const auto         boundary_evaluator = element_space->create_evaluator();
+    const unsigned int n_local = boundary_evaluator->dofs_per_cell();
+    std::vector<unsigned int> component(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
-      component[i] = evaluator->displacement_component(i);
-    std::vector<Tensor<1, 2>>          grad(n_local);
-    std::vector<SymmetricTensor<2, 2>> dE(n_local), D_dE(n_local);
+      component[i] = boundary_evaluator->displacement_component(i);
 
     bool admissible = true;
     problem.clear();
@@ -118,105 +114,169 @@ namespace glissade
                   "holds? see Boundary conditions)";
         return false;
       }
-    // The first cell that makes the state inadmissible names the problem.
-    const auto reject_cell = [&](const auto &cell, const std::string &why) {
-      if (admissible)
-        {
-          std::ostringstream message;
-          message << "cell " << cell->active_cell_index() << " of body '"
-                  << name() << "' at (" << cell->center()[0] << ", "
-                  << cell->center()[1] << ") " << why;
-          problem = message.str();
-        }
-      admissible = false;
+
+    // The cells are integrated on every core (deal.II's WorkStream); what
+    // each one adds to the global vectors and matrix is added by one
+    // thread, cell after cell in the order of the mesh, so the sums are
+    // the same bits as in a sequential loop (ctest -R determinism). The
+    // surface loads are added there too: their muParser functions hold a
+    // time and are not safe to share between threads.
+    struct Scratch
+    {
+      Scratch(const ElementSpace &space, const unsigned int n_local)
+        : space(space)
+        , evaluator(space.create_evaluator())
+        , grad(n_local)
+        , dE(n_local)
+        , D_dE(n_local)
+      {}
+      Scratch(const Scratch &other)
+        : Scratch(other.space, other.grad.size())
+      {}
+      const ElementSpace                   &space;
+      std::unique_ptr<CellEvaluator>        evaluator;
+      std::vector<Tensor<1, 2>>             grad;
+      std::vector<SymmetricTensor<2, 2>>    dE, D_dE;
     };
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        evaluator->reinit(cell);
-        cell->get_dof_indices(local_dofs);
-        cell_matrix = 0.;
-        cell_rhs    = 0.;
-        const Material &cell_material = materials->of_cell(cell->material_id());
+    struct CellContribution
+    {
+      explicit CellContribution(const unsigned int n_local)
+        : cell_matrix(n_local, n_local)
+        , cell_rhs(n_local)
+        , local_dofs(n_local)
+      {}
+      // The surface loads are added to them in the (sequential) copier,
+      // which WorkStream hands a const reference.
+      mutable FullMatrix<double>           cell_matrix;
+      mutable Vector<double>               cell_rhs;
+      std::vector<types::global_dof_index> local_dofs;
+      std::string                          rejection; // why, if inadmissible
+      typename DoFHandler<2>::active_cell_iterator cell;
+    };
 
-        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
-          {
-            // Every shape function is primitive: Grad N_i has a single
-            // non-zero row (its component c_i), which makes every
-            // contraction below a small dot product.
-            Tensor<2, 2> H; // displacement gradient
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                grad[i] = evaluator->shape_grad(i, q);
-                H[component[i]] += solution(local_dofs[i]) * grad[i];
-              }
-            const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
-            const double       J = determinant(F);
-            if (!(J > 0.) || !std::isfinite(J))
-              {
-                std::ostringstream why;
-                why << "is inverted, det F = " << J
-                    << " (an increment too large for the deformation, or a "
-                       "mesh too coarse for it)";
-                reject_cell(cell, why.str());
-                continue;
-              }
-            const MaterialPointResponse response = cell_material.evaluate(H);
-            // The tangent too: at u = 0 the stress is zero however large
-            // E is, and only the stiffness overflows.
-            if (!std::isfinite(response.stress.norm()) ||
-                !std::isfinite(response.tangent.norm()))
-              {
-                std::ostringstream why;
-                const auto [young_modulus, entry] =
-                  materials->young_modulus_of_cell(cell->material_id());
-                why << "has a stress or stiffness that is not finite: the "
-                    << entry << " (" << young_modulus << ") times the strain is beyond double precision; "
-                       "express the scene in other units";
-                reject_cell(cell, why.str());
-                continue;
-              }
-            const Tensor<2, 2>          P  = F * Tensor<2, 2>(response.stress);
-            const double                dV = evaluator->JxW(q) * thickness;
+    const auto integrate = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
+                               Scratch          &scratch,
+                               CellContribution &data) {
+      CellEvaluator &evaluator = *scratch.evaluator;
+      auto          &grad      = scratch.grad;
+      auto          &dE        = scratch.dE;
+      auto          &D_dE      = scratch.D_dE;
+      auto          &cell_matrix = data.cell_matrix;
+      auto          &cell_rhs    = data.cell_rhs;
+      data.cell = cell;
+      data.rejection.clear();
+      evaluator.reinit(cell);
+      cell->get_dof_indices(data.local_dofs);
+      cell_matrix = 0.;
+      cell_rhs    = 0.;
+      const Material &cell_material = materials->of_cell(cell->material_id());
 
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                const unsigned int c = component[i];
-                for (unsigned int a = 0; a < 2; ++a)
-                  for (unsigned int b = a; b < 2; ++b)
-                    dE[i][a][b] =
-                      0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
-                D_dE[i] = response.tangent * dE[i];
-                cell_rhs(i) -= (P[c] * grad[i]) * dV;
-              }
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                const Tensor<1, 2> S_grad_i =
-                  Tensor<2, 2>(response.stress) * grad[i];
-                for (unsigned int j = 0; j <= i; ++j)
-                  {
-                    double k = dE[j] * D_dE[i];
-                    if (component[i] == component[j])
-                      k += S_grad_i * grad[j];
-                    cell_matrix(i, j) += k * dV;
-                  }
-              }
-          }
-        for (unsigned int i = 0; i < n_local; ++i)
-          for (unsigned int j = i + 1; j < n_local; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
+      for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
+        {
+          // Every shape function is primitive: Grad N_i has a single
+          // non-zero row (its component c_i), which makes every
+          // contraction below a small dot product.
+          Tensor<2, 2> H; // displacement gradient
+          for (unsigned int i = 0; i < n_local; ++i)
+            {
+              grad[i] = evaluator.shape_grad(i, q);
+              H[component[i]] += solution(data.local_dofs[i]) * grad[i];
+            }
+          const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+          const double       J = determinant(F);
+          if (!(J > 0.) || !std::isfinite(J))
+            {
+              std::ostringstream why;
+              why << "is inverted, det F = " << J
+                  << " (an increment too large for the deformation, or a "
+                     "mesh too coarse for it)";
+              if (data.rejection.empty())
+                data.rejection = why.str();
+              continue;
+            }
+          const MaterialPointResponse response = cell_material.evaluate(H);
+          // The tangent too: at u = 0 the stress is zero however large
+          // E is, and only the stiffness overflows.
+          if (!std::isfinite(response.stress.norm()) ||
+              !std::isfinite(response.tangent.norm()))
+            {
+              std::ostringstream why;
+              const auto [young_modulus, entry] =
+                materials->young_modulus_of_cell(cell->material_id());
+              why << "has a stress or stiffness that is not finite: the "
+                  << entry << " (" << young_modulus << ") times the strain is beyond double precision; "
+                     "express the scene in other units";
+              if (data.rejection.empty())
+                data.rejection = why.str();
+              continue;
+            }
+          const Tensor<2, 2> P  = F * Tensor<2, 2>(response.stress);
+          const double       dV = evaluator.JxW(q) * thickness;
 
-        for (unsigned int i = 0; i < n_local; ++i)
-          internal_forces(local_dofs[i]) -= cell_rhs(i);
+          for (unsigned int i = 0; i < n_local; ++i)
+            {
+              const unsigned int c = component[i];
+              for (unsigned int a = 0; a < 2; ++a)
+                for (unsigned int b = a; b < 2; ++b)
+                  dE[i][a][b] =
+                    0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
+              D_dE[i] = response.tangent * dE[i];
+              cell_rhs(i) -= (P[c] * grad[i]) * dV;
+            }
+          for (unsigned int i = 0; i < n_local; ++i)
+            {
+              const Tensor<1, 2> S_grad_i =
+                Tensor<2, 2>(response.stress) * grad[i];
+              for (unsigned int j = 0; j <= i; ++j)
+                {
+                  double k = dE[j] * D_dE[i];
+                  if (component[i] == component[j])
+                    k += S_grad_i * grad[j];
+                  cell_matrix(i, j) += k * dV;
+                }
+            }
+        }
+      for (unsigned int i = 0; i < n_local; ++i)
+        for (unsigned int j = i + 1; j < n_local; ++j)
+          cell_matrix(i, j) = cell_matrix(j, i);
+    };
 
-        if (cell->at_boundary())
-          assemble_surface_loads(
-            cell, local_dofs, *evaluator, cell_matrix, cell_rhs);
+    // The first cell that makes the state inadmissible names the problem.
+    const auto add = [&](const CellContribution &data) {
+      auto       &cell_matrix = data.cell_matrix;
+      auto       &cell_rhs    = data.cell_rhs;
+      const auto &cell        = data.cell;
+      if (!data.rejection.empty())
+        {
+          if (admissible)
+            {
+              std::ostringstream message;
+              message << "cell " << cell->active_cell_index() << " of body '"
+                      << name() << "' at (" << cell->center()[0] << ", "
+                      << cell->center()[1] << ") " << data.rejection;
+              problem = message.str();
+            }
+          admissible = false;
+        }
+      for (unsigned int i = 0; i < n_local; ++i)
+        internal_forces(data.local_dofs[i]) -= cell_rhs(i);
 
-        for (unsigned int i = 0; i < n_local; ++i)
-          unconstrained_residual(local_dofs[i]) -= cell_rhs(i);
-        constraints.distribute_local_to_global(
-          cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
-      }
+      if (cell->at_boundary())
+        assemble_surface_loads(
+          cell, data.local_dofs, *boundary_evaluator, cell_matrix, cell_rhs);
+
+      for (unsigned int i = 0; i < n_local; ++i)
+        unconstrained_residual(data.local_dofs[i]) -= cell_rhs(i);
+      constraints.distribute_local_to_global(
+        cell_matrix, cell_rhs, data.local_dofs, tangent, system_rhs);
+    };
+
+    WorkStream::run(dofs.begin_active(),
+                    dofs.end(),
+                    integrate,
+                    add,
+                    Scratch(*element_space, n_local),
+                    CellContribution(n_local));
 
     Vector<double> point_loads(dofs.n_dofs());
     boundary_conditions->add_point_loads(dofs, *element_space, time, point_loads);
