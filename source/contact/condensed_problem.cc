@@ -325,38 +325,43 @@ namespace glissade
         // then each row of the products = sum_e r_e T(e, :) (axpys along
         // the rows of T). Every inner loop runs over contiguous memory;
         // gathering T(e) for each row and load instead took 3.5 times as
-        // long (the rings at 800 x 80, B-spline master).
-        std::vector<double> T(m * l_here, 0.);
-        for (std::size_t k = 0; k < l_here; ++k)
+        // long (the rings at 800 x 80, B-spline master). The loads go in
+        // blocks, so that T costs 2 m x 256 doubles, not m x loads.
+        constexpr std::size_t block = 256;
+        std::vector<double>   T(m * block), T_rows(m * block), row_product(block);
+        for (std::size_t k0 = 0; k0 < l_here; k0 += block)
           {
-            double *t = &T[k * m];
-            for (const auto &e : loads_here[k].second)
+            const std::size_t width = std::min(block, l_here - k0);
+            std::fill(T.begin(), T.end(), 0.);
+            for (std::size_t k = 0; k < width; ++k)
               {
-                const double *column = &C[std::size_t(e.index) * m];
-                for (std::size_t r = 0; r < m; ++r)
-                  t[r] += e.value * column[r];
+                double *t = &T[k * m];
+                for (const auto &e : loads_here[k0 + k].second)
+                  {
+                    const double *column = &C[std::size_t(e.index) * m];
+                    for (std::size_t r = 0; r < m; ++r)
+                      t[r] += e.value * column[r];
+                  }
               }
-          }
-        std::vector<double> T_rows(m * l_here);
-        constexpr std::size_t tile = 64;
-        for (std::size_t r0 = 0; r0 < m; r0 += tile)
-          for (std::size_t k0 = 0; k0 < l_here; k0 += tile)
-            for (std::size_t r = r0; r < std::min(m, r0 + tile); ++r)
-              for (std::size_t k = k0; k < std::min(l_here, k0 + tile); ++k)
-                T_rows[r * l_here + k] = T[k * m + r];
-        std::vector<double>().swap(T);
-        std::vector<double> row_product(l_here);
-        for (const auto &[i, row] : rows_here)
-          {
-            std::fill(row_product.begin(), row_product.end(), 0.);
-            for (const auto &e : row)
+            constexpr std::size_t tile = 64;
+            for (std::size_t r0 = 0; r0 < m; r0 += tile)
+              for (std::size_t k1 = 0; k1 < width; k1 += tile)
+                for (std::size_t r = r0; r < std::min(m, r0 + tile); ++r)
+                  for (std::size_t k = k1; k < std::min(width, k1 + tile); ++k)
+                    T_rows[r * width + k] = T[k * m + r];
+            for (const auto &[i, row] : rows_here)
               {
-                const double *t = &T_rows[std::size_t(e.index) * l_here];
-                for (std::size_t k = 0; k < l_here; ++k)
-                  row_product[k] += e.value * t[k];
+                std::fill(row_product.begin(), row_product.begin() + width, 0.);
+                for (const auto &e : row)
+                  {
+                    const double *t = &T_rows[std::size_t(e.index) * width];
+                    for (std::size_t k = 0; k < width; ++k)
+                      row_product[k] += e.value * t[k];
+                  }
+                for (std::size_t k = 0; k < width; ++k)
+                  products[i + loads_here[k0 + k].first * n_rows] +=
+                    row_product[k];
               }
-            for (std::size_t k = 0; k < l_here; ++k)
-              products[i + loads_here[k].first * n_rows] += row_product[k];
           }
       }
   }
