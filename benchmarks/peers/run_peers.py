@@ -1,0 +1,251 @@
+#!/usr/bin/python3
+"""glissade, GetFEM and CalculiX on the same problems, timed side by side.
+
+Every row is one problem at one size. The three programs run in turn,
+REPEATS times, the order rotating from one round to the next so that none
+always runs first (a cold cache) or last; the time of a run is the wall
+time of the whole process. A row reports the median of each program's
+times, glissade's median divided by each peer's, and each one's error
+against the closed form (Lame for the rings, Hertz for the disk).
+
+    /usr/bin/python3 benchmarks/peers/run_peers.py [--problems rings,hertz]
+        [--rings 40,80,160] [--hertz 0.01,0.005,0.0025,0.00125]
+        [--repeats 3] [--codes glissade,getfem,calculix]
+        [--glissade build/glissade] [--work /tmp/glissade-peers]
+
+It needs the peers (README.md): GetFEM's Python module and gmsh's live in
+Debian's /usr/bin/python3, CalculiX is `ccx`. Nothing here is a test: the
+figures go to doc/performance.md by hand, with the date and the commit.
+"""
+
+import argparse
+import csv
+import json
+import math
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+import problems  # noqa: E402  (the shared meshes and closed forms)
+
+PYTHON = "/usr/bin/python3"
+
+
+# Every program may use both cores: CalculiX's SPOOLES solver and its
+# element loops run on one thread unless told otherwise.
+BOTH_CORES = dict(os.environ, OMP_NUM_THREADS="2",
+                  CCX_NPROC_EQUATION_SOLVER="2", CCX_NPROC_RESULTS="2",
+                  CCX_NPROC_STIFFNESS="2")
+
+
+def timed(command, cwd, log):
+    """Wall time of one whole process; its output goes to log."""
+    with open(log, "w") as out:
+        start = time.perf_counter()
+        result = subprocess.run(command, cwd=cwd, stdout=out,
+                                stderr=subprocess.STDOUT, env=BOTH_CORES)
+        elapsed = time.perf_counter() - start
+    if result.returncode != 0:
+        sys.exit(f"{' '.join(command)} failed (exit {result.returncode}); "
+                 f"see {log}")
+    return elapsed
+
+
+def last_json(log):
+    with open(log) as f:
+        lines = [line for line in f.read().splitlines() if line.strip()]
+    return json.loads(lines[-1])
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+# ----------------------------------------------------------------- glissade
+def glissade_rings_command(glissade, n, out):
+    load = problems.ring_nodal_force(n)
+    return [glissade, os.path.join(HERE, "glissade_rings.prm"),
+            "--set", f"Body inner/Mesh/Subdivisions={n}, {n // 10}",
+            "--set", f"Body outer/Mesh/Subdivisions={n}, {n // 10}",
+            "--set", "Body outer/Boundary conditions/Nodal loads=outer: "
+                     f"-{load!r}*x/sqrt(x^2+y^2)*t, -{load!r}*y/sqrt(x^2+y^2)*t",
+            "--set", f"Output/Directory={out}"]
+
+
+def glissade_hertz_command(glissade, mesh, out):
+    return [glissade, os.path.join(HERE, "glissade_hertz.prm"),
+            "--set", f"Body disk/Mesh/File={mesh}",
+            "--set", f"Output/Directory={out}"]
+
+
+def glissade_dofs(out):
+    """The dof count of the summary's first line ("..., 10880 dofs, ...")."""
+    with open(os.path.join(out, "summary.txt")) as f:
+        words = f.readline().replace(",", " ").split()
+    return int(words[words.index("dofs") - 1])
+
+
+def glissade_rings_result(out):
+    last = read_csv(os.path.join(out, "history.csv"))[-1]
+    # u_r at the four supported nodes of r = 2 (the field is axisymmetric).
+    u_r = (float(last["outer_ux_2_0"]) + float(last["outer_uy_0_2"])
+           - float(last["outer_ux_m2_0"]) - float(last["outer_uy_0_m2"])) / 4
+    table = read_csv(last_contact_table(out, "interface"))
+    normal = sum(float(row["r_n"]) for row in table)
+    return {"dofs": glissade_dofs(out), "u_r2": u_r,
+            "interface_pressure": normal / (2 * math.pi * 1.25)}
+
+
+def last_contact_table(out, pair):
+    tables = sorted(f for f in os.listdir(out)
+                    if f.startswith(f"contact-{pair}-") and f.endswith(".csv"))
+    return os.path.join(out, tables[-1])
+
+
+def glissade_hertz_result(out):
+    table = read_csv(last_contact_table(out, "flat"))
+    x = [float(row["X"]) for row in table]
+    force = [float(row["r_n"]) for row in table]
+    p0, a, P = problems.hertz_figures_from_nodal_forces(x, force)
+    return {"dofs": glissade_dofs(out), "P": P, "p0": p0, "a": a}
+
+
+# -------------------------------------------------------------------- rows
+def rings_row(args, n):
+    work = os.path.join(args.work, f"rings-{n}")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    ccx_dir = os.path.join(work, "calculix")
+    subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "rings",
+                    str(n), ccx_dir], check=True)
+    runs = {
+        "glissade": (glissade_rings_command(args.glissade, n,
+                                            os.path.join(work, "glissade")),
+                     work),
+        "getfem": ([PYTHON, os.path.join(HERE, "getfem_rings.py"), str(n),
+                    "--out", os.path.join(work, "getfem")], work),
+        "calculix": (["ccx", "-i", "job"], ccx_dir),
+    }
+    runs = {code: run for code, run in runs.items() if code in args.codes}
+    times = race(runs, args.repeats, work)
+    results = {
+        "glissade": lambda: glissade_rings_result(os.path.join(work, "glissade")),
+        "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
+        "calculix": lambda: read_calculix(["rings", str(n), ccx_dir]),
+    }
+    results = {code: read() for code, read in results.items() if code in runs}
+    reference = problems.lame_u_r2()
+    errors = {code: (r["u_r2"] - reference) / abs(reference)
+              for code, r in results.items()}
+    return f"rings {n}x{n // 10}", times, results, errors
+
+
+def hertz_row(args, h):
+    work = os.path.join(args.work, f"hertz-{h}")
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    mesh = os.path.join(work, "hertz.msh")
+    problems.hertz_mesh(h, mesh)
+    ccx_dir = os.path.join(work, "calculix")
+    subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "hertz",
+                    str(h), ccx_dir, "--mesh", mesh], check=True)
+    runs = {
+        "glissade": (glissade_hertz_command(args.glissade, mesh,
+                                            os.path.join(work, "glissade")),
+                     work),
+        "getfem": ([PYTHON, os.path.join(HERE, "getfem_hertz.py"), str(h),
+                    "--mesh", mesh, "--out", os.path.join(work, "getfem")],
+                   work),
+        "calculix": (["ccx", "-i", "job"], ccx_dir),
+    }
+    runs = {code: run for code, run in runs.items() if code in args.codes}
+    times = race(runs, args.repeats, work)
+    results = {
+        "glissade": lambda: glissade_hertz_result(os.path.join(work, "glissade")),
+        "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
+        "calculix": lambda: read_calculix(["hertz", str(h), ccx_dir]),
+    }
+    results = {code: read() for code, read in results.items() if code in runs}
+    errors = {}
+    for code, r in results.items():
+        p0, a = problems.hertz_reference(r["P"])
+        errors[code] = ((r["p0"] - p0) / p0, (r["a"] - a) / a)
+    return f"hertz h={h}", times, results, errors
+
+
+def read_calculix(arguments):
+    output = subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"),
+                             "read"] + arguments, check=True,
+                            capture_output=True, text=True).stdout
+    return json.loads(output.strip().splitlines()[-1])
+
+
+def race(runs, repeats, work):
+    """Each program REPEATS times, the order rotating every round."""
+    names = list(runs)
+    times = {name: [] for name in names}
+    for k in range(repeats):
+        order = names[k % len(names):] + names[:k % len(names)]
+        for name in order:
+            command, cwd = runs[name]
+            times[name].append(timed(command, cwd,
+                                     os.path.join(work, f"{name}.log")))
+    return {name: statistics.median(t) for name, t in times.items()}
+
+
+def print_row(label, times, results, errors, problem):
+    print(f"\n{label}")
+    for code in times:
+        error = errors[code]
+        if problem == "rings":
+            figure = f"u_r(2) {100 * error:+.3f} %"
+        else:
+            figure = (f"P {results[code]['P']:.4f}, p0 {100 * error[0]:+.2f} %,"
+                      f" a {100 * error[1]:+.2f} %")
+        print(f"  {code:9s} {times[code]:7.2f} s  dofs {results[code]['dofs']}"
+              f"  {figure}")
+    names = {"getfem": "GetFEM", "calculix": "CalculiX"}
+    if "glissade" in times:
+        print("  " + ", ".join(
+            f"glissade / {names[peer]} {times['glissade'] / times[peer]:.2f}"
+            for peer in ("getfem", "calculix") if peer in times))
+    sys.stdout.flush()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--problems", default="rings,hertz")
+    parser.add_argument("--rings", default="40,80,160")
+    parser.add_argument("--hertz", default="0.01,0.005,0.0025,0.00125")
+    parser.add_argument("--repeats", type=int, default=3)
+    parser.add_argument("--codes", default="glissade,getfem,calculix",
+                        help="the programs to run (GetFEM takes more than "
+                             "half an hour on the 1600 rings)")
+    parser.add_argument("--glissade",
+                        default=os.path.join(ROOT, "build", "glissade"))
+    parser.add_argument("--work", default="/tmp/glissade-peers")
+    args = parser.parse_args()
+    args.glissade = os.path.abspath(args.glissade)
+    args.codes = args.codes.split(",")
+    if "calculix" in args.codes and not shutil.which("ccx"):
+        sys.exit("ccx not found: apt-get install calculix-ccx (README.md)")
+    selected = args.problems.split(",")
+    print(f"median of {args.repeats} runs each, whole process, wall time")
+    if "rings" in selected:
+        for n in (int(v) for v in args.rings.split(",")):
+            print_row(*rings_row(args, n), "rings")
+    if "hertz" in selected:
+        for h in (float(v) for v in args.hertz.split(",")):
+            print_row(*hertz_row(args, h), "hertz")
+
+
+if __name__ == "__main__":
+    main()
