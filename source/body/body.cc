@@ -1,8 +1,7 @@
+#include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-
-#include <deal.II/base/work_stream.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
