@@ -119,10 +119,23 @@ def glissade_hertz_result(out):
 
 
 # -------------------------------------------------------------------- rows
-def rings_row(args, n):
-    work = os.path.join(args.work, f"rings-{n}")
+def fresh_folder(args, name):
+    work = os.path.join(args.work, name)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
+    return work
+
+
+def run_and_read(args, work, runs, readers):
+    """Race the selected programs, then read each one's figures."""
+    runs = {code: run for code, run in runs.items() if code in args.codes}
+    times = race(runs, args.repeats, work)
+    return times, {code: read() for code, read in readers.items()
+                   if code in runs}
+
+
+def rings_row(args, n):
+    work = fresh_folder(args, f"rings-{n}")
     ccx_dir = os.path.join(work, "calculix")
     subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "rings",
                     str(n), ccx_dir], check=True)
@@ -134,24 +147,21 @@ def rings_row(args, n):
                     "--out", os.path.join(work, "getfem")], work),
         "calculix": (["ccx", "-i", "job"], ccx_dir),
     }
-    runs = {code: run for code, run in runs.items() if code in args.codes}
-    times = race(runs, args.repeats, work)
-    results = {
+    times, results = run_and_read(args, work, runs, {
         "glissade": lambda: glissade_rings_result(os.path.join(work, "glissade")),
         "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
         "calculix": lambda: read_calculix(["rings", str(n), ccx_dir]),
-    }
-    results = {code: read() for code, read in results.items() if code in runs}
-    reference = problems.lame_u_r2()
-    errors = {code: (r["u_r2"] - reference) / abs(reference)
+    })
+    u_lame = problems.lame_u_r2()
+    p_lame = problems.lame_interface_pressure()
+    errors = {code: ((r["u_r2"] - u_lame) / abs(u_lame),
+                     (r["interface_pressure"] - p_lame) / p_lame)
               for code, r in results.items()}
     return f"rings {n}x{n // 10}", times, results, errors
 
 
 def hertz_row(args, h):
-    work = os.path.join(args.work, f"hertz-{h}")
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
+    work = fresh_folder(args, f"hertz-{h}")
     mesh = os.path.join(work, "hertz.msh")
     problems.hertz_mesh(h, mesh)
     ccx_dir = os.path.join(work, "calculix")
@@ -166,14 +176,11 @@ def hertz_row(args, h):
                    work),
         "calculix": (["ccx", "-i", "job"], ccx_dir),
     }
-    runs = {code: run for code, run in runs.items() if code in args.codes}
-    times = race(runs, args.repeats, work)
-    results = {
+    times, results = run_and_read(args, work, runs, {
         "glissade": lambda: glissade_hertz_result(os.path.join(work, "glissade")),
         "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
         "calculix": lambda: read_calculix(["hertz", str(h), ccx_dir]),
-    }
-    results = {code: read() for code, read in results.items() if code in runs}
+    })
     errors = {}
     for code, r in results.items():
         p0, a = problems.hertz_reference(r["P"])
@@ -206,7 +213,8 @@ def print_row(label, times, results, errors, problem):
     for code in times:
         error = errors[code]
         if problem == "rings":
-            figure = f"u_r(2) {100 * error:+.3f} %"
+            figure = (f"u_r(2) {100 * error[0]:+.3f} %, interface pressure "
+                      f"{100 * error[1]:+.3f} %")
         else:
             figure = (f"P {results[code]['P']:.4f}, p0 {100 * error[0]:+.2f} %,"
                       f" a {100 * error[1]:+.2f} %")

@@ -324,7 +324,7 @@ namespace glissade
         // the columns of C), turned over so that a row of T is contiguous,
         // then each row of the products = sum_e r_e T(e, :) (axpys along
         // the rows of T). Every inner loop runs over contiguous memory;
-        // gathering T(e) for each row and load instead took 3.5 times as
+        // gathering T(e) for each row and load instead took 1.6 times as
         // long (the rings at 800 x 80, B-spline master). The loads go in
         // blocks, so that T costs 2 m x 256 doubles, not m x loads.
         constexpr std::size_t block = 256;

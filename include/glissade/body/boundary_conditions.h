@@ -96,7 +96,8 @@ namespace glissade
     /**
      * Resolves "left" or "point(x, y)"; `entry` names the .prm entry. A point
      * must be a mesh vertex, or, if `allow_face_point`, lie on a straight
-     * boundary face.
+     * boundary face. `known_diameter`, the mesh's if the caller has it
+     * (0: computed here), scales the tolerance of "on a vertex".
      */
     static Location
     resolve(const std::string      &location,
