@@ -1,7 +1,7 @@
 // Case 3 (paper section 4.3): the concentric rings, shortened to one
 // element of rotation (the spread is periodic with the element).
 
-#include <glissade/study/case3_study.h>
+#include <paper_studies/case3_study.h>
 
 #include "test_tools.h"
 

@@ -4,7 +4,7 @@
 // a history (a smooth curve's second differences shrink like the square of
 // the increment; a jump in the slope does not).
 
-#include <glissade/study/contact_case_study.h>
+#include <paper_studies/contact_case_study.h>
 
 #include "test_tools.h"
 

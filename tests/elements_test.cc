@@ -1,7 +1,6 @@
 // Element spaces: dof counts, convergence rates on a manufactured solution,
 // and the paper's static test of figs 9-11.
 
-#include <glissade/base/config.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/io/plotting.h>

@@ -1,6 +1,6 @@
 // The friction study (issue 22): case 3's rings with Coulomb friction.
 
-#include <glissade/study/friction_study.h>
+#include <paper_studies/friction_study.h>
 
 #include "test_tools.h"
 

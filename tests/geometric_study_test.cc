@@ -10,7 +10,7 @@
 //   d^3X/dtheta^3, tangential on a circle) and O(h^3) in the normal.
 
 #include <glissade/contact/lagrange_edge_curve.h>
-#include <glissade/study/geometric_study.h>
+#include <paper_studies/geometric_study.h>
 
 #include "test_tools.h"
 

@@ -1,4 +1,4 @@
-#include <glissade/base/config.h>
+#include "source_tree.h"
 
 #include "test_tools.h"
 

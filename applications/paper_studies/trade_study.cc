@@ -6,9 +6,9 @@
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/io/plotting.h>
-#include <glissade/study/trade_measures.h>
-#include <glissade/study/study_progress.h>
-#include <glissade/study/trade_study.h>
+#include <paper_studies/trade_measures.h>
+#include <paper_studies/study_progress.h>
+#include <paper_studies/trade_study.h>
 
 #include <algorithm>
 #include <cmath>

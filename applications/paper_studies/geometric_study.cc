@@ -7,7 +7,7 @@
 #include <glissade/contact/lagrange_edge_curve.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/scene/scene_reader.h>
-#include <glissade/study/geometric_study.h>
+#include <paper_studies/geometric_study.h>
 #include <glissade/io/plotting.h>
 
 #include <cmath>

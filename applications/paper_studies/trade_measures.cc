@@ -3,10 +3,10 @@
 #include <glissade/base/input_error.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/study/case3_study.h>
-#include <glissade/study/contact_case_study.h>
-#include <glissade/study/geometric_study.h>
-#include <glissade/study/trade_measures.h>
+#include <paper_studies/case3_study.h>
+#include <paper_studies/contact_case_study.h>
+#include <paper_studies/geometric_study.h>
+#include <paper_studies/trade_measures.h>
 
 #include <algorithm>
 #include <cmath>

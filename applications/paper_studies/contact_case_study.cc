@@ -9,8 +9,8 @@
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/study/contact_case_study.h>
-#include <glissade/study/study_progress.h>
+#include <paper_studies/contact_case_study.h>
+#include <paper_studies/study_progress.h>
 
 #include <algorithm>
 #include <cmath>

@@ -10,11 +10,11 @@
 #include <glissade/base/text.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/study/case3_study.h>
-#include <glissade/study/contact_case_study.h>
-#include <glissade/study/friction_study.h>
-#include <glissade/study/geometric_study.h>
-#include <glissade/study/trade_study.h>
+#include <paper_studies/case3_study.h>
+#include <paper_studies/contact_case_study.h>
+#include <paper_studies/friction_study.h>
+#include <paper_studies/geometric_study.h>
+#include <paper_studies/trade_study.h>
 
 #include <cstring>
 #include <iostream>

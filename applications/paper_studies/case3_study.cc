@@ -8,8 +8,8 @@
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/study/case3_study.h>
-#include <glissade/study/study_progress.h>
+#include <paper_studies/case3_study.h>
+#include <paper_studies/study_progress.h>
 
 #include <algorithm>
 #include <cmath>
