@@ -17,6 +17,7 @@ int
 main(int argc, char **argv)
 {
   using namespace glissade;
+  using namespace dealii;
   if (argc != 3)
     {
       std::cerr << "usage: glissade_benchmark <prm/table1_beam.prm> <n_across>\n";

@@ -21,6 +21,7 @@
 namespace
 {
   using namespace glissade;
+  using namespace dealii;
 
   /**
    * At the converged state: the condensed problem formed with and without
@@ -63,6 +64,7 @@ int
 main(int argc, char **argv)
 {
   using namespace glissade;
+  using namespace dealii;
   const std::string mode = argc == 4 ? argv[3] : "";
   if (!(argc == 3 || (argc == 4 && (mode == "indenter" || mode == "faceted" ||
                                     mode == "bspline"))))

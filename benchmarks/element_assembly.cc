@@ -12,6 +12,7 @@ int
 main()
 {
   using namespace glissade;
+  using namespace dealii;
   std::printf("%-8s %8s %8s %14s %14s\n", "space", "cells", "dofs",
               "assembly/cell", "assembly/dof");
   for (const std::string space : {"q1", "q2", "q3", "q8", "q12", "hermite"})

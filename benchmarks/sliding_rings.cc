@@ -20,6 +20,7 @@ int
 main(int argc, char **argv)
 {
   using namespace glissade;
+  using namespace dealii;
   if (argc != 2)
     {
       std::fprintf(stderr, "usage: glissade_sliding_benchmark <case3_rings.prm>\n");

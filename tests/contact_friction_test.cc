@@ -12,6 +12,7 @@
 #include <iomanip>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

@@ -11,6 +11,7 @@
 #include <cmath>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

@@ -17,6 +17,7 @@
 #include <set>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

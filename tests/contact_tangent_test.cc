@@ -15,6 +15,7 @@
 #include <map>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

@@ -24,6 +24,7 @@
 #include <sstream>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

@@ -13,6 +13,7 @@
 #include <iomanip>
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

@@ -10,6 +10,7 @@
 #include "test_tools.h"
 
 using namespace glissade;
+using namespace dealii;
 using namespace glissade_tests;
 
 namespace

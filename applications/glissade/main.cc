@@ -41,6 +41,7 @@ int
 main(int argc, char **argv)
 {
   using namespace glissade;
+  using namespace dealii;
   if (argc < 2)
     {
       print_usage(std::cerr);

@@ -10,8 +10,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * What one run of a contact case (one scene, one discretisation) gives:
    * per-increment measures and the final vertex displacements of every
@@ -49,10 +47,10 @@ namespace glissade
      * pictures); the forces on the slave nodes that carry one.
      */
     std::vector<std::string>                             body_names;
-    std::vector<std::vector<Point<2>>>                   vertices;
-    std::vector<std::vector<Tensor<1, 2>>>               final_displacement;
+    std::vector<std::vector<dealii::Point<2>>>                   vertices;
+    std::vector<std::vector<dealii::Tensor<1, 2>>>               final_displacement;
     std::vector<std::vector<std::array<unsigned int, 4>>> cells;
-    std::vector<std::pair<Point<2>, Tensor<1, 2>>>       contact_forces;
+    std::vector<std::pair<dealii::Point<2>, dealii::Tensor<1, 2>>>       contact_forces;
   };
 
   /**

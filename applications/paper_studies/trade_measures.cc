@@ -14,6 +14,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** The element space of a discretisation label (Table 1). */

@@ -25,6 +25,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** One discretisation at one mesh parameter, and what it gave. */

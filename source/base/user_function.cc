@@ -8,6 +8,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   double
   checked_user_value(const double            value,
                      const std::string      &entry,

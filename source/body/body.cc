@@ -13,6 +13,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   Body::Body(const BodyDescription &description, const std::string &source)
     : description(description)
     , source(source)

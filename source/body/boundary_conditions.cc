@@ -14,6 +14,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** u(X) = R(angle(t)) (X - c) + c - X: a rigid rotation about c. */

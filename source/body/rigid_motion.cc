@@ -10,6 +10,8 @@ dsyev_(const char *jobz, const char *uplo, const int *n, double *a,
 
 namespace glissade
 {
+  using namespace dealii;
+
   std::string
   RigidMotion::describe(const double length) const
   {

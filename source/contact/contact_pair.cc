@@ -15,6 +15,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   ContactPair::ContactPair(const ContactDescription &description,
                            Body                     &slave,
                            Body                     *master,

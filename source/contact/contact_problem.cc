@@ -13,6 +13,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   ContactProblem::ContactProblem(
     const SceneDescription                   &scene,
     const std::vector<std::unique_ptr<Body>> &bodies,

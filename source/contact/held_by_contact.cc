@@ -5,6 +5,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   void
   check_free_motions_are_held(
     const std::vector<std::unique_ptr<Body>>        &bodies,

@@ -4,6 +4,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   // Each surface's factory, defined in the surface's own file.
   std::unique_ptr<MasterSurface>
   make_faceted_surface(const SurfaceContext &);

@@ -5,6 +5,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   void
   ElementSpace::setup(const DoFHandler<2> &, AffineConstraints<double> &)
   {}

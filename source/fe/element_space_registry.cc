@@ -6,6 +6,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   const std::vector<ElementSpaceRegistry::Entry> &
   ElementSpaceRegistry::entries()
   {

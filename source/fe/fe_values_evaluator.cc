@@ -2,6 +2,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   FEValuesEvaluator::FEValuesEvaluator(const Mapping<2>       &mapping,
                                        const FiniteElement<2> &fe,
                                        const Quadrature<2>    &cell_quadrature,

@@ -9,6 +9,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     using Vector2 = HermiteQuadrilateral::Vector;

@@ -6,6 +6,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   LagrangeSpace::LagrangeSpace(const unsigned int degree)
     : degree(degree)
     , fe(FE_Q<2>(degree), 2)

@@ -12,6 +12,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** Coefficient of x^power in the 1D Lagrange polynomial l_j on j/p. */

@@ -10,6 +10,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /**

@@ -8,6 +8,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** What each node's status is called in the table and coded in the VTU. */

@@ -7,6 +7,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /**

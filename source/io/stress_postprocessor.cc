@@ -4,6 +4,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   StressPostprocessor::StressPostprocessor(
     const BodyMaterials &materials,
     const unsigned int   components_per_displacement)

@@ -5,6 +5,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     PlaneHypothesis

@@ -8,6 +8,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   Material::Material(std::unique_ptr<HyperelasticLaw> law,
                      const PlaneHypothesis            hypothesis)
     : law(std::move(law))

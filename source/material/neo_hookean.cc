@@ -4,6 +4,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   NeoHookean::NeoHookean(const double lambda, const double mu)
     : lambda(lambda)
     , mu(mu)

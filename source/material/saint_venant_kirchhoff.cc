@@ -2,6 +2,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   SaintVenantKirchhoff::SaintVenantKirchhoff(const double lambda,
                                              const double mu)
     : lambda(lambda)

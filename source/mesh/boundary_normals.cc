@@ -2,6 +2,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   std::map<unsigned int, dealii::Tensor<1, 2>>
   boundary_vertex_normals(
     const dealii::Triangulation<2>                         &triangulation,

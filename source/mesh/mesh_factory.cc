@@ -20,6 +20,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   MeshLabels
   MeshFactory::create(const MeshDescription &description,
                       Triangulation<2>      &triangulation,

@@ -22,6 +22,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /**

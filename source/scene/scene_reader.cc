@@ -19,6 +19,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     /** The entries a material region may set; unset ones are the body's. */

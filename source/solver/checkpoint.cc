@@ -19,6 +19,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     // Raised when the layout of the file changes: an old file is refused.

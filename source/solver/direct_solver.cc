@@ -11,6 +11,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   namespace
   {
     void

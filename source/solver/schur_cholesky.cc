@@ -18,6 +18,8 @@ dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
 
 namespace glissade
 {
+  using namespace dealii;
+
   static_assert(std::is_same_v<SuiteSparse_long, long>,
                 "SchurCholesky hands long indices to CHOLMOD");
 

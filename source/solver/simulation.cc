@@ -24,6 +24,8 @@
 
 namespace glissade
 {
+  using namespace dealii;
+
   using progress_text::duration;
   using progress_text::time_left;
 

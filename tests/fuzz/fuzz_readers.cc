@@ -26,6 +26,7 @@
 #include <vector>
 
 using namespace glissade;
+using namespace dealii;
 
 namespace
 {

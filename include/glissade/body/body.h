@@ -93,14 +93,14 @@ namespace glissade
      * rank-one terms of its Newton matrix (theory.md, section 4.6), so no
      * spring is left in the answer.
      */
-    const std::vector<std::pair<types::global_dof_index, double>> &
+    const std::vector<std::pair<dealii::types::global_dof_index, double>> &
     regularization() const
     {
       return springs;
     }
 
     /** The tangent of the last assembly (benchmarks factorise it again). */
-    const SparseMatrix<double> &
+    const dealii::SparseMatrix<double> &
     tangent_matrix() const
     {
       return tangent;
@@ -115,7 +115,7 @@ namespace glissade
 
     /** Solves K du = rhs; constrained dofs get their prescribed increment. */
     void
-    solve(const Vector<double> &rhs, Vector<double> &increment) const;
+    solve(const dealii::Vector<double> &rhs, dealii::Vector<double> &increment) const;
 
     /**
      * The response to an external force vector f with the supports held:
@@ -123,7 +123,7 @@ namespace glissade
      * prescribed part. The contact compliance columns K^-1 H^T.
      */
     void
-    solve_homogeneous(const Vector<double> &force, Vector<double> &x) const;
+    solve_homogeneous(const dealii::Vector<double> &force, dealii::Vector<double> &x) const;
 
     /**
      * The dofs that contact may load (declared contact areas). When the
@@ -132,7 +132,7 @@ namespace glissade
      * contact dofs -- comes from the factorisation itself.
      */
     void
-    set_contact_dofs(const std::vector<types::global_dof_index> &contact_dofs);
+    set_contact_dofs(const std::vector<dealii::types::global_dof_index> &contact_dofs);
 
     /**
      * The compliance between contact dofs, the contact block of the body's
@@ -144,8 +144,8 @@ namespace glissade
      * kept for the current factorisation.
      */
     void
-    compliance_block(const std::vector<types::global_dof_index> &rows,
-                     const std::vector<types::global_dof_index> &columns,
+    compliance_block(const std::vector<dealii::types::global_dof_index> &rows,
+                     const std::vector<dealii::types::global_dof_index> &columns,
                      std::vector<double>                        &block);
 
     /**
@@ -153,42 +153,42 @@ namespace glissade
      * equilibrium residual includes them.
      */
     void
-    set_contact_forces(const Vector<double> &forces)
+    set_contact_forces(const dealii::Vector<double> &forces)
     {
       contact_forces = forces;
     }
-    const Vector<double> &
+    const dealii::Vector<double> &
     get_contact_forces() const
     {
       return contact_forces;
     }
 
     /** The boundary id of a named boundary; `entry` names the .prm entry. */
-    types::boundary_id
+    dealii::types::boundary_id
     boundary_id(const std::string &boundary, const std::string &entry) const;
 
     /** The displacement at the start of the current step. */
-    const Vector<double> &
+    const dealii::Vector<double> &
     stored_displacement() const
     {
       return stored_solution;
     }
 
-    const Vector<double> &
+    const dealii::Vector<double> &
     right_hand_side() const
     {
       return system_rhs;
     }
 
     void
-    update(const Vector<double> &increment);
+    update(const dealii::Vector<double> &increment);
 
     /**
      * Exchanges the displacement with u, without copying (a trial state;
      * see ContactProblem::activate_nodes_crossed_by).
      */
     void
-    swap_displacement(Vector<double> &u)
+    swap_displacement(dealii::Vector<double> &u)
     {
       solution.swap(u);
     }
@@ -198,7 +198,7 @@ namespace glissade
      * or driven): no force moves it.
      */
     bool
-    dof_is_prescribed(const types::global_dof_index dof) const;
+    dof_is_prescribed(const dealii::types::global_dof_index dof) const;
 
     /** Saves and restores the displacement (for cut-backs). */
     void
@@ -245,21 +245,21 @@ namespace glissade
     }
 
     /** Displacement at a mesh vertex given as "point(x, y)". */
-    Tensor<1, 2>
-    vertex_displacement(const Point<2> &point) const;
+    dealii::Tensor<1, 2>
+    vertex_displacement(const dealii::Point<2> &point) const;
 
     /**
      * The x and y value dofs of the mesh vertex at `point` (an input error
      * if there is none): found once, read at every increment (history).
      */
-    std::array<types::global_dof_index, 2>
-    vertex_value_dofs(const Point<2> &point) const;
+    std::array<dealii::types::global_dof_index, 2>
+    vertex_value_dofs(const dealii::Point<2> &point) const;
 
     /**
      * The displacement of every vertex of the mesh, indexed like
      * triangulation().get_vertices() (zero for unused vertices).
      */
-    std::vector<Tensor<1, 2>>
+    std::vector<dealii::Tensor<1, 2>>
     vertex_displacements() const;
 
     /** Largest nodal displacement norm over the body. */
@@ -270,7 +270,7 @@ namespace glissade
      * Sum of F_int - F_ext - F_contact over the dofs of a named boundary:
      * on supported dofs, the force the support exerts on the body.
      */
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     reaction(const std::string &boundary) const;
 
     /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
@@ -279,12 +279,12 @@ namespace glissade
               const unsigned int index,
               const std::string &compression = "fast") const;
 
-    const DoFHandler<2> &
+    const dealii::DoFHandler<2> &
     dof_handler() const
     {
       return dofs;
     }
-    const Triangulation<2> &
+    const dealii::Triangulation<2> &
     triangulation() const
     {
       return mesh;
@@ -299,7 +299,7 @@ namespace glissade
     {
       return materials->of_body();
     }
-    const Vector<double> &
+    const dealii::Vector<double> &
     displacement() const
     {
       return solution;
@@ -312,34 +312,34 @@ namespace glissade
 
   private:
     void
-    assemble_surface_loads(const typename DoFHandler<2>::active_cell_iterator
+    assemble_surface_loads(const typename dealii::DoFHandler<2>::active_cell_iterator
                                                    &cell,
-                           const std::vector<types::global_dof_index> &local_dofs,
+                           const std::vector<dealii::types::global_dof_index> &local_dofs,
                            CellEvaluator           &evaluator,
-                           FullMatrix<double>      &cell_matrix,
-                           Vector<double>          &cell_rhs) const;
+                           dealii::FullMatrix<double>      &cell_matrix,
+                           dealii::Vector<double>          &cell_rhs) const;
 
     const BodyDescription               description;
     std::string                         problem;
     const std::string                   source;
-    Triangulation<2>                    mesh;
+    dealii::Triangulation<2>                    mesh;
     BoundaryNames                       boundary_names;
     std::unique_ptr<ElementSpace>       element_space;
-    DoFHandler<2>                       dofs;
+    dealii::DoFHandler<2>                       dofs;
     std::unique_ptr<BodyMaterials>      materials;
     std::unique_ptr<BoundaryConditions> boundary_conditions;
     double                              reference_size = 1.;
     double                              time           = 0.;
 
-    AffineConstraints<double> element_constraints; // the space's own
-    AffineConstraints<double> constraints;         // plus Dirichlet data
-    SparsityPattern           sparsity;
-    SparseMatrix<double>      tangent;
+    dealii::AffineConstraints<double> element_constraints; // the space's own
+    dealii::AffineConstraints<double> constraints;         // plus Dirichlet data
+    dealii::SparsityPattern           sparsity;
+    dealii::SparseMatrix<double>      tangent;
     DirectSolver              factorization;
 
     /** See free_rigid_motions() and regularization(). */
     std::vector<RigidMotion>                                free_motions;
-    std::vector<std::pair<types::global_dof_index, double>> springs;
+    std::vector<std::pair<dealii::types::global_dof_index, double>> springs;
 
     /**
      * The springs' dofs: among the contact dofs, one per free motion, the
@@ -347,7 +347,7 @@ namespace glissade
      * there).
      */
     void
-    choose_spring_dofs(const std::vector<types::global_dof_index> &contact_dofs);
+    choose_spring_dofs(const std::vector<dealii::types::global_dof_index> &contact_dofs);
 
     /**
      * Per contact dof, the free unknowns it follows (itself, or the entries
@@ -358,14 +358,14 @@ namespace glissade
     std::vector<std::vector<std::pair<long, double>>>       contact_rows;
     std::vector<std::vector<std::pair<long, double>>>       contact_rows_resolved;
     /** solve_homogeneous(e_dof) of the current factorisation, by dof. */
-    std::map<types::global_dof_index, Vector<double>>       compliance_columns;
+    std::map<dealii::types::global_dof_index, dealii::Vector<double>>       compliance_columns;
 
-    Vector<double> solution;
-    Vector<double> stored_solution;
-    Vector<double> system_rhs;       // F_ext - F_int, constrained
-    Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
-    Vector<double> contact_forces;         // H^T r, all dofs
-    Vector<double> stored_contact_forces;
+    dealii::Vector<double> solution;
+    dealii::Vector<double> stored_solution;
+    dealii::Vector<double> system_rhs;       // F_ext - F_int, constrained
+    dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
+    dealii::Vector<double> contact_forces;         // H^T r, all dofs
+    dealii::Vector<double> stored_contact_forces;
     double         internal_force_norm = 0.;
     double         external_force_norm = 0.;
   };

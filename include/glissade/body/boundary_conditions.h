@@ -26,9 +26,9 @@ namespace glissade
   struct Location
   {
     bool               is_vertex = false;
-    types::boundary_id boundary  = 0;
+    dealii::types::boundary_id boundary  = 0;
     unsigned int       vertex    = 0;
-    Point<2>           point;
+    dealii::Point<2>           point;
     /** A point inside a straight boundary face (point loads only). */
     bool         on_face     = false;
     unsigned int cell_index  = 0; // active cell index
@@ -46,7 +46,7 @@ namespace glissade
   public:
     BoundaryConditions(const BodyDescription  &body,
                        const BoundaryNames    &boundary_names,
-                       const Triangulation<2> &triangulation);
+                       const dealii::Triangulation<2> &triangulation);
 
     /**
      * Fills `constraints` for a Newton correction: the element space's own
@@ -55,12 +55,12 @@ namespace glissade
      * of an increment.
      */
     void
-    make_constraints(const DoFHandler<2>             &dof_handler,
+    make_constraints(const dealii::DoFHandler<2>             &dof_handler,
                      const ElementSpace              &space,
                      const double                     time,
-                     const Vector<double>            &current_displacement,
-                     const AffineConstraints<double> &element_constraints,
-                     AffineConstraints<double>       &constraints) const;
+                     const dealii::Vector<double>            &current_displacement,
+                     const dealii::AffineConstraints<double> &element_constraints,
+                     dealii::AffineConstraints<double>       &constraints) const;
 
     /**
      * How much each Dirichlet relation would be violated by each motion of
@@ -69,22 +69,22 @@ namespace glissade
      * leaves every row zero is one the supports do not hold.
      */
     std::vector<std::vector<double>>
-    support_rows(const DoFHandler<2>                   &dof_handler,
+    support_rows(const dealii::DoFHandler<2>                   &dof_handler,
                  const ElementSpace                    &space,
                  const std::array<RigidMotion, 3>      &basis) const;
 
     /** Point loads at time t, as a vector of nodal forces. */
     void
-    add_point_loads(const DoFHandler<2> &dof_handler,
+    add_point_loads(const dealii::DoFHandler<2> &dof_handler,
                     const ElementSpace  &space,
                     const double         time,
-                    Vector<double>      &external_forces) const;
+                    dealii::Vector<double>      &external_forces) const;
 
     struct SurfaceLoad
     {
-      types::boundary_id                 boundary;
+      dealii::types::boundary_id                 boundary;
       bool                               is_pressure;
-      std::shared_ptr<Function<2>> function; // time set by the caller
+      std::shared_ptr<dealii::Function<2>> function; // time set by the caller
     };
 
     const std::vector<SurfaceLoad> &
@@ -102,21 +102,21 @@ namespace glissade
     static Location
     resolve(const std::string      &location,
             const BoundaryNames    &boundary_names,
-            const Triangulation<2> &triangulation,
+            const dealii::Triangulation<2> &triangulation,
             const std::string      &body_name,
             const std::string      &entry,
             const bool              allow_face_point = false,
             const double            known_diameter   = 0.);
 
     /** The two global value dofs (x, y) at vertex v of a cell. */
-    static std::array<types::global_dof_index, 2>
-    cell_vertex_dofs(const typename DoFHandler<2>::active_cell_iterator &cell,
+    static std::array<dealii::types::global_dof_index, 2>
+    cell_vertex_dofs(const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
                      const unsigned int                                  v,
                      const ElementSpace                                 &space);
 
     /** The two global value dofs (x, y) at a mesh vertex. */
-    static std::array<types::global_dof_index, 2>
-    vertex_dofs(const DoFHandler<2> &dof_handler,
+    static std::array<dealii::types::global_dof_index, 2>
+    vertex_dofs(const dealii::DoFHandler<2> &dof_handler,
                 const ElementSpace  &space,
                 const unsigned int   vertex);
 
@@ -126,22 +126,22 @@ namespace glissade
       Location                          where;
       std::array<bool, 2>               components;
       bool                              all_derivatives;
-      std::shared_ptr<Function<2>>      displacement; // 2 components
+      std::shared_ptr<dealii::Function<2>>      displacement; // 2 components
       /** n or t supports: each node and the direction held there. */
-      std::vector<std::pair<unsigned int, Tensor<1, 2>>> directed_vertices;
+      std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>> directed_vertices;
     };
 
     /** The nodes of a location and the (unit) direction d with d . u = 0. */
-    static std::vector<std::pair<unsigned int, Tensor<1, 2>>>
+    static std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>>
     support_directions(const Location                       &where,
                        const DirichletDescription::Direction direction,
-                       const Triangulation<2>               &tria,
+                       const dealii::Triangulation<2>               &tria,
                        const std::string                    &body_name,
                        const std::string                    &entry);
     struct PointLoad
     {
       Location                           where;
-      std::shared_ptr<Function<2>> force;
+      std::shared_ptr<dealii::Function<2>> force;
     };
 
     /**
@@ -149,12 +149,12 @@ namespace glissade
      * vertex's dofs walks the cells, which must not happen at every
      * assembly.
      */
-    std::array<types::global_dof_index, 2>
-    cached_vertex_dofs(const DoFHandler<2> &dof_handler,
+    std::array<dealii::types::global_dof_index, 2>
+    cached_vertex_dofs(const dealii::DoFHandler<2> &dof_handler,
                        const ElementSpace  &space,
                        const unsigned int   vertex) const;
 
-    mutable std::map<unsigned int, std::array<types::global_dof_index, 2>>
+    mutable std::map<unsigned int, std::array<dealii::types::global_dof_index, 2>>
       vertex_dof_cache;
 
     std::vector<DirichletItem> dirichlet_items;

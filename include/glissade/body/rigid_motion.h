@@ -9,8 +9,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * An infinitesimal rigid motion of the plane,
    * v(X) = translation + rotation e3 x (X - center).
@@ -20,15 +18,15 @@ namespace glissade
    */
   struct RigidMotion
   {
-    Tensor<1, 2> translation;
+    dealii::Tensor<1, 2> translation;
     double       rotation = 0.;
-    Point<2>     center;
+    dealii::Point<2>     center;
 
-    Tensor<1, 2>
-    at(const Point<2> &X) const
+    dealii::Tensor<1, 2>
+    at(const dealii::Point<2> &X) const
     {
       return translation +
-             rotation * Tensor<1, 2>({-(X[1] - center[1]), X[0] - center[0]});
+             rotation * dealii::Tensor<1, 2>({-(X[1] - center[1]), X[0] - center[0]});
     }
 
     /**
@@ -46,7 +44,7 @@ namespace glissade
    * combinations of them compare.
    */
   std::array<RigidMotion, 3>
-  rigid_motion_basis(const Point<2> &center, const double length);
+  rigid_motion_basis(const dealii::Point<2> &center, const double length);
 
   /** sum_j coefficients[j] basis[j]. */
   RigidMotion

@@ -20,8 +20,8 @@ namespace glissade
   struct ContactNode
   {
     unsigned int                           vertex;
-    std::array<types::global_dof_index, 2> dofs;
-    Point<2>                               reference_position;
+    std::array<dealii::types::global_dof_index, 2> dofs;
+    dealii::Point<2>                               reference_position;
 
     bool active    = false;
     bool projected = false; // has a counterpart on the master
@@ -29,7 +29,7 @@ namespace glissade
     int          segment = -1;
     double       s       = 0.;
     double       gap     = 0.;
-    Tensor<1, 2> tangent, normal;
+    dealii::Tensor<1, 2> tangent, normal;
     /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
     std::array<double, 2>         reaction = {{0., 0.}};
     BiPotentialSolver::NodeStatus status   = BiPotentialSolver::NodeStatus::open;
@@ -71,7 +71,7 @@ namespace glissade
       status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
     }
 
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     force() const
     {
       return reaction[0] * tangent + reaction[1] * normal;
@@ -98,7 +98,7 @@ namespace glissade
     ContactPair(const ContactDescription &description,
                 Body                     &slave,
                 Body                     *master,
-                TimerOutput              &timer);
+                dealii::TimerOutput              &timer);
 
     ~ContactPair();
 
@@ -133,8 +133,8 @@ namespace glissade
      */
     struct InitialContact
     {
-      Point<2>     position;
-      Tensor<1, 2> normal, tangent;
+      dealii::Point<2>     position;
+      dealii::Tensor<1, 2> normal, tangent;
     };
 
     /**
@@ -185,7 +185,7 @@ namespace glissade
     }
 
     /** The boundary ids of the slave boundary (Slave boundary lists names). */
-    const std::set<types::boundary_id> &
+    const std::set<dealii::types::boundary_id> &
     slave_boundary_ids() const
     {
       return slave_ids;
@@ -212,16 +212,16 @@ namespace glissade
      * slave nodes' dofs, or the master surface's (with the Hermite
      * derivatives). The bodies eliminate these last in their factorisation.
      */
-    std::vector<types::global_dof_index>
+    std::vector<dealii::types::global_dof_index>
     contact_dofs(const Body &body) const;
 
     /** Sum of the forces on the slave nodes (global frame). */
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     total_force() const;
 
     /** The slave node at a reference position (for history output). */
     const ContactNode &
-    node_at(const Point<2> &reference_position) const;
+    node_at(const dealii::Point<2> &reference_position) const;
 
     /**
      * The contact forces on the dofs at fixed reactions, F = sum_k
@@ -229,7 +229,7 @@ namespace glissade
      * projected last): body 0 the slave, 1 the master. For checking the
      * contact tangent against finite differences.
      */
-    std::array<Vector<double>, 2>
+    std::array<dealii::Vector<double>, 2>
     contact_forces() const;
 
   private:
@@ -253,7 +253,7 @@ namespace glissade
      */
     void
     check_obstacle_faces_slave(
-      const std::map<unsigned int, Tensor<1, 2>> &outward_normal);
+      const std::map<unsigned int, dealii::Tensor<1, 2>> &outward_normal);
 
     /** False for a node that no reaction can move (see the definition). */
     bool
@@ -262,13 +262,13 @@ namespace glissade
     const ContactDescription       description;
     Body                          &slave_body;
     Body                          *master_body;
-    TimerOutput                   &timer;
+    dealii::TimerOutput                   &timer;
     std::unique_ptr<MasterSurface> master_surface;
     std::vector<ContactNode>       slave_nodes;
     std::vector<InitialContact>    contacts_at_start;
-    std::set<types::boundary_id>   slave_ids;
+    std::set<dealii::types::boundary_id>   slave_ids;
     /** The slave boundary's outward normal at each slave vertex (not unit). */
-    std::map<unsigned int, Tensor<1, 2>> slave_outward_normal;
+    std::map<unsigned int, dealii::Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */
     double step_start = 0., step_end = 0.;
   };

@@ -27,7 +27,7 @@ namespace glissade
     /** `timer` receives the detection, W and local solve sections. */
     ContactProblem(const SceneDescription                   &scene,
                    const std::vector<std::unique_ptr<Body>> &bodies,
-                   TimerOutput                              &timer);
+                   dealii::TimerOutput                              &timer);
 
     bool
     empty() const
@@ -46,7 +46,7 @@ namespace glissade
      * then cut back).
      */
     bool
-    correct(std::vector<Vector<double>> &increments);
+    correct(std::vector<dealii::Vector<double>> &increments);
 
     /**
      * After the bodies took the Newton step: re-projects and linearises
@@ -76,7 +76,7 @@ namespace glissade
      * fall through its support in one iteration. The state is restored.
      */
     unsigned int
-    activate_nodes_crossed_by(const std::vector<Vector<double>> &free_step);
+    activate_nodes_crossed_by(const std::vector<dealii::Vector<double>> &free_step);
 
     /**
      * The active nodes of every pair as the condensed problem sees them
@@ -108,7 +108,7 @@ namespace glissade
     std::unique_ptr<CondensedProblem>
     solve_local_problem(const std::vector<ContactNode *>        &active,
                         const ActiveNodes                       &nodes,
-                        const std::vector<Vector<double>>       &predictor,
+                        const std::vector<dealii::Vector<double>>       &predictor,
                         std::vector<BiPotentialSolver::Vector2> &r);
 
     /**
@@ -132,7 +132,7 @@ namespace glissade
     body_index(const Body *body) const;
 
     const std::vector<std::unique_ptr<Body>> &bodies;
-    TimerOutput                              &timer;
+    dealii::TimerOutput                              &timer;
     std::vector<std::unique_ptr<ContactPair>> pairs;
     BiPotentialSolver::Settings               solver_settings;
     BiPotentialSolver::Result                 result;

@@ -8,8 +8,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * What assembly sees of an element space on one cell or one boundary face:
    * physical shape values and gradients at quadrature points, the weights,
@@ -23,7 +21,7 @@ namespace glissade
   class CellEvaluator
   {
   public:
-    using CellIterator = typename DoFHandler<2>::active_cell_iterator;
+    using CellIterator = typename dealii::DoFHandler<2>::active_cell_iterator;
 
     virtual ~CellEvaluator() = default;
 
@@ -57,35 +55,35 @@ namespace glissade
     virtual double
     shape_value(const unsigned int i, const unsigned int q) const = 0;
 
-    virtual Tensor<1, 2>
+    virtual dealii::Tensor<1, 2>
     shape_grad(const unsigned int i, const unsigned int q) const = 0;
 
     /** Reference-configuration measure times quadrature weight. */
     virtual double
     JxW(const unsigned int q) const = 0;
 
-    virtual Point<2>
+    virtual dealii::Point<2>
     quadrature_point(const unsigned int q) const = 0;
 
     /** Outward unit normal in the reference configuration (faces only). */
-    virtual Tensor<1, 2>
+    virtual dealii::Tensor<1, 2>
     normal_vector(const unsigned int q) const = 0;
 
     /** The displacement at point q, from the cell's dof values. */
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     value(const std::vector<double> &dof_values, const unsigned int q) const
     {
-      Tensor<1, 2> u;
+      dealii::Tensor<1, 2> u;
       for (unsigned int i = 0; i < dof_values.size(); ++i)
         u[displacement_component(i)] += dof_values[i] * shape_value(i, q);
       return u;
     }
 
     /** The displacement gradient at point q, from the cell's dof values. */
-    Tensor<2, 2>
+    dealii::Tensor<2, 2>
     gradient(const std::vector<double> &dof_values, const unsigned int q) const
     {
-      Tensor<2, 2> H;
+      dealii::Tensor<2, 2> H;
       for (unsigned int i = 0; i < dof_values.size(); ++i)
         H[displacement_component(i)] += dof_values[i] * shape_grad(i, q);
       return H;

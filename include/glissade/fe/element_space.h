@@ -16,8 +16,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * One Dirichlet condition on one dof: u_dof + sum_k c_k u_{dof_k} = value.
    * Plain nodal values have no `others`; the Hermite element's tangential
@@ -25,8 +23,8 @@ namespace glissade
    */
   struct DofRelation
   {
-    types::global_dof_index                                    dof;
-    std::vector<std::pair<types::global_dof_index, double>> others;
+    dealii::types::global_dof_index                                    dof;
+    std::vector<std::pair<dealii::types::global_dof_index, double>> others;
     double                                                     value;
   };
 
@@ -50,7 +48,7 @@ namespace glissade
     name() const = 0;
 
     /** The element whose dofs the DoFHandler distributes. */
-    virtual const FiniteElement<2> &
+    virtual const dealii::FiniteElement<2> &
     finite_element() const = 0;
 
     /**
@@ -59,10 +57,10 @@ namespace glissade
      * (serendipity interiors). The default does nothing.
      */
     virtual void
-    setup(const DoFHandler<2> &dof_handler, AffineConstraints<double> &element_constraints);
+    setup(const dealii::DoFHandler<2> &dof_handler, dealii::AffineConstraints<double> &element_constraints);
 
     /** The geometry, for output and boundary interpolation. */
-    virtual const Mapping<2> &
+    virtual const dealii::Mapping<2> &
     mapping() const = 0;
 
     /**
@@ -92,9 +90,9 @@ namespace glissade
      * none). The default interpolates g at the support points.
      */
     virtual void
-    boundary_relations(const DoFHandler<2>       &dof_handler,
-                       const types::boundary_id   boundary,
-                       const Function<2>         &g,
+    boundary_relations(const dealii::DoFHandler<2>       &dof_handler,
+                       const dealii::types::boundary_id   boundary,
+                       const dealii::Function<2>         &g,
                        const std::array<bool, 2> &components,
                        const bool                 all_derivatives,
                        std::vector<DofRelation>  &relations) const;

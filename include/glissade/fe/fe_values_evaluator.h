@@ -13,10 +13,10 @@ namespace glissade
   class FEValuesEvaluator : public CellEvaluator
   {
   public:
-    FEValuesEvaluator(const Mapping<2>         &mapping,
-                      const FiniteElement<2>   &fe,
-                      const Quadrature<2>      &cell_quadrature,
-                      const Quadrature<1>      &face_quadrature);
+    FEValuesEvaluator(const dealii::Mapping<2>         &mapping,
+                      const dealii::FiniteElement<2>   &fe,
+                      const dealii::Quadrature<2>      &cell_quadrature,
+                      const dealii::Quadrature<1>      &face_quadrature);
 
     void
     reinit(const CellIterator &cell) override;
@@ -35,24 +35,24 @@ namespace glissade
     displacement_component(const unsigned int i) const override;
     double
     shape_value(const unsigned int i, const unsigned int q) const override;
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     shape_grad(const unsigned int i, const unsigned int q) const override;
     double
     JxW(const unsigned int q) const override;
-    Point<2>
+    dealii::Point<2>
     quadrature_point(const unsigned int q) const override;
-    Tensor<1, 2>
+    dealii::Tensor<1, 2>
     normal_vector(const unsigned int q) const override;
 
   private:
-    const FEValuesBase<2> &
+    const dealii::FEValuesBase<2> &
     current() const;
 
-    const Mapping<2>                &mapping;
-    const FiniteElement<2>          &fe;
-    FEValues<2>                      cell_values;
-    FEFaceValues<2>                  face_values;
-    std::unique_ptr<FEFaceValues<2>> point_values;
+    const dealii::Mapping<2>                &mapping;
+    const dealii::FiniteElement<2>          &fe;
+    dealii::FEValues<2>                      cell_values;
+    dealii::FEFaceValues<2>                  face_values;
+    std::unique_ptr<dealii::FEFaceValues<2>> point_values;
     enum class Where
     {
       cell,

@@ -45,18 +45,18 @@ namespace glissade
       return "hermite";
     }
 
-    const FiniteElement<2> &
+    const dealii::FiniteElement<2> &
     finite_element() const override
     {
       return numbering;
     }
 
     void
-    setup(const DoFHandler<2>       &dof_handler,
-          AffineConstraints<double> &element_constraints) override;
+    setup(const dealii::DoFHandler<2>       &dof_handler,
+          dealii::AffineConstraints<double> &element_constraints) override;
 
     /** Straight-sided Q1 geometry: for output only. */
-    const Mapping<2> &
+    const dealii::Mapping<2> &
     mapping() const override
     {
       return output_mapping;
@@ -72,9 +72,9 @@ namespace glissade
     create_evaluator(const unsigned int points_per_direction) const override;
 
     void
-    boundary_relations(const DoFHandler<2>       &dof_handler,
-                       const types::boundary_id   boundary,
-                       const Function<2>         &g,
+    boundary_relations(const dealii::DoFHandler<2>       &dof_handler,
+                       const dealii::types::boundary_id   boundary,
+                       const dealii::Function<2>         &g,
                        const std::array<bool, 2> &components,
                        const bool                 all_derivatives,
                        std::vector<DofRelation>  &relations) const override;
@@ -97,8 +97,8 @@ namespace glissade
     }
 
   private:
-    FESystem<2>                                       numbering;
-    MappingQ<2>                                       output_mapping;
+    dealii::FESystem<2>                                       numbering;
+    dealii::MappingQ<2>                                       output_mapping;
     std::vector<HermiteQuadrilateral>                 elements;
     std::vector<std::pair<unsigned int, unsigned int>> local_dofs;
   };

@@ -22,13 +22,13 @@ namespace glissade
     std::string
     name() const override;
 
-    const FiniteElement<2> &
+    const dealii::FiniteElement<2> &
     finite_element() const override
     {
       return fe;
     }
 
-    const Mapping<2> &
+    const dealii::Mapping<2> &
     mapping() const override
     {
       return geometry;
@@ -39,7 +39,7 @@ namespace glissade
 
   private:
     const unsigned int degree;
-    FESystem<2>        fe;
-    MappingQ<2>        geometry;
+    dealii::FESystem<2>        fe;
+    dealii::MappingQ<2>        geometry;
   };
 } // namespace glissade

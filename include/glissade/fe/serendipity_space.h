@@ -37,17 +37,17 @@ namespace glissade
     std::string
     name() const override;
 
-    const FiniteElement<2> &
+    const dealii::FiniteElement<2> &
     finite_element() const override
     {
       return fe;
     }
 
     void
-    setup(const DoFHandler<2>       &dof_handler,
-          AffineConstraints<double> &element_constraints) override;
+    setup(const dealii::DoFHandler<2>       &dof_handler,
+          dealii::AffineConstraints<double> &element_constraints) override;
 
-    const Mapping<2> &
+    const dealii::Mapping<2> &
     mapping() const override;
 
     std::unique_ptr<CellEvaluator>
@@ -65,9 +65,9 @@ namespace glissade
 
   private:
     const unsigned int degree;
-    FESystem<2>        fe;
+    dealii::FESystem<2>        fe;
     std::vector<std::vector<std::pair<unsigned int, double>>> relations;
-    Vector<double>                                        euler_vector;
-    std::unique_ptr<MappingFEField<2, 2, Vector<double>>> geometry;
+    dealii::Vector<double>                                        euler_vector;
+    std::unique_ptr<dealii::MappingFEField<2, 2, dealii::Vector<double>>> geometry;
   };
 } // namespace glissade

@@ -16,20 +16,20 @@ namespace glissade
    * gradient is read from the derivative dofs, interpolated bilinearly
    * between the nodes where it is exact.
    */
-  class StressPostprocessor : public DataPostprocessor<2>
+  class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
     StressPostprocessor(const BodyMaterials &materials,
                         const unsigned int components_per_displacement);
 
     void
-    evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
-                          std::vector<Vector<double>> &computed) const override;
+    evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+                          std::vector<dealii::Vector<double>> &computed) const override;
 
     std::vector<std::string>
     get_names() const override;
 
-    UpdateFlags
+    dealii::UpdateFlags
     get_needed_update_flags() const override;
 
   private:

@@ -6,8 +6,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * A three-dimensional hyperelastic law written in the reference
    * configuration: given the Green-Lagrange strain E = (C - I)/2 it returns
@@ -29,9 +27,9 @@ namespace glissade
     virtual ~HyperelasticLaw() = default;
 
     virtual void
-    evaluate(const SymmetricTensor<2, 3> &green_lagrange_strain,
-             SymmetricTensor<2, 3>       &second_piola_kirchhoff,
-             SymmetricTensor<4, 3>       &tangent) const = 0;
+    evaluate(const dealii::SymmetricTensor<2, 3> &green_lagrange_strain,
+             dealii::SymmetricTensor<2, 3>       &second_piola_kirchhoff,
+             dealii::SymmetricTensor<4, 3>       &tangent) const = 0;
 
     virtual std::string
     name() const = 0;

@@ -22,9 +22,9 @@ namespace glissade
   struct MaterialPointResponse
   {
     /** In-plane second Piola-Kirchhoff stress. */
-    SymmetricTensor<2, 2> stress;
+    dealii::SymmetricTensor<2, 2> stress;
     /** dS/dE restricted to the plane (statically condensed in plane stress). */
-    SymmetricTensor<4, 2> tangent;
+    dealii::SymmetricTensor<4, 2> tangent;
     /** Out-of-plane stretch: 1 in plane strain, solved for in plane stress. */
     double out_of_plane_stretch = 1.;
   };
@@ -58,11 +58,11 @@ namespace glissade
            const PlaneHypothesis hypothesis);
 
     MaterialPointResponse
-    evaluate(const Tensor<2, 2> &displacement_gradient) const;
+    evaluate(const dealii::Tensor<2, 2> &displacement_gradient) const;
 
     /** Cauchy stress in 3D (sigma_33 is non-zero in plane strain). */
-    SymmetricTensor<2, 3>
-    cauchy_stress(const Tensor<2, 2> &displacement_gradient) const;
+    dealii::SymmetricTensor<2, 3>
+    cauchy_stress(const dealii::Tensor<2, 2> &displacement_gradient) const;
 
     PlaneHypothesis
     hypothesis() const
@@ -78,14 +78,14 @@ namespace glissade
 
   private:
     /** The 3D Green-Lagrange strain for an in-plane H and a given E_33. */
-    static SymmetricTensor<2, 3>
-    strain(const Tensor<2, 2> &H, const double e33);
+    static dealii::SymmetricTensor<2, 3>
+    strain(const dealii::Tensor<2, 2> &H, const double e33);
 
     /** Solves S_33 = 0 for E_33 (plane stress); returns E_33. */
     double
-    solve_out_of_plane(const Tensor<2, 2>    &H,
-                       SymmetricTensor<2, 3> &S,
-                       SymmetricTensor<4, 3> &D) const;
+    solve_out_of_plane(const dealii::Tensor<2, 2>    &H,
+                       dealii::SymmetricTensor<2, 3> &S,
+                       dealii::SymmetricTensor<4, 3> &D) const;
 
     std::shared_ptr<const HyperelasticLaw> law;
     PlaneHypothesis                        plane_hypothesis;

@@ -16,9 +16,9 @@ namespace glissade
     SaintVenantKirchhoff(const double lambda, const double mu);
 
     void
-    evaluate(const SymmetricTensor<2, 3> &green_lagrange_strain,
-             SymmetricTensor<2, 3>       &second_piola_kirchhoff,
-             SymmetricTensor<4, 3>       &tangent) const override;
+    evaluate(const dealii::SymmetricTensor<2, 3> &green_lagrange_strain,
+             dealii::SymmetricTensor<2, 3>       &second_piola_kirchhoff,
+             dealii::SymmetricTensor<4, 3>       &tangent) const override;
 
     std::string
     name() const override
@@ -29,6 +29,6 @@ namespace glissade
   private:
     const double          lambda;
     const double          mu;
-    SymmetricTensor<4, 3> elasticity;
+    dealii::SymmetricTensor<4, 3> elasticity;
   };
 } // namespace glissade

@@ -8,8 +8,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * What a body's mesh is made of, as read from its "Mesh" subsection. Only
    * the entries that the chosen generator uses are looked at.
@@ -17,9 +15,9 @@ namespace glissade
   struct MeshDescription
   {
     std::string               type;
-    Point<2>                  corner_1;
-    Point<2>                  corner_2;
-    Point<2>                  center;
+    dealii::Point<2>                  corner_1;
+    dealii::Point<2>                  corner_2;
+    dealii::Point<2>                  center;
     double                    side         = 1.;
     double                    inner_radius = 0.5;
     double                    outer_radius = 1.;
@@ -63,7 +61,7 @@ namespace glissade
     };
     Direction                direction = Direction::cartesian;
     std::vector<std::string> expressions; // displacement: one per component
-    Point<2>                 rotation_center;
+    dealii::Point<2>                 rotation_center;
     std::string              angle_expression; // rotation, radians
     std::string              entry; // the .prm entry it came from
   };
@@ -199,8 +197,8 @@ namespace glissade
     unsigned int max_sweeps    = 10000;
     // Rigid obstacle.
     std::string              obstacle = "line"; // line | disk | hole
-    Point<2>                 obstacle_point;  // line: a point; disk/hole: centre
-    Tensor<1, 2>             obstacle_normal; // line: normal pointing out of it
+    dealii::Point<2>                 obstacle_point;  // line: a point; disk/hole: centre
+    dealii::Tensor<1, 2>             obstacle_normal; // line: normal pointing out of it
     double                   obstacle_radius = 1.;
     std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
     std::string              entry; // "Contact <name>"

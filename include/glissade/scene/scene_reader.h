@@ -59,17 +59,17 @@ namespace glissade
      * any other mistake in the input.
      */
     static double
-    get_double(const ParameterHandler &prm,
+    get_double(const dealii::ParameterHandler &prm,
                const std::string      &entry,
                const std::string      &filename);
 
     static long int
-    get_integer(const ParameterHandler &prm,
+    get_integer(const dealii::ParameterHandler &prm,
                 const std::string      &entry,
                 const std::string      &filename);
 
     static void
-    parse_study(ParameterHandler               &prm,
+    parse_study(dealii::ParameterHandler               &prm,
                 const std::string              &filename,
                 const std::vector<std::string> &overrides);
 
@@ -81,13 +81,13 @@ namespace glissade
     /** `regions`: each body's material regions (Material/Regions). */
     static void
     declare_parameters(
-      ParameterHandler                                      &prm,
+      dealii::ParameterHandler                                      &prm,
       const std::vector<std::string>                        &body_names,
       const std::vector<std::string>                        &contact_names,
       const std::map<std::string, std::vector<std::string>> &regions = {});
 
     static SceneDescription
-    parse_parameters(ParameterHandler               &prm,
+    parse_parameters(dealii::ParameterHandler               &prm,
                      const std::vector<std::string> &body_names,
                      const std::vector<std::string> &contact_names,
                      const std::string              &source);

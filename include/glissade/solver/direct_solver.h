@@ -9,8 +9,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * UMFPACK, called directly rather than through deal.II's
    * SparseDirectUMFPACK, for two savings that matter in a Newton loop with
@@ -45,11 +43,11 @@ namespace glissade
 
     /** Cholesky or LU of A (analysis reused while the pattern is the same). */
     void
-    factorize(const SparseMatrix<double> &matrix);
+    factorize(const dealii::SparseMatrix<double> &matrix);
 
     /** x <- A^-1 x. */
     void
-    solve(Vector<double> &rhs_and_solution) const;
+    solve(dealii::Vector<double> &rhs_and_solution) const;
 
     /**
      * True if the last factorisation was Cholesky: the block of A^-1 on the
@@ -86,7 +84,7 @@ namespace glissade
     void
     factorize_lu();
 
-    const SparsityPattern *pattern = nullptr;
+    const dealii::SparsityPattern *pattern = nullptr;
     std::vector<long>      row_start, column_index;
     std::vector<double>    values;
     void                  *symbolic = nullptr;

@@ -7,8 +7,6 @@
 
 namespace glissade
 {
-  using namespace dealii;
-
   /**
    * Supernodal Cholesky factorisation (CHOLMOD) of a symmetric positive
    * definite matrix, with a chosen set of unknowns -- the contact dofs --
@@ -59,7 +57,7 @@ namespace glissade
 
     /** x <- A^-1 x. */
     void
-    solve(Vector<double> &x) const;
+    solve(dealii::Vector<double> &x) const;
 
     /**
      * Makes the columns of C, the block of A^-1 on the last unknowns, at

@@ -182,7 +182,7 @@ namespace glissade
     std::string                        failure_cause;
     const SceneDescription             scene;
     /** Every timed part of the run (never printed by itself). */
-    TimerOutput                        timer;
+    dealii::TimerOutput                        timer;
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
