@@ -20,7 +20,8 @@ main(int argc, char **argv)
   using namespace dealii;
   if (argc != 3)
     {
-      std::cerr << "usage: glissade_benchmark <prm/table1_beam.prm> <n_across>\n";
+      std::cerr
+        << "usage: glissade_benchmark <prm/table1_beam.prm> <n_across>\n";
       return 1;
     }
   const unsigned int across = std::stoi(argv[2]);

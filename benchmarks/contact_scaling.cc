@@ -30,9 +30,9 @@ namespace
   void
   time_contact_tangent(Simulation &simulation)
   {
-    const auto &bodies = simulation.bodies();
+    const auto                 &bodies = simulation.bodies();
     std::vector<Vector<double>> predictor(bodies.size());
-    dealii::Timer              timer;
+    dealii::Timer               timer;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         bodies[b]->assemble();
@@ -44,19 +44,27 @@ namespace
     std::vector<ContactNode *> active;
     ActiveNodes nodes = simulation.contact().active_nodes(active);
     timer.restart();
-    { const CondensedProblem with(nodes, Augmentation(), bodies, predictor); }
-    const double with_tangent = timer.wall_time();
-    const std::size_t n_terms = nodes.terms.size();
+    {
+      const CondensedProblem with(nodes, Augmentation(), bodies, predictor);
+    }
+    const double      with_tangent = timer.wall_time();
+    const std::size_t n_terms      = nodes.terms.size();
     nodes.terms.clear();
     timer.restart();
-    { const CondensedProblem without(nodes, Augmentation(), bodies, predictor); }
+    {
+      const CondensedProblem without(nodes, Augmentation(), bodies, predictor);
+    }
     const double without_tangent = timer.wall_time();
     std::printf("       contact tangent at %zu active nodes (%zu rank-one "
                 "terms): condensed problem %.4f s with it, %.4f s without: "
                 "the tangent costs %.4f s, against %.4f s for the "
                 "factorisation and solve of every body\n",
-                active.size(), n_terms, with_tangent, without_tangent,
-                with_tangent - without_tangent, factorisation);
+                active.size(),
+                n_terms,
+                with_tangent,
+                without_tangent,
+                with_tangent - without_tangent,
+                factorisation);
   }
 } // namespace
 
@@ -69,8 +77,9 @@ main(int argc, char **argv)
   if (!(argc == 3 || (argc == 4 && (mode == "indenter" || mode == "faceted" ||
                                     mode == "bspline"))))
     {
-      std::fprintf(stderr, "usage: glissade_contact_benchmark <nx> <ny> "
-                           "[indenter|faceted|bspline]\n");
+      std::fprintf(stderr,
+                   "usage: glissade_contact_benchmark <nx> <ny> "
+                   "[indenter|faceted|bspline]\n");
       return 1;
     }
   const unsigned int nx = std::stoi(argv[1]), ny = std::stoi(argv[2]);
@@ -79,44 +88,49 @@ main(int argc, char **argv)
   // bottom touches (the case where forming only the touching columns of
   // the compliance pays). faceted, bspline: a deformable base block of
   // nx + 3 by 4 elements under the strip, its top the master surface.
-  const bool indenter   = mode == "indenter";
-  const bool deformable = mode == "faceted" || mode == "bspline";
-  const double       length = 1., height = double(ny) / nx;
+  const bool        indenter   = mode == "indenter";
+  const bool        deformable = mode == "faceted" || mode == "bspline";
+  const double      length = 1., height = double(ny) / nx;
   const std::string base =
     "subsection Body base\n subsection Mesh\n  set Type = rectangle\n"
-    "  set Corner 1 = 0, " + std::to_string(-4. / nx) + "\n  set Corner 2 = " +
-    std::to_string(length) + ", 0\n  set Subdivisions = " +
-    std::to_string(nx + 3) + ", 4\n end\n subsection Material\n"
+    "  set Corner 1 = 0, " +
+    std::to_string(-4. / nx) + "\n  set Corner 2 = " + std::to_string(length) +
+    ", 0\n  set Subdivisions = " + std::to_string(nx + 3) +
+    ", 4\n end\n subsection Material\n"
     "  set Young modulus = 1000\n end\n subsection Boundary conditions\n"
     "  set Fixed = bottom: all\n end\nend\n";
-  const std::string  prm =
+  const std::string prm =
     std::string("subsection Scene\n set Bodies = strip") +
     (deformable ? ", base" : "") + "\n set Contact pairs = floor\nend\n" +
     (deformable ? base : std::string()) +
     "subsection Body strip\n subsection Mesh\n  set Type = rectangle\n"
-    "  set Corner 2 = " + std::to_string(length) + ", " + std::to_string(height) +
+    "  set Corner 2 = " +
+    std::to_string(length) + ", " + std::to_string(height) +
     "\n  set Subdivisions = " + std::to_string(nx) + ", " + std::to_string(ny) +
     "\n end\n subsection Material\n  set Young modulus = 1000\n end\n"
     " subsection Boundary conditions\n  set Fixed = left: x\n"
-    "  set Prescribed displacement = top: y: -0.01*" + std::to_string(height) +
+    "  set Prescribed displacement = top: y: -0.01*" +
+    std::to_string(height) +
     "*t\n end\nend\n"
     "subsection Contact floor\n set Slave body = strip\n"
     " set Slave boundary = bottom\n" +
-    (deformable ? " set Alert distance = 1\n set Master body = base\n"
-                  " set Master boundary = top\n set Surface = " + mode +
-                  "\n set Force transfer = spline\nend\n" :
-     indenter ? std::string(" set Alert distance = 1e-5\n"
-                            " subsection Obstacle\n  set Type = disk\n"
-                            "  set Point = 0.5, -5\n  set Radius = 5\n end\nend\n") :
-                std::string(" set Alert distance = 1\n"
-                            " subsection Obstacle\n  set Type = line\n"
-                            "  set Point = 0, 0\n  set Normal = 0, 1\n end\nend\n")) +
+    (deformable ?
+       " set Alert distance = 1\n set Master body = base\n"
+       " set Master boundary = top\n set Surface = " +
+         mode + "\n set Force transfer = spline\nend\n" :
+     indenter ?
+       std::string(" set Alert distance = 1e-5\n"
+                   " subsection Obstacle\n  set Type = disk\n"
+                   "  set Point = 0.5, -5\n  set Radius = 5\n end\nend\n") :
+       std::string(" set Alert distance = 1\n"
+                   " subsection Obstacle\n  set Type = line\n"
+                   "  set Point = 0, 0\n  set Normal = 0, 1\n end\nend\n")) +
     "subsection Output\n set Progress = false\nend\n";
   Simulation simulation(SceneReader::read_string(prm, "contact benchmark"));
   simulation.advance_to(1., "increment 1");
-  const RunStatistics  s = simulation.statistics();
+  const RunStatistics   s = simulation.statistics();
   const ContactProblem &c = simulation.contact();
-  const double         n  = s.newton_iterations;
+  const double          n = s.newton_iterations;
   std::printf("%6u active nodes %9u dofs  Newton its %2u  per iteration: "
               "factorisation %8.4f s  detection %8.5f s  compliance %8.4f s  "
               "local solve %8.4f s (%u sweeps in the last)\n",
@@ -163,7 +177,7 @@ main(int argc, char **argv)
         other->numeric_seconds + other->symbolic_seconds - first;
       std::printf("       same matrix, %-34s %.4f s per factorisation\n",
                   other == &lu ? "bare UMFPACK LU:" :
-                                "Cholesky, no contact dofs last:",
+                                 "Cholesky, no contact dofs last:",
                   again);
     }
   return 0;

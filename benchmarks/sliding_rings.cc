@@ -23,7 +23,8 @@ main(int argc, char **argv)
   using namespace dealii;
   if (argc != 2)
     {
-      std::fprintf(stderr, "usage: glissade_sliding_benchmark <case3_rings.prm>\n");
+      std::fprintf(stderr,
+                   "usage: glissade_sliding_benchmark <case3_rings.prm>\n");
       return 1;
     }
   std::printf("rings (E = 1e3, 40 x 4 each) turned through 2 pi in 400 "
@@ -42,9 +43,9 @@ main(int argc, char **argv)
         "Output/Directory=sliding_benchmark_" + surface};
       if (surface == "hermite")
         overrides.push_back("Body outer/Element/Space=hermite");
-      Simulation   simulation(SceneReader::read_file(argv[1], overrides));
-      unsigned int turned = 0, total = 0, largest = 0, increment = 0;
-      double       turn_seconds = 0.;
+      Simulation    simulation(SceneReader::read_file(argv[1], overrides));
+      unsigned int  turned = 0, total = 0, largest = 0, increment = 0;
+      double        turn_seconds = 0.;
       dealii::Timer timer;
       try
         {
@@ -66,8 +67,10 @@ main(int argc, char **argv)
         }
       catch (const ConvergenceFailure &failure)
         {
-          std::printf("  %-8s stopped at increment %u: %s\n", surface.c_str(),
-                      increment + 1, failure.what());
+          std::printf("  %-8s stopped at increment %u: %s\n",
+                      surface.c_str(),
+                      increment + 1,
+                      failure.what());
         }
       std::printf("  %-8s %u dofs: %3u turn increments, Newton iterations "
                   "per increment %.2f (largest %u), %u cut-backs, %.1f ms "

@@ -3,10 +3,10 @@
 
 #include <paper_studies/case3_study.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -21,8 +21,8 @@ namespace
   Case3Result
   run(const std::string &variant, const std::string &directory)
   {
-    return Case3Study::run_variant(source_path("prm/case3_rings.prm"),
-                                   variant, 9., 50, directory);
+    return Case3Study::run_variant(
+      source_path("prm/case3_rings.prm"), variant, 9., 50, directory);
   }
 
   /**
@@ -88,11 +88,14 @@ GLISSADE_TEST(case3_rotation_spread_order)
     std::cout << "  " << r->variant << ": worst spread " << r->worst_spread
               << " % at increment " << r->worst_increment << " (paper "
               << Case3Study::paper_spread(r->variant) << " %)" << std::endl;
-  check_relative(hermite.worst_spread, 0.1, 0.1, "Hermite spread against the paper");
-  const auto within_factor = [](const double measured, const double paper,
-                                const double factor) {
-    return measured > paper / factor && measured < paper * factor;
-  };
+  check_relative(hermite.worst_spread,
+                 0.1,
+                 0.1,
+                 "Hermite spread against the paper");
+  const auto within_factor =
+    [](const double measured, const double paper, const double factor) {
+      return measured > paper / factor && measured < paper * factor;
+    };
   check(within_factor(bspline.worst_spread, 0.0015, 2.),
         "B-spline: the spread should be within a factor 2 of the paper's");
   check(within_factor(q4.worst_spread, 4.8, 3.),
@@ -118,8 +121,8 @@ namespace
     std::vector<double> u;
     for (unsigned int i = 0; i < 40; ++i)
       {
-        const double   theta = 2. * M_PI * i / 40.;
-        const Point<2> X(r * std::cos(theta), r * std::sin(theta));
+        const double       theta = 2. * M_PI * i / 40.;
+        const Point<2>     X(r * std::cos(theta), r * std::sin(theta));
         const Tensor<1, 2> d = body.vertex_displacement(X);
         u.push_back((d[0] * X[0] + d[1] * X[1]) / r);
       }
@@ -161,13 +164,16 @@ GLISSADE_TEST(case3_compression_single_ring)
   // The rings' material, read from their scene.
   const SceneDescription rings =
     SceneReader::read_file(source_path("prm/case3_rings.prm"));
-  const std::string young = std::to_string(rings.bodies.at(0).material.young_modulus);
+  const std::string young =
+    std::to_string(rings.bodies.at(0).material.young_modulus);
   const std::string single =
     "subsection Scene\n set Bodies = ring\nend\n"
     "subsection Body ring\n subsection Mesh\n  set Type = ring\n"
     "  set Inner radius = 0.5\n  set Outer radius = 2\n"
     "  set Subdivisions = 40, 8\n end\n"
-    " subsection Material\n  set Young modulus = " + young + "\n"
+    " subsection Material\n  set Young modulus = " +
+    young +
+    "\n"
     "  set Poisson ratio = 0.3\n end\n"
     " subsection Boundary conditions\n  set Fixed = inner: xy\n"
     "  set Nodal loads = outer: -10*x/sqrt(x^2+y^2)*t, -10*y/sqrt(x^2+y^2)*t\n"
@@ -177,9 +183,8 @@ GLISSADE_TEST(case3_compression_single_ring)
   Simulation one(SceneReader::read_string(single, "single ring"));
   for (unsigned int k = 1; k <= 10; ++k)
     one.advance_to(0.1 * k, "increment");
-  const auto reference_outer = radial_displacements(one.body("ring"), 2.);
-  const auto reference_interface =
-    radial_displacements(one.body("ring"), 1.25);
+  const auto reference_outer     = radial_displacements(one.body("ring"), 2.);
+  const auto reference_interface = radial_displacements(one.body("ring"), 1.25);
   std::cout << "  single ring: radial displacement at r = 2: "
             << reference_outer[0] << ", asymmetry "
             << asymmetry(reference_outer) << std::endl;
@@ -196,14 +201,14 @@ GLISSADE_TEST(case3_compression_single_ring)
           overrides.push_back("Body outer/Element/Space=hermite");
           overrides.push_back("Contact interface/Surface=hermite");
         }
-      Simulation two(SceneReader::read_file(source_path("prm/case3_rings.prm"),
-                                            overrides));
+      Simulation two(
+        SceneReader::read_file(source_path("prm/case3_rings.prm"), overrides));
       for (unsigned int k = 1; k <= 10; ++k)
         two.advance_to(0.1 * k, "increment");
-      const auto outer     = radial_displacements(two.body("outer"), 2.);
-      const auto interface = radial_displacements(two.body("inner"), 1.25);
-      const double d_outer = difference(outer, reference_outer);
-      const double d_inter = difference(interface, reference_interface);
+      const auto   outer     = radial_displacements(two.body("outer"), 2.);
+      const auto   interface = radial_displacements(two.body("inner"), 1.25);
+      const double d_outer   = difference(outer, reference_outer);
+      const double d_inter   = difference(interface, reference_interface);
       std::cout << "  " << variant
                 << ": difference from the single ring at r = 2: " << d_outer
                 << ", at the interface: " << d_inter
@@ -233,8 +238,11 @@ GLISSADE_TEST(case3_compression_single_ring)
 GLISSADE_TEST(case3_hermite_ripple_period)
 {
   const auto run_two_elements = [](const std::string &variant) {
-    return Case3Study::run_variant(source_path("prm/case3_rings.prm"), variant,
-                                   18., 100, "case3_ripple_test");
+    return Case3Study::run_variant(source_path("prm/case3_rings.prm"),
+                                   variant,
+                                   18.,
+                                   100,
+                                   "case3_ripple_test");
   };
   const Case3Result bspline = run_two_elements("bspline"),
                     hermite = run_two_elements("hermite");
@@ -272,8 +280,8 @@ GLISSADE_TEST(case3_hermite_ripple_period)
   // Where the two smoothings agree (paper, fig 27): facing a master node
   // (increment 50: s = 1) and at mid-element (increment 25: s = 0.5).
   std::cout << "  |d| facing a master node " << std::abs(d[49])
-            << ", at mid-element " << std::abs(d[24]) << ", largest "
-            << largest << std::endl;
+            << ", at mid-element " << std::abs(d[24]) << ", largest " << largest
+            << std::endl;
   check(std::abs(d[49]) < 0.3 * largest && std::abs(d[24]) < 0.3 * largest,
         "Hermite and B-spline should agree at a master node and mid-element");
 }

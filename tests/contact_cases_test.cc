@@ -6,10 +6,10 @@
 
 #include <paper_studies/contact_case_study.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -30,16 +30,17 @@ GLISSADE_TEST(case1_rigid_ring_no_penetration)
 {
   const ContactCaseResult r = ContactCaseStudy::run_variant(
     source_path("prm/case1_rigid_ring.prm"), "q4", 0, 1., "case1_test");
-  const double deepest =
-    -*std::min_element(r.min_obstacle_distance.begin(), r.min_obstacle_distance.end());
-  unsigned int loaded = 0;
+  const double deepest = -*std::min_element(r.min_obstacle_distance.begin(),
+                                            r.min_obstacle_distance.end());
+  unsigned int loaded  = 0;
   for (const auto &[x, f] : r.contact_forces)
     loaded += f.norm() > 0. ? 1 : 0;
   std::cout << "  " << r.increments << " increments, deepest penetration "
-            << std::max(deepest, 0.) << " m, loaded nodes off the circle by <= "
-            << r.max_active_distance << " m, " << loaded
-            << " beam nodes loaded at the end" << std::endl;
-  check(r.min_obstacle_distance.size() == r.increments, "one measure per increment");
+            << std::max(deepest, 0.)
+            << " m, loaded nodes off the circle by <= " << r.max_active_distance
+            << " m, " << loaded << " beam nodes loaded at the end" << std::endl;
+  check(r.min_obstacle_distance.size() == r.increments,
+        "one measure per increment");
   check(deepest <= 1e-10, "a beam node penetrates the rigid ring");
   check(r.max_active_distance <= 1e-10, "a loaded node is off the circle");
   check(loaded >= 2, "the beam should rest on the ring");
@@ -50,8 +51,8 @@ GLISSADE_TEST(case1_rigid_ring_no_penetration)
 GLISSADE_TEST(case1_flexible_ring_bspline_hermite_agree)
 {
   const auto run = [](const std::string &variant) {
-    return ContactCaseStudy::run_variant(source_path("prm/case1_beam_ring.prm"),
-                                         variant, 20, 1., "case1_test");
+    return ContactCaseStudy::run_variant(
+      source_path("prm/case1_beam_ring.prm"), variant, 20, 1., "case1_test");
   };
   const ContactCaseResult q4 = run("q4"), bspline = run("bspline"),
                           hermite = run("hermite");
@@ -59,7 +60,8 @@ GLISSADE_TEST(case1_flexible_ring_bspline_hermite_agree)
   const double q_h = ContactCaseStudy::final_difference(hermite, q4);
   std::cout << "  final displacement, largest difference over the largest "
                "displacement: B-spline vs Hermite "
-            << b_h * 100. << " %, Q4 vs Hermite " << q_h * 100. << " %" << std::endl;
+            << b_h * 100. << " %, Q4 vs Hermite " << q_h * 100. << " %"
+            << std::endl;
   // The paper (section 4.1): no difference is visible between the linear
   // mesh and either smoothing, and B-spline and Hermite match. The bodies
   // differ (Q4 against Hermite elements): at 120 x 8 the paper's Table 1
@@ -86,7 +88,8 @@ GLISSADE_TEST(case2_symmetry)
                 << f << " (largest over " << r.increments << " increments)"
                 << std::endl;
       check(u <= 1e-8 && f <= 1e-8, variant + ": not symmetric to 1e-8");
-      check(largest(r.corner_force) > 0., variant + ": the square never touched");
+      check(largest(r.corner_force) > 0.,
+            variant + ": the square never touched");
     }
 }
 
@@ -105,18 +108,19 @@ GLISSADE_TEST(case2_sliding_smoothness)
   for (const auto &r : runs)
     {
       const auto [first, last] = ContactCaseStudy::contact_phase(r);
-      force_roughness.push_back(
-        ContactCaseStudy::roughness(r.corner_force, first + 2, last - 1,
-                                    r.active_nodes));
+      force_roughness.push_back(ContactCaseStudy::roughness(
+        r.corner_force, first + 2, last - 1, r.active_nodes));
       kinks.push_back(
         ContactCaseStudy::kink_concentration(r.corner_ux, first + 2, last - 1));
       std::cout << "  " << r.variant << ": corner in contact over increments "
                 << first + 1 << "-" << last << "; force roughness "
-                << force_roughness.back() << ", share of |d2 u_x| in the top 10 % "
-                << kinks.back() << std::endl;
+                << force_roughness.back()
+                << ", share of |d2 u_x| in the top 10 % " << kinks.back()
+                << std::endl;
     }
-  std::cout << "  roughness ratio Q4 / B-spline " << force_roughness[0] / force_roughness[1]
-            << ", Q4 / Hermite " << force_roughness[0] / force_roughness[2] << std::endl;
+  std::cout << "  roughness ratio Q4 / B-spline "
+            << force_roughness[0] / force_roughness[1] << ", Q4 / Hermite "
+            << force_roughness[0] / force_roughness[2] << std::endl;
   check(force_roughness[0] >= 10. * force_roughness[1],
         "B-spline force history should be 10x smoother than Q4's");
   check(force_roughness[0] >= 10. * force_roughness[2],

@@ -6,10 +6,10 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
 #include <iomanip>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -30,11 +30,12 @@ namespace
     simulation.run();
     const Tensor<1, 2> force =
       simulation.contact().contact_pairs()[0]->total_force();
-    const auto statistics = simulation.statistics();
-    const double ratio = -force[0] / force[1];
-    std::cout << "  " << label << ": F = (" << force << "), F_x / F_y = "
-              << std::setprecision(12) << ratio << std::setprecision(10) << ", "
-              << statistics.increments << " increments, "
+    const auto   statistics = simulation.statistics();
+    const double ratio      = -force[0] / force[1];
+    std::cout << "  " << label << ": F = (" << force
+              << "), F_x / F_y = " << std::setprecision(12) << ratio
+              << std::setprecision(10) << ", " << statistics.increments
+              << " increments, "
               << double(statistics.newton_iterations) / statistics.increments
               << " Newton iterations per increment" << std::endl;
     return ratio;
@@ -61,7 +62,7 @@ GLISSADE_TEST(contact_friction_steady_sliding_rigid_flat)
 
 GLISSADE_TEST(contact_friction_steady_sliding_bspline_strip)
 {
-  const double n = friction_ratio("tests/data/pad_on_strip.prm",
+  const double n      = friction_ratio("tests/data/pad_on_strip.prm",
                                   {"Load program/Stage increments=2, 25"},
                                   "strip_25_increments");
   const double four_n = friction_ratio("tests/data/pad_on_strip.prm",

@@ -6,9 +6,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -32,7 +32,8 @@ namespace
           above.push_back(r);
       }
     std::cout << std::endl;
-    check(above.size() >= 3, label + ": fewer than three residuals above 1e-12");
+    check(above.size() >= 3,
+          label + ": fewer than three residuals above 1e-12");
     const std::size_t k = above.size() - 1;
     const double      order =
       std::log(above[k] / above[k - 1]) / std::log(above[k - 1] / above[k - 2]);
@@ -46,10 +47,10 @@ namespace
   std::vector<double>
   last_increment_residuals(const SceneDescription &scene)
   {
-    Simulation simulation(scene);
-    const auto &program = scene.load_program;
-    double      t0      = 0.;
-    unsigned int number = 0;
+    Simulation   simulation(scene);
+    const auto  &program = scene.load_program;
+    double       t0      = 0.;
+    unsigned int number  = 0;
     for (unsigned int s = 0; s < program.stage_end_times.size(); ++s)
       {
         const unsigned int n = program.stage_increments[s];
@@ -72,7 +73,8 @@ namespace
   {
     std::vector<std::string> overrides = {
       "Contact interface/Surface=" + surface,
-      "Load program/Stage end times=1, 1.025, " + std::to_string(1. + 7.5 / 180.),
+      "Load program/Stage end times=1, 1.025, " +
+        std::to_string(1. + 7.5 / 180.),
       "Load program/Stage increments=2, 3, 1",
       "Newton/Residual tolerance=1e-12",
       "Newton/Displacement tolerance=1e-12",
@@ -81,10 +83,10 @@ namespace
       "Output/Directory=newton_rate_" + surface};
     if (surface == "hermite")
       overrides.push_back("Body outer/Element/Space=hermite");
-    const double order = fitted_order(
-      last_increment_residuals(
-        SceneReader::read_file(source_path("prm/case3_rings.prm"), overrides)),
-      surface + " master, 3 degrees of sliding");
+    const double order =
+      fitted_order(last_increment_residuals(SceneReader::read_file(
+                     source_path("prm/case3_rings.prm"), overrides)),
+                   surface + " master, 3 degrees of sliding");
     check(order >= 1.8, surface + ": Newton order below 1.8");
   }
 
@@ -114,20 +116,23 @@ namespace
       "subsection Contact floor\n set Slave body = block\n"
       " set Slave boundary = bottom\n set Alert distance = 0.2\n"
       " set Friction coefficient = " +
-      std::to_string(friction) + "\n set Tolerance = 1e-13\n"
-      " subsection Obstacle\n  set Type = " + obstacle + "\n" + geometry +
+      std::to_string(friction) +
+      "\n set Tolerance = 1e-13\n"
+      " subsection Obstacle\n  set Type = " +
+      obstacle + "\n" + geometry +
       " end\nend\n"
       "subsection Load program\n set Stage end times = 1, 2\n"
       " set Stage increments = 2, 1\nend\n"
       "subsection Newton\n set Residual tolerance = 1e-12\n"
       " set Displacement tolerance = 1e-12\nend\n"
       "subsection Output\n set Progress = false\n set VTU interval = 0\n"
-      " set Directory = newton_rate_" + obstacle + "\nend\n";
-    const std::string label = "rigid " + obstacle + ", mu = " +
-                              std::to_string(friction) + ", slid by 0.1";
-    const double order =
-      fitted_order(last_increment_residuals(SceneReader::read_string(prm, label)),
-                   label);
+      " set Directory = newton_rate_" +
+      obstacle + "\nend\n";
+    const std::string label = "rigid " + obstacle +
+                              ", mu = " + std::to_string(friction) +
+                              ", slid by 0.1";
+    const double order = fitted_order(
+      last_increment_residuals(SceneReader::read_string(prm, label)), label);
     check(order >= 1.8, label + ": Newton order below 1.8");
   }
 } // namespace

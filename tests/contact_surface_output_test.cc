@@ -7,14 +7,14 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -72,8 +72,8 @@ namespace
     for (unsigned int i = 0; i + 1 < order.size(); ++i)
       {
         const unsigned int a = order[i], b = order[i + 1];
-        const double       length =
-          std::hypot(table["x"][a] - table["x"][b], table["y"][a] - table["y"][b]);
+        const double       length = std::hypot(table["x"][a] - table["x"][b],
+                                         table["y"][a] - table["y"][b]);
         sum += 0.5 * (table["pressure"][a] + table["pressure"][b]) * length;
       }
     return sum * thickness;
@@ -98,36 +98,39 @@ namespace
   std::string
   block_on_line(const std::string &slave_boundary, const std::string &directory)
   {
-    return
-    "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n"
-    "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
-    "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 0.5\n"
-    "  set Subdivisions = 8, 4\n end\n"
-    " subsection Material\n  set Young modulus = 1000\n"
-    "  set Thickness = 0.5\n end\n"
-    " subsection Boundary conditions\n  set Fixed = left: x\n"
-    "  set Prescribed displacement = top: y: -0.01*t\n end\nend\n"
-    "subsection Contact floor\n set Slave body = block\n"
-    " set Slave boundary = " + slave_boundary + "\n set Master body = rigid\n"
-    " set Alert distance = 0.1\n"
-    " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
-    "  set Normal = 0, 1\n end\nend\n"
-    "subsection Load program\n set Stage increments = 2\nend\n"
-    "subsection Newton\n set Residual tolerance = 1e-12\nend\n"
-    "subsection Output\n set Progress = false\n"
-    " set Directory = " + directory + "\nend\n";
+    return "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n"
+           "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
+           "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 0.5\n"
+           "  set Subdivisions = 8, 4\n end\n"
+           " subsection Material\n  set Young modulus = 1000\n"
+           "  set Thickness = 0.5\n end\n"
+           " subsection Boundary conditions\n  set Fixed = left: x\n"
+           "  set Prescribed displacement = top: y: -0.01*t\n end\nend\n"
+           "subsection Contact floor\n set Slave body = block\n"
+           " set Slave boundary = " +
+           slave_boundary +
+           "\n set Master body = rigid\n"
+           " set Alert distance = 0.1\n"
+           " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
+           "  set Normal = 0, 1\n end\nend\n"
+           "subsection Load program\n set Stage increments = 2\nend\n"
+           "subsection Newton\n set Residual tolerance = 1e-12\nend\n"
+           "subsection Output\n set Progress = false\n"
+           " set Directory = " +
+           directory + "\nend\n";
   }
 } // namespace
 
 GLISSADE_TEST(contact_surface_block_pressure_balances_support)
 {
-  Simulation simulation(SceneReader::read_string(
-    block_on_line("bottom", "surface_block"), "surface"));
+  Simulation simulation(
+    SceneReader::read_string(block_on_line("bottom", "surface_block"),
+                             "surface"));
   simulation.run();
   const double top = simulation.body("block").reaction("top")[1];
 
-  auto table = read_csv("surface_block/contact-floor-00002.csv");
-  const unsigned int n = table["X"].size();
+  auto               table = read_csv("surface_block/contact-floor-00002.csv");
+  const unsigned int n     = table["X"].size();
   std::set<std::pair<double, double>> positions;
   std::vector<unsigned int>           order(n);
   for (unsigned int k = 0; k < n; ++k)
@@ -143,14 +146,17 @@ GLISSADE_TEST(contact_surface_block_pressure_balances_support)
             << " distinct nodes; pressure integrated " << integral
             << ", top reaction " << top << std::endl;
   check(n == 9 && positions.size() == 9, "each of the 9 slave nodes once");
-  check_relative(integral, -top, 1e-10,
+  check_relative(integral,
+                 -top,
+                 1e-10,
                  "pressure integrated along the surface against the support");
 
   const std::string vtu = contents("surface_block/contact-floor-00002.vtu");
-  check(vtu.find("NumberOfPoints=\"9\" NumberOfCells=\"8\"") != std::string::npos,
-        "the surface VTU is the 9 nodes and 8 faces of the boundary");
-  check(contents("surface_block/contact-floor.pvd").find("contact-floor-00002.vtu") !=
+  check(vtu.find("NumberOfPoints=\"9\" NumberOfCells=\"8\"") !=
           std::string::npos,
+        "the surface VTU is the 9 nodes and 8 faces of the boundary");
+  check(contents("surface_block/contact-floor.pvd")
+            .find("contact-floor-00002.vtu") != std::string::npos,
         "the PVD lists the surface VTU");
   check(contents("surface_block/block-00002.vtu").find("contact_force") ==
           std::string::npos,
@@ -174,7 +180,8 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
         "subsection Body disk\n subsection Mesh\n  set Type = half ring\n"
         "  set Center = 0, 1\n  set Inner radius = 0.2\n"
         "  set Outer radius = 1\n  set Start angle = 180\n"
-        "  set End angle = 360\n  set Subdivisions = " + subdivisions +
+        "  set End angle = 360\n  set Subdivisions = " +
+        subdivisions +
         "\n end\n subsection Material\n  set Young modulus = 200\n"
         "  set Poisson ratio = 0.3\n end\n"
         " subsection Boundary conditions\n"
@@ -192,16 +199,20 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
       simulation.run();
       const double support = simulation.body("disk").reaction("inner")[1];
 
-      auto               table = read_csv("surface_hertz/contact-flat-00002.csv");
-      const unsigned int n     = table["X"].size();
+      auto table = read_csv("surface_hertz/contact-flat-00002.csv");
+      const unsigned int        n = table["X"].size();
       std::vector<unsigned int> order(n);
       for (unsigned int k = 0; k < n; ++k)
         order[k] = k;
-      std::sort(order.begin(), order.end(), [&](unsigned int a, unsigned int b) {
-        return table["X"][a] < table["X"][b];
-      });
+      std::sort(order.begin(),
+                order.end(),
+                [&](unsigned int a, unsigned int b) {
+                  return table["X"][a] < table["X"][b];
+                });
       const double P = integrated_pressure(table, order, 1.);
-      check_relative(P, -support, 1e-10,
+      check_relative(P,
+                     -support,
+                     1e-10,
                      "pressure integrated against the hole's reaction");
 
       const double E_star = 200. / (1. - 0.3 * 0.3);
@@ -211,9 +222,11 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
       for (unsigned int k = 0; k < n; ++k)
         if (table["r_n"][k] > 0.)
           {
-            const double x     = table["x"][k];
-            const double hertz = p0 * std::sqrt(std::max(0., 1. - x * x / (a * a)));
-            worst  = std::max(worst, std::abs(table["pressure"][k] - hertz) / p0);
+            const double x = table["x"][k];
+            const double hertz =
+              p0 * std::sqrt(std::max(0., 1. - x * x / (a * a)));
+            worst =
+              std::max(worst, std::abs(table["pressure"][k] - hertz) / p0);
             widest = std::max(widest, std::abs(x));
           }
       deviation.push_back(worst);
@@ -225,7 +238,8 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
       check(std::abs(widest - a) <= 2. * h,
             "the contact ends within two elements of Hertz's a");
     }
-  check(deviation[1] <= 0.05, "Hertz's profile within 5 % of p0 on the fine mesh");
+  check(deviation[1] <= 0.05,
+        "Hertz's profile within 5 % of p0 on the fine mesh");
   check(deviation[1] < 0.5 * deviation[0],
         "the deviation from Hertz shrinks as the mesh is refined");
 }
@@ -240,15 +254,15 @@ GLISSADE_TEST(contact_pair_several_slave_boundaries)
   Simulation simulation(SceneReader::read_string(
     block_on_line("bottom, left, right", "surface_sides"), "surface"));
   simulation.run();
-  const auto &pair = *simulation.contact().contact_pairs()[0];
+  const auto            &pair = *simulation.contact().contact_pairs()[0];
   std::set<unsigned int> vertices;
   for (const auto &node : pair.nodes())
     vertices.insert(node.vertex);
   const double top   = simulation.body("block").reaction("top")[1];
   const double total = pair.total_force()[1];
-  std::cout << "  " << pair.nodes().size() << " slave nodes (" << vertices.size()
-            << " distinct); contact force " << total << ", top reaction " << top
-            << std::endl;
+  std::cout << "  " << pair.nodes().size() << " slave nodes ("
+            << vertices.size() << " distinct); contact force " << total
+            << ", top reaction " << top << std::endl;
   check(pair.nodes().size() == 17 && vertices.size() == 17,
         "bottom, left and right give 17 nodes, corners once");
   check_relative(total, -top, 1e-10, "contact force against the support");
@@ -267,14 +281,17 @@ GLISSADE_TEST(output_initial_state_left_out)
         initial ? "initial_state_kept" : "initial_state_left_out";
       std::filesystem::remove_all(directory); // no file of an earlier run
       Simulation simulation(SceneReader::read_string(
-        block_on_line("bottom", directory), "initial state",
+        block_on_line("bottom", directory),
+        "initial state",
         {"Output/VTU interval=0",
          std::string("Output/Initial state=") + (initial ? "true" : "false")}));
       simulation.run();
-      const bool vtu_0   = !contents(directory + "/block-00000.vtu").empty();
-      const bool table_0 = !contents(directory + "/contact-floor-00000.csv").empty();
-      const bool vtu_2   = !contents(directory + "/block-00002.vtu").empty();
-      const bool table_2 = !contents(directory + "/contact-floor-00002.csv").empty();
+      const bool vtu_0 = !contents(directory + "/block-00000.vtu").empty();
+      const bool table_0 =
+        !contents(directory + "/contact-floor-00000.csv").empty();
+      const bool vtu_2 = !contents(directory + "/block-00002.vtu").empty();
+      const bool table_2 =
+        !contents(directory + "/contact-floor-00002.csv").empty();
       const std::string pvd = contents(directory + "/block.pvd");
       std::cout << "  Initial state = " << initial << ": increment 0 VTU "
                 << vtu_0 << ", table " << table_0 << "; final VTU " << vtu_2
@@ -297,14 +314,16 @@ GLISSADE_TEST(output_initial_state_left_out)
 GLISSADE_TEST(scene_plots_written)
 {
   Simulation simulation(SceneReader::read_string(
-    block_on_line("bottom", "scene_plots"), "plots",
+    block_on_line("bottom", "scene_plots"),
+    "plots",
     {"Output/Plots=true",
      "Output/History=contact_force(floor); reaction(block, top)",
      "Output/Plot curves=time: floor_Fy; block_Ry_top: floor_Fy"}));
   simulation.run();
-  for (const std::string file :
-       {"history.png", "contact-floor-pressure.png", "deformed-mesh.png",
-        "curves.png"})
+  for (const std::string file : {"history.png",
+                                 "contact-floor-pressure.png",
+                                 "deformed-mesh.png",
+                                 "curves.png"})
     {
       const std::string png = contents("scene_plots/" + file);
       std::cout << "  " << file << ": " << png.size() << " bytes" << std::endl;
@@ -322,10 +341,11 @@ GLISSADE_TEST(scene_plots_written)
 // forces add up to minus the top's reaction (balance of the pad).
 GLISSADE_TEST(walkthrough_pad_on_roller)
 {
-  Simulation simulation(SceneReader::read_file(
-    source_path("prm/pad_on_roller.prm"),
-    {"Output/Directory=walkthrough_pad", "Output/Plots=false",
-     "Output/Progress=false"}));
+  Simulation simulation(
+    SceneReader::read_file(source_path("prm/pad_on_roller.prm"),
+                           {"Output/Directory=walkthrough_pad",
+                            "Output/Plots=false",
+                            "Output/Progress=false"}));
   simulation.run();
   const double mu       = 0.3;
   unsigned int slipping = 0, sticking = 0;
@@ -367,6 +387,12 @@ GLISSADE_TEST(walkthrough_pad_on_roller)
   check(slipping > 0 && sticking > 0, "the pad both sticks and slips");
   check(worst_slip / mu < 1e-8, "a slipping node is off the cone");
   const Tensor<1, 2> top = simulation.body("pad").reaction("top");
-  check_relative(fx, -top[0], 1e-8, "contact force x against the top's reaction");
-  check_relative(fy, -top[1], 1e-8, "contact force y against the top's reaction");
+  check_relative(fx,
+                 -top[0],
+                 1e-8,
+                 "contact force x against the top's reaction");
+  check_relative(fy,
+                 -top[1],
+                 1e-8,
+                 "contact force y against the top's reaction");
 }

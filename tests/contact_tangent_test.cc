@@ -9,10 +9,10 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
 #include <map>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -21,9 +21,12 @@ using namespace glissade_tests;
 namespace
 {
   std::string
-  block(const std::string &name, const std::string &corner_1,
-        const std::string &corner_2, const std::string &subdivisions,
-        const std::string &space, const std::string &fixed = "left: x")
+  block(const std::string &name,
+        const std::string &corner_1,
+        const std::string &corner_2,
+        const std::string &subdivisions,
+        const std::string &space,
+        const std::string &fixed = "left: x")
   {
     return "subsection Body " + name +
            "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
@@ -31,8 +34,8 @@ namespace
            "\n  set Subdivisions = " + subdivisions +
            "\n end\n subsection Element\n  set Space = " + space +
            "\n end\n subsection Material\n  set Young modulus = 1000\n end\n"
-           " subsection Boundary conditions\n  set Fixed = " + fixed +
-           "\n end\nend\n";
+           " subsection Boundary conditions\n  set Fixed = " +
+           fixed + "\n end\nend\n";
   }
 
   /** A slave block on a master block, or on a rigid obstacle. */
@@ -41,9 +44,10 @@ namespace
   {
     std::string text = "subsection Output\n set Progress = false\nend\n";
     text += block("upper", "0, 0.5", "1, 1", "6, 2", "q1");
-    std::string contact = "subsection Contact interface\n"
-                          " set Slave body = upper\n set Slave boundary = bottom\n"
-                          " set Alert distance = 10\n";
+    std::string contact =
+      "subsection Contact interface\n"
+      " set Slave body = upper\n set Slave boundary = bottom\n"
+      " set Alert distance = 10\n";
     if (master == "line" || master == "disk" || master == "hole")
       {
         text += "subsection Scene\n set Bodies = upper\n"
@@ -64,15 +68,20 @@ namespace
         text += "subsection Scene\n set Bodies = upper, lower\n"
                 " set Contact pairs = interface\nend\n";
         // (the lower block held, so that no motion of the pair is free)
-        text += block("lower", "0, 0", "1, 0.5", "4, 2",
-                      hermite ? "hermite" : "q1", "left: x; bottom: y");
+        text += block("lower",
+                      "0, 0",
+                      "1, 0.5",
+                      "4, 2",
+                      hermite ? "hermite" : "q1",
+                      "left: x; bottom: y");
         contact += " set Master body = lower\n set Master boundary = top\n";
         if (master == "faceted" || hermite)
           contact += " set Surface = " + master + "\n";
         else
-          contact += " set Surface = bspline\n set Force transfer = " +
-                     std::string(master == "bspline_segment" ? "segment" : "spline") +
-                     "\n";
+          contact +=
+            " set Surface = bspline\n set Force transfer = " +
+            std::string(master == "bspline_segment" ? "segment" : "spline") +
+            "\n";
       }
     return text + contact + "end\n";
   }
@@ -104,7 +113,7 @@ namespace
   check_contact_tangent(const std::string &master, const std::string &law)
   {
     Simulation   simulation(SceneReader::read_string(scene(master), master));
-    ContactPair &pair = *simulation.contact().contact_pairs()[0];
+    ContactPair &pair            = *simulation.contact().contact_pairs()[0];
     std::array<Body *, 2> bodies = {{&pair.slave(), pair.master()}};
 
     // The increment starts from U_0 = 0.3 distortion and is at U = the
@@ -129,9 +138,10 @@ namespace
       if (node.active)
         {
           const double r_n = 1. + 0.4 * std::sin(1.3 * n_active);
-          const double r_t = law == "frictionless" ? 0. :
-                             law == "stick" ? 0.1 * r_n * std::cos(2.1 * n_active) :
-                                              (n_active % 2 ? 0.3 : -0.3) * r_n;
+          const double r_t =
+            law == "frictionless" ? 0. :
+            law == "stick"        ? 0.1 * r_n * std::cos(2.1 * n_active) :
+                                    (n_active % 2 ? 0.3 : -0.3) * r_n;
           node.reaction = {{r_t, r_n}};
           ++n_active;
         }
@@ -139,18 +149,20 @@ namespace
     check(n_active >= 3, "at least three active nodes");
 
     // The dofs the contact touches, and the assembled tangent over them.
-    std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int> index;
+    std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
+               index;
     const auto add = [&](const DofVector &v) {
       for (const auto &e : v)
         index.emplace(std::make_pair(e.body, e.dof), 0);
     };
     for (const auto &node : pair.nodes())
       if (node.active)
-        for (const DofVector *v :
-             {&node.linearization.gap_row, &node.linearization.slip_row,
-              &node.linearization.sliding_row, &node.linearization.rotation_row,
-              &node.linearization.tangential_force,
-              &node.linearization.normal_force})
+        for (const DofVector *v : {&node.linearization.gap_row,
+                                   &node.linearization.slip_row,
+                                   &node.linearization.sliding_row,
+                                   &node.linearization.rotation_row,
+                                   &node.linearization.tangential_force,
+                                   &node.linearization.normal_force})
           add(*v);
     std::vector<std::pair<unsigned int, types::global_dof_index>> dofs;
     for (auto &[key, i] : index)
@@ -158,11 +170,11 @@ namespace
         i = dofs.size();
         dofs.push_back(key);
       }
-    const unsigned int  m = dofs.size();
-    FullMatrix<double>  tangent(m, m), difference(m, m);
-    FullMatrix<double>  gap_rows(n_active, m), gap_difference(n_active, m);
-    FullMatrix<double>  slip_rows(n_active, m), slip_difference(n_active, m);
-    unsigned int        k = 0;
+    const unsigned int m = dofs.size();
+    FullMatrix<double> tangent(m, m), difference(m, m);
+    FullMatrix<double> gap_rows(n_active, m), gap_difference(n_active, m);
+    FullMatrix<double> slip_rows(n_active, m), slip_difference(n_active, m);
+    unsigned int       k = 0;
     for (const auto &node : pair.nodes())
       if (node.active)
         {
@@ -182,7 +194,7 @@ namespace
         }
 
     // Central differences of F, g and u_t, the nodes keeping their segment.
-    const double h = 1e-6;
+    const double h     = 1e-6;
     const auto   state = [&](std::vector<double> &forces,
                            std::vector<double> &gaps,
                            std::vector<double> &slips) {
@@ -232,7 +244,8 @@ namespace
       for (unsigned int i = 0; i < assembled.m(); ++i)
         for (unsigned int j = 0; j < assembled.n(); ++j)
           {
-            error   = std::max(error, std::abs(assembled(i, j) - differenced(i, j)));
+            error =
+              std::max(error, std::abs(assembled(i, j) - differenced(i, j)));
             largest = std::max(largest, std::abs(differenced(i, j)));
           }
       std::cout << "  " << master << ", " << law << ": " << what << " ("
@@ -244,17 +257,18 @@ namespace
       check(error <= 1e-6 * largest || error == 0.,
             what + " differs from finite differences");
     };
-    std::cout << "  " << n_active << " active nodes, " << m << " dofs" << std::endl;
+    std::cout << "  " << n_active << " active nodes, " << m << " dofs"
+              << std::endl;
     compare(tangent, difference, "contact tangent dF/dU at fixed r");
     compare(gap_rows, gap_difference, "gap rows dg/dU");
     compare(slip_rows, slip_difference, "slip rows du_t/dU");
   }
 } // namespace
 
-#define CONTACT_TANGENT_TEST(master, law)                  \
-  GLISSADE_TEST(contact_tangent_##master##_##law)          \
-  {                                                        \
-    check_contact_tangent(#master, #law);                  \
+#define CONTACT_TANGENT_TEST(master, law)         \
+  GLISSADE_TEST(contact_tangent_##master##_##law) \
+  {                                               \
+    check_contact_tangent(#master, #law);         \
   }
 
 CONTACT_TANGENT_TEST(faceted, frictionless)

@@ -4,9 +4,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -40,8 +40,10 @@ namespace
     " set Displacement tolerance = 1e-10\nend\n";
 
   void
-  run(Simulation &simulation, const unsigned int n, const double t0 = 0.,
-      const double t1 = 1.)
+  run(Simulation        &simulation,
+      const unsigned int n,
+      const double       t0 = 0.,
+      const double       t1 = 1.)
   {
     for (unsigned int k = 1; k <= n; ++k)
       simulation.advance_to(t0 + (t1 - t0) * k / n,
@@ -56,14 +58,19 @@ GLISSADE_TEST(contact_block_rigid_flat)
 {
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n" +
-    block("block", "0, 0", "1, 0.5", "8, 4", "q1",
+    block("block",
+          "0, 0",
+          "1, 0.5",
+          "8, 4",
+          "q1",
           "  set Fixed = left: x\n"
           "  set Prescribed displacement = top: y: -0.03*t") +
     "subsection Contact floor\n set Slave body = block\n"
     " set Slave boundary = bottom\n set Alert distance = 0.1\n"
     " set Tolerance = 1e-13\n"
     " subsection Obstacle\n  set Type = line\n  set Point = 0, -0.01\n"
-    "  set Normal = 0.05, 1\n end\nend\n" + quiet;
+    "  set Normal = 0.05, 1\n end\nend\n" +
+    quiet;
   Simulation simulation(SceneReader::read_string(prm, "rigid flat"));
   run(simulation, 4);
   const auto        &pair  = *simulation.contact().contact_pairs()[0];
@@ -76,7 +83,7 @@ GLISSADE_TEST(contact_block_rigid_flat)
   check_relative(total[1], -support[1], 1e-10, "balance in y");
   check(std::abs(total[0] + support[0]) <= 1e-10 * total.norm(),
         "balance in x");
-  double most_negative_gap = 0., open_force = 0.;
+  double       most_negative_gap = 0., open_force = 0.;
   unsigned int n_open = 0, n_closed = 0;
   for (const auto &node : pair.nodes())
     {
@@ -107,17 +114,26 @@ namespace
   {
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
-           block("upper", "0, 0.5", "1, 1", upper_cells, "q1",
+           block("upper",
+                 "0, 0.5",
+                 "1, 1",
+                 upper_cells,
+                 "q1",
                  "  set Fixed = left: x\n"
                  "  set Prescribed displacement = top: y: -0.02*t") +
-           block("lower", "0, 0", "1, 0.5", "8, 4", space,
+           block("lower",
+                 "0, 0",
+                 "1, 0.5",
+                 "8, 4",
+                 space,
                  "  set Fixed = left: x; bottom: y") +
            "subsection Contact interface\n set Slave body = upper\n"
            " set Tolerance = 1e-13\n"
            " set Slave boundary = bottom\n set Master body = lower\n"
            " set Master boundary = top\n set Surface = " +
-           surface + "\n set Force transfer = spline\n"
-                     " set Alert distance = 0.05\nend\n" +
+           surface +
+           "\n set Force transfer = spline\n"
+           " set Alert distance = 0.05\nend\n" +
            quiet;
   }
 } // namespace
@@ -127,8 +143,9 @@ namespace
 GLISSADE_TEST(contact_action_reaction)
 {
   for (const auto &[surface, space] :
-       std::vector<std::pair<std::string, std::string>>{
-         {"faceted", "q1"}, {"bspline", "q1"}, {"hermite", "hermite"}})
+       std::vector<std::pair<std::string, std::string>>{{"faceted", "q1"},
+                                                        {"bspline", "q1"},
+                                                        {"hermite", "hermite"}})
     {
       Simulation simulation(
         SceneReader::read_string(two_blocks(surface, space), "two blocks"));
@@ -137,13 +154,13 @@ GLISSADE_TEST(contact_action_reaction)
       const Tensor<1, 2> slave = pair.total_force();
       // The master's share: the contact force vector summed over its value
       // dofs (derivative dofs carry moments, not force).
-      const Body  &lower   = simulation.body("lower");
-      const auto  &f       = lower.get_contact_forces();
-      const auto  &fe      = lower.space().finite_element();
+      const Body        &lower   = simulation.body("lower");
+      const auto        &f       = lower.get_contact_forces();
+      const auto        &fe      = lower.space().finite_element();
       const unsigned int per_dim = lower.space().components_per_displacement();
-      Tensor<1, 2> master;
+      Tensor<1, 2>       master;
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-      std::vector<bool> counted(lower.n_dofs(), false);
+      std::vector<bool>                    counted(lower.n_dofs(), false);
       for (const auto &cell : lower.dof_handler().active_cell_iterators())
         {
           cell->get_dof_indices(local);
@@ -182,17 +199,17 @@ GLISSADE_TEST(contact_patch_two_blocks)
            {"faceted", "q1"}, {"bspline", "q1"}, {"hermite", "hermite"}})
       {
         const bool matching = cells == "8, 3";
-        Simulation simulation(SceneReader::read_string(
-          two_blocks(surface, space, cells), "patch"));
+        Simulation simulation(
+          SceneReader::read_string(two_blocks(surface, space, cells), "patch"));
         run(simulation, 2);
-        const auto  &pair = *simulation.contact().contact_pairs()[0];
-        const double h    = matching ? 1. / 8. : 1. / 5.;
-        double       total = 0., deviation = 0.;
+        const auto         &pair  = *simulation.contact().contact_pairs()[0];
+        const double        h     = matching ? 1. / 8. : 1. / 5.;
+        double              total = 0., deviation = 0.;
         std::vector<double> pressure;
         for (const auto &node : pair.nodes())
           {
             // The end nodes carry half a tributary length.
-            const double X = node.reference_position[0];
+            const double X         = node.reference_position[0];
             const double tributary = (X < 1e-12 || X > 1 - 1e-12) ? h / 2 : h;
             pressure.push_back(node.reaction[1] / tributary);
             total += node.force()[1];
@@ -223,12 +240,14 @@ GLISSADE_TEST(contact_symmetry)
 {
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = indenter\nend\n" +
-    block("block", "0, 0", "1, 0.5", "10, 5", "q1", "  set Fixed = bottom: xy") +
+    block(
+      "block", "0, 0", "1, 0.5", "10, 5", "q1", "  set Fixed = bottom: xy") +
     "subsection Contact indenter\n set Slave body = block\n"
     " set Slave boundary = top\n set Alert distance = 0.2\n"
     " set Tolerance = 1e-13\n"
     " subsection Obstacle\n  set Type = disk\n  set Point = 0.5, 1.01\n"
-    "  set Radius = 0.5\n  set Motion = 0, -0.05*t\n end\nend\n" + quiet;
+    "  set Radius = 0.5\n  set Motion = 0, -0.05*t\n end\nend\n" +
+    quiet;
   Simulation simulation(SceneReader::read_string(prm, "indenter"));
   run(simulation, 4);
   const auto &pair  = *simulation.contact().contact_pairs()[0];
@@ -237,7 +256,7 @@ GLISSADE_TEST(contact_symmetry)
     {
       const auto &mirror = pair.node_at(
         Point<2>(1. - node.reference_position[0], node.reference_position[1]));
-      worst   = std::max(worst, std::abs(node.reaction[1] - mirror.reaction[1]));
+      worst = std::max(worst, std::abs(node.reaction[1] - mirror.reaction[1]));
       largest = std::max(largest, std::abs(node.reaction[1]));
     }
   std::cout << "  largest normal reaction " << largest
@@ -252,10 +271,14 @@ GLISSADE_TEST(contact_symmetry)
 // normal force.
 GLISSADE_TEST(contact_coulomb_stick_slip)
 {
-  const double      mu  = 0.3;
+  const double      mu = 0.3;
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n" +
-    block("block", "0, 0", "1, 0.5", "6, 3", "q1",
+    block("block",
+          "0, 0",
+          "1, 0.5",
+          "6, 3",
+          "q1",
           "  set Prescribed displacement = top: xy: 0.04*max(t-1, 0), "
           "-0.01*min(t, 1)") +
     "subsection Contact floor\n set Slave body = block\n"
@@ -264,11 +287,12 @@ GLISSADE_TEST(contact_coulomb_stick_slip)
     " subsection Obstacle\n  set Type = line\n  set Point = 0, 0\n"
     "  set Normal = 0, 1\n end\nend\n"
     "subsection Load program\n set Stage end times = 1, 2\n"
-    " set Stage increments = 2, 10\nend\n" + quiet;
+    " set Stage increments = 2, 10\nend\n" +
+    quiet;
   Simulation simulation(SceneReader::read_string(prm, "coulomb"));
   run(simulation, 2, 0., 1.);
-  const auto &pair = *simulation.contact().contact_pairs()[0];
-  bool   saw_stick = false, saw_full_slip = false;
+  const auto &pair      = *simulation.contact().contact_pairs()[0];
+  bool        saw_stick = false, saw_full_slip = false;
   for (unsigned int k = 1; k <= 10; ++k)
     {
       simulation.advance_to(1. + 0.1 * k, "increment");
@@ -293,13 +317,16 @@ GLISSADE_TEST(contact_coulomb_stick_slip)
                 << ", max ||r_t| - mu r_n| on slipping nodes " << worst_slip
                 << std::endl;
       check(worst_cone <= 1e-8 * total[1], "a reaction leaves the cone");
-      check(worst_slip <= 1e-8 * total[1], "a slipping node is not on the cone");
+      check(worst_slip <= 1e-8 * total[1],
+            "a slipping node is not on the cone");
       if (stick > 0 && std::abs(total[0]) < mu * total[1] * (1 - 1e-6))
         saw_stick = true;
       if (slip == pair.nodes().size())
         {
           saw_full_slip = true;
-          check_relative(std::abs(total[0]), mu * total[1], 1e-8,
+          check_relative(std::abs(total[0]),
+                         mu * total[1],
+                         1e-8,
                          "sliding block: |F_t| = mu F_n");
         }
     }

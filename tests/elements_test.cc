@@ -1,15 +1,15 @@
 // Element spaces: dof counts, convergence rates on a manufactured solution,
 // and the paper's static test of figs 9-11.
 
+#include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-#include <glissade/io/plotting.h>
-
-#include "test_tools.h"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -29,8 +29,8 @@ namespace
            "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
            "  set Corner 2 = " +
            x1 + "\n  set Subdivisions = " + std::to_string(nx) + ", " +
-           std::to_string(ny) + "\n end\n subsection Element\n  set Space = " +
-           space +
+           std::to_string(ny) +
+           "\n end\n subsection Element\n  set Space = " + space +
            "\n end\n subsection Material\n  set Young modulus = 1000\n"
            "  set Poisson ratio = 0.3\n end\n"
            " subsection Boundary conditions\n" +
@@ -66,13 +66,12 @@ GLISSADE_TEST(elements_dof_counts)
     {"hermite", 6 * vertices}};
   for (const auto &[space, count] : expected)
     {
-      Simulation simulation(SceneReader::read_string(
+      Simulation         simulation(SceneReader::read_string(
         block_scene(space, nx, ny, "3, 2", "set Fixed = left: xy"), space));
-      const Body        &body = simulation.body("block");
+      const Body        &body     = simulation.body("block");
       const unsigned int unknowns = body.n_dofs() - constrained_interior(body);
-      std::cout << "  " << space << ": " << unknowns << " dofs for "
-                << vertices << " nodes (expected " << count << ")"
-                << std::endl;
+      std::cout << "  " << space << ": " << unknowns << " dofs for " << vertices
+                << " nodes (expected " << count << ")" << std::endl;
       check(unknowns == count, space + ": wrong number of dofs");
     }
 }
@@ -106,17 +105,18 @@ namespace
   manufactured_errors(const std::string &space, const unsigned int n)
   {
     const std::string ux = "1e-9*exp(x)*sin(y)*t", uy = "1e-9*exp(x)*cos(y)*t";
-    const std::string conditions = "set Prescribed displacement = left: xy: " +
-                                   ux + ", " + uy + "; right: xy: " + ux +
-                                   ", " + uy + "; bottom: xy: " + ux + ", " +
-                                   uy + "; top: xy: " + ux + ", " + uy;
-    Simulation simulation(SceneReader::read_string(
-      block_scene(space, n, n, "1, 1", conditions), "manufactured"));
+    const std::string conditions =
+      "set Prescribed displacement = left: xy: " + ux + ", " + uy +
+      "; right: xy: " + ux + ", " + uy + "; bottom: xy: " + ux + ", " + uy +
+      "; top: xy: " + ux + ", " + uy;
+    Simulation simulation(
+      SceneReader::read_string(block_scene(space, n, n, "1, 1", conditions),
+                               "manufactured"));
     simulation.advance_to(1., "increment 1");
-    const Body &body      = simulation.body("block");
-    const auto  evaluator = body.space().create_evaluator(6);
+    const Body         &body      = simulation.body("block");
+    const auto          evaluator = body.space().create_evaluator(6);
     std::vector<double> values(evaluator->dofs_per_cell());
-    double e0 = 0., e1 = 0., n0 = 0., n1 = 0.;
+    double              e0 = 0., e1 = 0., n0 = 0., n1 = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
         evaluator->reinit(cell);
@@ -145,17 +145,15 @@ namespace
     for (const unsigned int n : meshes)
       {
         errors.push_back(manufactured_errors(space, n));
-        std::cout << "  " << space << ", " << n << " x " << n
-                  << ": L2 error " << errors.back().first << ", H1 error "
+        std::cout << "  " << space << ", " << n << " x " << n << ": L2 error "
+                  << errors.back().first << ", H1 error "
                   << errors.back().second << std::endl;
       }
-    const unsigned int k = errors.size() - 1;
-    const double       r0 =
-      std::log(errors[k - 1].first / errors[k].first) /
-      std::log(double(meshes[k]) / meshes[k - 1]);
-    const double r1 =
-      std::log(errors[k - 1].second / errors[k].second) /
-      std::log(double(meshes[k]) / meshes[k - 1]);
+    const unsigned int k  = errors.size() - 1;
+    const double       r0 = std::log(errors[k - 1].first / errors[k].first) /
+                      std::log(double(meshes[k]) / meshes[k - 1]);
+    const double r1 = std::log(errors[k - 1].second / errors[k].second) /
+                      std::log(double(meshes[k]) / meshes[k - 1]);
     std::cout << "  measured rates: L2 " << r0 << " (theory " << l2_rate
               << "), H1 " << r1 << " (theory " << h1_rate << ")" << std::endl;
     check(std::abs(r0 - l2_rate) <= 0.25, space + ": L2 rate off theory");
@@ -233,23 +231,23 @@ namespace
   std::pair<double, double>
   top_edge_slopes(const Body &body, const double x_node)
   {
-    const auto evaluator = body.space().create_evaluator();
+    const auto          evaluator = body.space().create_evaluator();
     std::vector<double> values(evaluator->dofs_per_cell());
-    double left = 0., right = 0.;
+    double              left = 0., right = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
-        const unsigned int top = 3; // deal.II face y = y_max
-        const double x0 = cell->face(top)->vertex(0)[0];
-        const double x1 = cell->face(top)->vertex(1)[0];
-        const bool   ends_here   = std::abs(x1 - x_node) < 1e-12;
-        const bool   starts_here = std::abs(x0 - x_node) < 1e-12;
+        const unsigned int top         = 3; // deal.II face y = y_max
+        const double       x0          = cell->face(top)->vertex(0)[0];
+        const double       x1          = cell->face(top)->vertex(1)[0];
+        const bool         ends_here   = std::abs(x1 - x_node) < 1e-12;
+        const bool         starts_here = std::abs(x0 - x_node) < 1e-12;
         if (!ends_here && !starts_here)
           continue;
         evaluator->reinit_at(cell, top, ends_here ? 1. : 0.);
         cell->get_dof_values(body.displacement(), values.begin(), values.end());
         const Tensor<2, 2> H = evaluator->gradient(values, 0);
         // Deformed tangent of the edge: (I + H) e_x.
-        const double angle = std::atan2(H[1][0], 1. + H[0][0]);
+        const double angle         = std::atan2(H[1][0], 1. + H[0][0]);
         (ends_here ? left : right) = angle;
       }
     return {left, right};
@@ -266,15 +264,16 @@ GLISSADE_TEST(hermite_static)
     "set Point loads = point(0.5, 1): 0, -10*t; point(1.5, 1): 0, -10*t; "
     "point(2.5, 1): 0, -10*t";
   std::map<std::string, double> largest_jump;
-  const std::string directory = "hermite_static";
+  const std::string             directory = "hermite_static";
   std::filesystem::create_directories(directory);
   std::ofstream csv(directory + "/top_edges.csv");
   csv << "space,x,y\n";
   for (const std::string space : {"q1", "q8", "hermite"})
     {
       const std::string clamp = space == "hermite" ? "all" : "xy";
-      Simulation simulation(SceneReader::read_string(
-        block_scene(space, 3, 1, "3, 1", "set Fixed = bottom: " + clamp + "\n" + loads),
+      Simulation        simulation(SceneReader::read_string(
+        block_scene(
+          space, 3, 1, "3, 1", "set Fixed = bottom: " + clamp + "\n" + loads),
         "static test"));
       simulation.advance_to(1., "increment 1");
       const Body &body = simulation.body("block");
@@ -288,15 +287,17 @@ GLISSADE_TEST(hermite_static)
             std::max(largest_jump[space], std::abs(right - left));
         }
       // The deformed top edge for the picture.
-      const auto evaluator = body.space().create_evaluator();
+      const auto          evaluator = body.space().create_evaluator();
       std::vector<double> values(evaluator->dofs_per_cell());
       for (const auto &cell : body.dof_handler().active_cell_iterators())
         for (unsigned int k = 0; k <= 20; ++k)
           {
             evaluator->reinit_at(cell, 3, k / 20.);
-            cell->get_dof_values(body.displacement(), values.begin(), values.end());
+            cell->get_dof_values(body.displacement(),
+                                 values.begin(),
+                                 values.end());
             const Tensor<1, 2> u = evaluator->value(values, 0);
-            const Point<2> X = evaluator->quadrature_point(0);
+            const Point<2>     X = evaluator->quadrature_point(0);
             csv << space << ',' << X[0] + u[0] << ',' << X[1] + u[1] << '\n';
           }
     }

@@ -14,14 +14,14 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <limits>
 #include <memory>
 #include <sstream>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -63,10 +63,10 @@ namespace
    * value of the history must be finite, whatever happened.
    */
   Run
-  run(const std::string              &label,
-      const std::string              &scene_file_or_text,
-      std::vector<std::string>        overrides,
-      const bool                      is_text = false)
+  run(const std::string       &label,
+      const std::string       &scene_file_or_text,
+      std::vector<std::string> overrides,
+      const bool               is_text = false)
   {
     overrides.push_back("Output/Directory=extreme_output/" + label);
     overrides.push_back("Output/Progress=false");
@@ -75,19 +75,17 @@ namespace
     try
       {
         const SceneDescription scene =
-          is_text ? SceneReader::read_string(scene_file_or_text, label,
-                                             overrides) :
-                    SceneReader::read_file(source_path(scene_file_or_text),
-                                           overrides);
+          is_text ?
+            SceneReader::read_string(scene_file_or_text, label, overrides) :
+            SceneReader::read_file(source_path(scene_file_or_text), overrides);
         result.simulation = std::make_unique<Simulation>(scene);
         result.simulation->run();
         const RunStatistics &s = result.simulation->statistics();
         result.converged       = true;
-        result.outcome = "converged: " + std::to_string(s.increments) +
-                         " increments, " +
-                         std::to_string(s.newton_iterations) +
-                         " Newton iterations, " +
-                         std::to_string(s.cut_backs) + " cut-backs";
+        result.outcome         = "converged: " + std::to_string(s.increments) +
+                         " increments, " + std::to_string(s.newton_iterations) +
+                         " Newton iterations, " + std::to_string(s.cut_backs) +
+                         " cut-backs";
       }
     catch (const InputError &e)
       {
@@ -149,7 +147,8 @@ subsection Body block
     set Poisson ratio = 0.3
   end
   subsection Boundary conditions
-    set )" + top_condition + R"(
+    set )" +
+           top_condition + R"(
   end
 end
 subsection Contact floor
@@ -157,20 +156,25 @@ subsection Contact floor
   set Slave boundary       = bottom
   set Master body          = rigid
   set Alert distance       = 0.01
-  set Friction coefficient = )" + exact(friction) + R"(
+  set Friction coefficient = )" +
+           exact(friction) + R"(
   subsection Obstacle
     set Type   = line
-    set Point  = 0, )" + flat_y + R"(
+    set Point  = 0, )" +
+           flat_y + R"(
     set Normal = 0, 1
-    set Motion = )" + motion + R"(
+    set Motion = )" +
+           motion + R"(
   end
 end
 subsection Load program
   set Stage end times  = 1
-  set Stage increments = )" + std::to_string(increments) + R"(
+  set Stage increments = )" +
+           std::to_string(increments) + R"(
 end
 subsection Output
-  set History = )" + history + R"(
+  set History = )" +
+           history + R"(
 end
 )";
   }
@@ -186,7 +190,8 @@ end
    * in y) add up to zero.
    */
   void
-  check_beam_balance(const Run &r, const double load_scale,
+  check_beam_balance(const Run         &r,
+                     const double       load_scale,
                      const std::string &label)
   {
     const double t    = r.history().last_row()[1];
@@ -215,7 +220,9 @@ end
     for (const char *c : {"x", "y"})
       check_close(r.last(std::string("inner_R") + c + "_inner") +
                     r.last(std::string("interface_F") + c),
-                  0., total_load, 1e-9,
+                  0.,
+                  total_load,
+                  1e-9,
                   label + ": " + c + " balance of the inner ring");
   }
 
@@ -253,16 +260,18 @@ end
           result.non_radial =
             std::max(result.non_radial,
                      std::abs(cross_product_2d(radial / radial.norm()) *
-                              node.force()) / f);
+                              node.force()) /
+                       f);
       }
     for (const auto &node : nodes)
-      result.spread = std::max(result.spread,
-                               std::abs(node.force().norm() - result.mean) /
-                                 result.mean);
+      result.spread =
+        std::max(result.spread,
+                 std::abs(node.force().norm() - result.mean) / result.mean);
     std::cout << "    " << result.active << " active nodes of " << nodes.size()
               << ", forces from " << result.smallest << " to " << result.largest
               << " N (mean " << result.mean << "), spread " << result.spread
-              << ", largest non-radial share " << result.non_radial << std::endl;
+              << ", largest non-radial share " << result.non_radial
+              << std::endl;
     return result;
   }
 } // namespace
@@ -276,13 +285,14 @@ GLISSADE_TEST(extreme_young_modulus_1_to_1e12)
 {
   const auto scaled = [](const double E) {
     const double scale = E / 90e6;
-    return run("E_" + exact(E),
-               rigid_ring,
-               {"Body beam/Material/Young modulus=" + exact(E),
-                "Body beam/Boundary conditions/Tractions=left: 0, -50000/0.186*t*" +
-                  exact(scale),
-                "Load program/Stage end times=0.5",
-                "Load program/Stage increments=5"});
+    return run(
+      "E_" + exact(E),
+      rigid_ring,
+      {"Body beam/Material/Young modulus=" + exact(E),
+       "Body beam/Boundary conditions/Tractions=left: 0, -50000/0.186*t*" +
+         exact(scale),
+       "Load program/Stage end times=0.5",
+       "Load program/Stage increments=5"});
   };
   const Run reference = scaled(90e6);
   check(reference.converged, "the reference run must converge");
@@ -292,13 +302,21 @@ GLISSADE_TEST(extreme_young_modulus_1_to_1e12)
       const Run    r     = scaled(E);
       const double scale = E / 90e6;
       check(r.converged, "E = " + exact(E) + " must converge");
-      check_close(r.last("beam_ux_0_0"), reference.last("beam_ux_0_0"),
-                  u_scale, 1e-7, "E = " + exact(E) + ": ux at (0, 0)");
-      check_close(r.last("beam_uy_0_0"), reference.last("beam_uy_0_0"),
-                  u_scale, 1e-7, "E = " + exact(E) + ": uy at (0, 0)");
+      check_close(r.last("beam_ux_0_0"),
+                  reference.last("beam_ux_0_0"),
+                  u_scale,
+                  1e-7,
+                  "E = " + exact(E) + ": ux at (0, 0)");
+      check_close(r.last("beam_uy_0_0"),
+                  reference.last("beam_uy_0_0"),
+                  u_scale,
+                  1e-7,
+                  "E = " + exact(E) + ": uy at (0, 0)");
       check_close(r.last("beam_on_ring_Fy") / scale,
                   reference.last("beam_on_ring_Fy"),
-                  25000., 1e-7, "E = " + exact(E) + ": contact force / scale");
+                  25000.,
+                  1e-7,
+                  "E = " + exact(E) + ": contact force / scale");
       check_beam_balance(r, scale, "E = " + exact(E));
     }
 }
@@ -316,20 +334,21 @@ GLISSADE_TEST(extreme_stiffness_ratio_1e_3_to_1e6)
   double previous_share = std::numeric_limits<double>::max();
   for (const double ratio : {1e-3, 1., 1e6})
     {
-      const double E_ring = 90e6 / ratio;
-      const double scale  = std::min(1., E_ring / 1e6);
-      const std::string label = "stiffness_ratio_" + exact(ratio);
-      const Run r = run(label,
+      const double      E_ring = 90e6 / ratio;
+      const double      scale  = std::min(1., E_ring / 1e6);
+      const std::string label  = "stiffness_ratio_" + exact(ratio);
+      const Run         r      = run(label,
                         beam_ring,
                         {"Body ring/Material/Young modulus=" + exact(E_ring),
-                         "Body ring/Mesh/Center=0.3, -0.5",
-                         "Body beam/Boundary conditions/Tractions=left: 0, "
-                         "-50000/0.186*t*" + exact(scale),
-                         "Load program/Stage end times=0.5",
-                         "Load program/Stage increments=10",
-                         "Output/History=contact_force(beam on ring); "
-                         "reaction(beam, right); reaction(ring, start); "
-                         "reaction(ring, end)"});
+                                      "Body ring/Mesh/Center=0.3, -0.5",
+                                      "Body beam/Boundary conditions/Tractions=left: 0, "
+                                                   "-50000/0.186*t*" +
+                                        exact(scale),
+                                      "Load program/Stage end times=0.5",
+                                      "Load program/Stage increments=10",
+                                      "Output/History=contact_force(beam on ring); "
+                                                   "reaction(beam, right); reaction(ring, start); "
+                                                   "reaction(ring, end)"});
       check(r.converged, label + " must converge");
       check_beam_balance(r, scale, label);
       const double load = 25000. * scale;
@@ -365,14 +384,14 @@ GLISSADE_TEST(extreme_coarse_rings_4_elements)
     {
       const std::string label = "coarse_rings_" + surface;
       const Run         r     = run(label,
-                          rings,
-                          {"Body inner/Mesh/Subdivisions=4, 1",
-                           "Body outer/Mesh/Subdivisions=4, 1",
-                           "Contact interface/Surface=" + surface,
-                           "Load program/Stage end times=1",
-                           "Load program/Stage increments=5",
-                           "Output/History=contact_force(interface); "
-                           "reaction(inner, inner)"});
+                        rings,
+                        {"Body inner/Mesh/Subdivisions=4, 1",
+                                     "Body outer/Mesh/Subdivisions=4, 1",
+                                     "Contact interface/Surface=" + surface,
+                                     "Load program/Stage end times=1",
+                                     "Load program/Stage increments=5",
+                                     "Output/History=contact_force(interface); "
+                                                 "reaction(inner, inner)"});
       check(r.converged, label + " must converge");
       check_inner_ring_balance(r, label, 40.); // 4 nodes of 10 N
       const InterfaceForces f = interface_forces(r);
@@ -403,13 +422,16 @@ GLISSADE_TEST(extreme_rotation_in_10_increments)
   check(fine.converged && coarse.converged, "both half turns must converge");
   const auto &a = fine.simulation->contact().contact_pairs()[0]->nodes();
   const auto &b = coarse.simulation->contact().contact_pairs()[0]->nodes();
-  double largest = 0., difference = 0.;
+  double      largest = 0., difference = 0.;
   for (unsigned int k = 0; k < a.size(); ++k)
     {
       largest    = std::max(largest, a[k].force().norm());
       difference = std::max(difference, (a[k].force() - b[k].force()).norm());
     }
-  check_close(difference, 0., largest, 1e-6,
+  check_close(difference,
+              0.,
+              largest,
+              1e-6,
               "largest nodal force difference, 10 against 100 increments");
 }
 
@@ -432,9 +454,15 @@ GLISSADE_TEST(extreme_small_increments)
         "the tiny load steps must converge");
   const double u = one.last("beam_uy_0_0");
   check(u < 0., "the tip must go down");
-  check_close(hundred.last("beam_uy_0_0"), u, std::abs(u), 1e-8,
+  check_close(hundred.last("beam_uy_0_0"),
+              u,
+              std::abs(u),
+              1e-8,
               "100 increments against 1");
-  check_close(half.last("beam_uy_0_0"), 0.5 * u, std::abs(u), 1e-5,
+  check_close(half.last("beam_uy_0_0"),
+              0.5 * u,
+              std::abs(u),
+              1e-5,
               "half the load, half the displacement");
 }
 
@@ -458,10 +486,14 @@ GLISSADE_TEST(extreme_alert_distance)
     {
       const Run r = with(alert);
       check(r.converged, "alert distance " + exact(alert) + " must converge");
-      check_close(r.last("beam_uy_0_0"), reference.last("beam_uy_0_0"),
-                  u_scale, 1e-8, "alert " + exact(alert) + ": uy at (0, 0)");
+      check_close(r.last("beam_uy_0_0"),
+                  reference.last("beam_uy_0_0"),
+                  u_scale,
+                  1e-8,
+                  "alert " + exact(alert) + ": uy at (0, 0)");
       double deepest = 0.;
-      for (const auto &node : r.simulation->contact().contact_pairs()[0]->nodes())
+      for (const auto &node :
+           r.simulation->contact().contact_pairs()[0]->nodes())
         if (node.projected)
           deepest = std::min(deepest, node.gap);
       std::cout << "    deepest gap " << deepest << std::endl;
@@ -480,13 +512,14 @@ GLISSADE_TEST(extreme_friction_0_to_1)
     {
       const std::string label = "friction_" + exact(mu);
       const Run         r     = run(label,
-                          rigid_ring,
-                          {pair_1 + "/Friction coefficient=" + exact(mu),
-                           "Load program/Stage increments=10"});
+                        rigid_ring,
+                        {pair_1 + "/Friction coefficient=" + exact(mu),
+                                     "Load program/Stage increments=10"});
       check(r.converged, label + " must converge");
       double       worst = 0.;
       unsigned int slip = 0, stick = 0;
-      for (const auto &node : r.simulation->contact().contact_pairs()[0]->nodes())
+      for (const auto &node :
+           r.simulation->contact().contact_pairs()[0]->nodes())
         if (node.active)
           {
             const double r_n = node.reaction[1], r_t = node.reaction[0];
@@ -523,10 +556,16 @@ GLISSADE_TEST(extreme_bipotential_beta)
     {
       const Run r = with(beta);
       check(r.converged, "beta = " + exact(beta) + " must converge");
-      check_close(r.last("beam_ux_0_0"), reference.last("beam_ux_0_0"),
-                  u_scale, 1e-7, "beta " + exact(beta) + ": ux at (0, 0)");
-      check_close(r.last("beam_uy_0_0"), reference.last("beam_uy_0_0"),
-                  u_scale, 1e-7, "beta " + exact(beta) + ": uy at (0, 0)");
+      check_close(r.last("beam_ux_0_0"),
+                  reference.last("beam_ux_0_0"),
+                  u_scale,
+                  1e-7,
+                  "beta " + exact(beta) + ": ux at (0, 0)");
+      check_close(r.last("beam_uy_0_0"),
+                  reference.last("beam_uy_0_0"),
+                  u_scale,
+                  1e-7,
+                  "beta " + exact(beta) + ": uy at (0, 0)");
     }
 }
 
@@ -539,7 +578,11 @@ GLISSADE_TEST(extreme_bipotential_beta)
 GLISSADE_TEST(extreme_contact_opens_and_closes_every_increment)
 {
   const std::string scene = block_on_flat(
-    "Fixed = top: xy", "-0.001", "0, 0.002*(1 + cos(20*pi*t))", 0., 20,
+    "Fixed = top: xy",
+    "-0.001",
+    "0, 0.002*(1 + cos(20*pi*t))",
+    0.,
+    20,
     "contact_force(floor); reaction(block, top); max_displacement(block)");
   // t_k = k/20: cos(pi k) = -1, 1, -1, ...: the flat at y = -0.001 (open,
   // 1 mm below) for odd k and at y = 0.003 (3 mm into the block) for even k.
@@ -557,15 +600,18 @@ GLISSADE_TEST(extreme_contact_opens_and_closes_every_increment)
         {
           ++open;
           check(std::abs(force) < 1e-9 && u < 1e-12,
-                "increment " + std::to_string(k) + " should be open and at rest");
+                "increment " + std::to_string(k) +
+                  " should be open and at rest");
         }
       else
         {
           ++closed;
-          check(force > 0., "increment " + std::to_string(k) + " should be closed");
+          check(force > 0.,
+                "increment " + std::to_string(k) + " should be closed");
           check(std::abs(force + r.history().value(row, "block_Ry_top")) <=
                   1e-9 * force,
-                "increment " + std::to_string(k) + ": floor and clamp unbalanced");
+                "increment " + std::to_string(k) +
+                  ": floor and clamp unbalanced");
         }
     }
   double worst_gap = 0.;
@@ -602,7 +648,7 @@ GLISSADE_TEST(extreme_nearly_incompressible_locking)
         if (space == "hermite")
           overrides.push_back("Body beam/Boundary conditions/Fixed=left: all");
         const std::string label = "locking_" + space + "_" + exact(nu);
-        const Run r = run(label, "prm/table1_beam.prm", overrides);
+        const Run         r     = run(label, "prm/table1_beam.prm", overrides);
         check(r.converged, label + " must converge");
         const double E_plane = E / (1. - nu * nu);
         const double I = h * h * h / 12., G = E / (2. * (1. + nu));
@@ -627,19 +673,24 @@ GLISSADE_TEST(extreme_grazing_contact)
 {
   for (const double mu : {0., 0.3})
     {
-      const std::string scene = block_on_flat(
-        "Prescribed displacement = top: xy: 0.5*t, 0", "0", "0, 0", mu, 10,
-        "contact_force(floor); max_displacement(block)");
+      const std::string scene =
+        block_on_flat("Prescribed displacement = top: xy: 0.5*t, 0",
+                      "0",
+                      "0, 0",
+                      mu,
+                      10,
+                      "contact_force(floor); max_displacement(block)");
       const std::string label = "grazing_mu_" + exact(mu);
       const Run         r     = run(label, scene, {}, true);
       check(r.converged, label + " must converge");
-      double worst_gap = 0., largest_uy = 0.;
+      double      worst_gap = 0., largest_uy = 0.;
       const Body &block = r.simulation->body("block");
-      for (const auto &node : r.simulation->contact().contact_pairs()[0]->nodes())
+      for (const auto &node :
+           r.simulation->contact().contact_pairs()[0]->nodes())
         {
-          worst_gap  = std::max(worst_gap, std::abs(node.gap));
-          largest_uy = std::max(largest_uy,
-                                std::abs(block.displacement()(node.dofs[1])));
+          worst_gap = std::max(worst_gap, std::abs(node.gap));
+          largest_uy =
+            std::max(largest_uy, std::abs(block.displacement()(node.dofs[1])));
         }
       const double force = std::hypot(r.last("floor_Fx"), r.last("floor_Fy"));
       std::cout << "    contact force " << force << " N, largest |gap| "
@@ -668,9 +719,12 @@ GLISSADE_TEST(extreme_grazing_contact)
 GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
 {
   // (surface, degrees turned).
-  const std::vector<std::pair<std::string, double>> runs = {
-    {"bspline", 0.}, {"bspline", 9.}, {"hermite", 0.}, {"hermite", 9.},
-    {"faceted", 0.}, {"faceted", 9.}};
+  const std::vector<std::pair<std::string, double>> runs = {{"bspline", 0.},
+                                                            {"bspline", 9.},
+                                                            {"hermite", 0.},
+                                                            {"hermite", 9.},
+                                                            {"faceted", 0.},
+                                                            {"faceted", 9.}};
   for (const auto &[surface, degrees] : runs)
     {
       std::vector<std::string> overrides = {
@@ -684,8 +738,8 @@ GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
         {
           overrides.push_back("Body outer/Element/Space=hermite");
         }
-      const std::string label =
-        "nodes_on_seam_" + surface + "_" + std::to_string(int(degrees)) + "_degrees";
+      const std::string label = "nodes_on_seam_" + surface + "_" +
+                                std::to_string(int(degrees)) + "_degrees";
       const Run r = run(label, rings, overrides);
       check(r.converged, label + " must converge");
       check_inner_ring_balance(r, label);
@@ -693,7 +747,7 @@ GLISSADE_TEST(extreme_slave_nodes_on_master_nodes_and_seam)
 
       // The node on the seam: at the start of the first segment or the end
       // of the last (to the accuracy of the contact solve, 1e-9 here).
-      const auto &nodes        = r.simulation->contact().contact_pairs()[0]->nodes();
+      const auto &nodes = r.simulation->contact().contact_pairs()[0]->nodes();
       int         last_segment = 0;
       for (const auto &node : nodes)
         last_segment = std::max(last_segment, node.segment);
@@ -731,17 +785,17 @@ GLISSADE_TEST(extreme_fine_mesh_320_elements)
     {
       const std::string label = "fine_mesh_" + surface;
       const Run         r     = run(label,
-                          rings,
-                          {"Body inner/Mesh/Subdivisions=320, 32",
-                           "Body outer/Mesh/Subdivisions=320, 32",
-                           "Body outer/Boundary conditions/Nodal loads=outer: "
-                           "-1.25*x/sqrt(x^2+y^2)*min(t, 1), "
-                           "-1.25*y/sqrt(x^2+y^2)*min(t, 1)",
-                           "Contact interface/Surface=" + surface,
-                           "Load program/Stage end times=1",
-                           "Load program/Stage increments=10",
-                           "Output/History=contact_force(interface); "
-                           "reaction(inner, inner)"});
+                        rings,
+                        {"Body inner/Mesh/Subdivisions=320, 32",
+                                     "Body outer/Mesh/Subdivisions=320, 32",
+                                     "Body outer/Boundary conditions/Nodal loads=outer: "
+                                                 "-1.25*x/sqrt(x^2+y^2)*min(t, 1), "
+                                                 "-1.25*y/sqrt(x^2+y^2)*min(t, 1)",
+                                     "Contact interface/Surface=" + surface,
+                                     "Load program/Stage end times=1",
+                                     "Load program/Stage increments=10",
+                                     "Output/History=contact_force(interface); "
+                                                 "reaction(inner, inner)"});
       check(r.converged, label + " must converge");
       check_inner_ring_balance(r, label);
       const InterfaceForces f = interface_forces(r);

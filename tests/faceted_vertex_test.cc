@@ -7,10 +7,10 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -38,20 +38,20 @@ namespace
       c + "*(cos(" + angle + ")*x - sin(" + angle + ")*y) - x";
     const std::string uy =
       c + "*(sin(" + angle + ")*x + cos(" + angle + ")*y) - y";
-    Simulation simulation(SceneReader::read_file(
+    Simulation  simulation(SceneReader::read_file(
       source_path("prm/case3_rings.prm"),
       {"Body inner/Boundary conditions/Prescribed rotation=inner: 0, 0: " +
-         angle,
-       "Body outer/Boundary conditions/Fixed=",
-       "Body outer/Boundary conditions/Nodal loads=",
-       "Body outer/Boundary conditions/Prescribed displacement=outer: xy: " +
-         ux + ", " + uy,
-       "Contact interface/Faceted vertex rule=" + rule,
-       "Load program/Stage increments=10, 20",
-       "Output/Progress=false",
-       "Output/VTU interval=0",
-       "Output/History=",
-       "Output/Directory=faceted_vertex_test/" + rule}));
+          angle,
+        "Body outer/Boundary conditions/Fixed=",
+        "Body outer/Boundary conditions/Nodal loads=",
+        "Body outer/Boundary conditions/Prescribed displacement=outer: xy: " +
+          ux + ", " + uy,
+        "Contact interface/Faceted vertex rule=" + rule,
+        "Load program/Stage increments=10, 20",
+        "Output/Progress=false",
+        "Output/VTU interval=0",
+        "Output/History=",
+        "Output/Directory=faceted_vertex_test/" + rule}));
     const auto &pair  = *simulation.contact().contact_pairs().at(0);
     const Body &inner = pair.slave();
     // Per slave node, its force's components on the radius and across it
@@ -62,14 +62,12 @@ namespace
       std::vector<Tensor<1, 2>> forces;
       for (const auto &node : pair.nodes())
         {
-          const Point<2> x =
-            node.reference_position +
-            Tensor<1, 2>({inner.displacement()(node.dofs[0]),
-                          inner.displacement()(node.dofs[1])});
+          const Point<2> x = node.reference_position +
+                             Tensor<1, 2>({inner.displacement()(node.dofs[0]),
+                                           inner.displacement()(node.dofs[1])});
           const Tensor<1, 2> radial = x / x.norm();
           const Tensor<1, 2> across({-radial[1], radial[0]});
-          const Tensor<1, 2> f =
-            node.active ? node.force() : Tensor<1, 2>();
+          const Tensor<1, 2> f = node.active ? node.force() : Tensor<1, 2>();
           forces.push_back(Tensor<1, 2>({f * radial, f * across}));
         }
       if (increment == 10)
@@ -80,8 +78,8 @@ namespace
       for (const auto &f : compressed)
         mean += f.norm() / compressed.size();
       for (unsigned int k = 0; k < forces.size(); ++k)
-        largest_change = std::max(largest_change,
-                                  (forces[k] - compressed[k]).norm() / mean);
+        largest_change =
+          std::max(largest_change, (forces[k] - compressed[k]).norm() / mean);
     };
     simulation.run();
     std::cout << "  " << rule << ": largest change of a contact force over "

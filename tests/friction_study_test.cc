@@ -2,10 +2,10 @@
 
 #include <paper_studies/friction_study.h>
 
-#include "test_tools.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace glissade_tests;
@@ -20,25 +20,29 @@ using namespace glissade_tests;
 // round-off).
 GLISSADE_TEST(friction_study_case3_stick_then_slip)
 {
-  const FrictionRun run = FrictionStudy::run_variant(
-    source_path("prm/case3_rings.prm"), "bspline", 0.1,
-    "friction_study_test",
-    {"Load program/Stage end times=1, 1.01",
-     "Load program/Stage increments=10, 10", "Output/VTU interval=0",
-     "Output/History="});
+  const FrictionRun run =
+    FrictionStudy::run_variant(source_path("prm/case3_rings.prm"),
+                               "bspline",
+                               0.1,
+                               "friction_study_test",
+                               {"Load program/Stage end times=1, 1.01",
+                                "Load program/Stage increments=10, 10",
+                                "Output/VTU interval=0",
+                                "Output/History="});
   check(run.time.size() == 20, "20 increments");
   for (unsigned int i = 0; i < 10; ++i)
     check(run.sticking[i] == 40 && run.slipping[i] == 0,
-          "compression: every node sticks (increment " +
-            std::to_string(i + 1) + ": " + std::to_string(run.sticking[i]) +
-            " sticking)");
+          "compression: every node sticks (increment " + std::to_string(i + 1) +
+            ": " + std::to_string(run.sticking[i]) + " sticking)");
   std::cout << "  stick -> slip at increments:";
   for (unsigned int i = 10; i < 20; ++i)
     std::cout << ' ' << run.sticking[i] << '/' << run.slipping[i];
   std::cout << std::endl;
   check(run.slipping.back() == 40, "the turn: every node slides at the end");
-  check_relative(run.tangential_force.back() / run.normal_force.back(), 0.1,
-                 1e-9, "sum |r_t| / sum r_n once every node slides");
+  check_relative(run.tangential_force.back() / run.normal_force.back(),
+                 0.1,
+                 1e-9,
+                 "sum |r_t| / sum r_n once every node slides");
   std::cout << "  worst cone excess " << run.worst_cone_excess << std::endl;
   check(run.worst_cone_excess < 1e-10, "Coulomb's cone violated");
 }

@@ -10,19 +10,20 @@
 //   d^3X/dtheta^3, tangential on a circle) and O(h^3) in the normal.
 
 #include <glissade/contact/lagrange_edge_curve.h>
+
 #include <paper_studies/geometric_study.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace glissade_tests;
 
 namespace
 {
-  const std::vector<unsigned int> paper_counts = {16, 18, 20, 22,
-                                                  24, 26, 28, 30};
+  const std::vector<unsigned int> paper_counts =
+    {16, 18, 20, 22, 24, 26, 28, 30};
 }
 
 GLISSADE_TEST(geometric_study_q4_sagitta)
@@ -36,8 +37,8 @@ GLISSADE_TEST(geometric_study_q4_sagitta)
                      "Q4 max |g| (%), n_e = " + std::to_string(n_e));
     }
   // The paper's figure: 0.13 % at n_e = 30; the sagitta is 0.137 %.
-  const double at_30 =
-    GeometricStudy::max_gap_error_percent(GeometricStudy::evaluate("q4", 30, 41));
+  const double at_30 = GeometricStudy::max_gap_error_percent(
+    GeometricStudy::evaluate("q4", 30, 41));
   check_relative(at_30, 0.137, 0.01, "Q4 max |g| at n_e = 30 vs 0.137 %");
 }
 
@@ -152,28 +153,29 @@ GLISSADE_TEST(surface_lagrange_edge_curve)
           for (double s = 0.; s <= 1.; s += 0.05)
             {
               const auto c = curve.value(segment, s);
-              worst = std::max(worst, std::abs(c[1] - f(c[0])) +
-                                        std::abs(c[0] - (segment + s)));
+              worst        = std::max(worst,
+                               std::abs(c[1] - f(c[0])) +
+                                 std::abs(c[0] - (segment + s)));
               MasterCurve::NodeWeights w;
               curve.weights(segment, s, w);
               MasterCurve::Point sum = {{0., 0.}};
               for (const auto &[node, phi] : w)
                 {
-                  const auto &p =
-                    node < vertices.size() ? vertices[node] :
-                                             edge[node - vertices.size()];
+                  const auto &p = node < vertices.size() ?
+                                    vertices[node] :
+                                    edge[node - vertices.size()];
                   sum[0] += phi * p[0];
                   sum[1] += phi * p[1];
                 }
-              worst_weights = std::max(worst_weights,
-                                       std::hypot(sum[0] - c[0], sum[1] - c[1]));
+              worst_weights =
+                std::max(worst_weights,
+                         std::hypot(sum[0] - c[0], sum[1] - c[1]));
               inside = inside && c[0] >= low[0] - 1e-12 &&
                        c[0] <= high[0] + 1e-12 && c[1] >= low[1] - 1e-12 &&
                        c[1] <= high[1] + 1e-12;
             }
         }
-      std::cout << "  degree " << degree
-                << ": distance from y = x^p: " << worst
+      std::cout << "  degree " << degree << ": distance from y = x^p: " << worst
                 << ", weights vs value: " << worst_weights << std::endl;
       check(worst < 1e-12, "does not reproduce a polynomial of its degree");
       check(worst_weights < 1e-12, "weights do not reproduce the curve");

@@ -8,9 +8,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -38,8 +38,10 @@ namespace
   total_normal_reaction(const Simulation &simulation)
   {
     double sum = 0.;
-    for (const auto &node :
-         const_cast<Simulation &>(simulation).contact().contact_pairs()[0]->nodes())
+    for (const auto &node : const_cast<Simulation &>(simulation)
+                              .contact()
+                              .contact_pairs()[0]
+                              ->nodes())
       sum += node.reaction[1];
     return sum;
   }
@@ -77,14 +79,15 @@ GLISSADE_TEST(held_by_contact_rings_one_support_lame)
   const double mu     = E / (2. * (1. + nu));
   const double p      = 400. / (2. * M_PI * b);
   // u = A (r - a^2 / r), sigma_rr = 2 (lambda + mu) A + 2 mu A a^2 / r^2.
-  const double A = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
-  const double u_b_lame         = A * (b - a * a / b);
-  const double interface_lame   = -A * (2. * (lambda + mu) + 2. * mu * a * a / (c * c));
+  const double A        = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
+  const double u_b_lame = A * (b - a * a / b);
+  const double interface_lame =
+    -A * (2. * (lambda + mu) + 2. * mu * a * a / (c * c));
 
-  const double u_four = mean_radial_displacement(four->body("outer"), b);
-  const double u_one  = mean_radial_displacement(one->body("outer"), b);
-  const double p_four = total_normal_reaction(*four) / (2. * M_PI * c);
-  const double p_one  = total_normal_reaction(*one) / (2. * M_PI * c);
+  const double u_four       = mean_radial_displacement(four->body("outer"), b);
+  const double u_one        = mean_radial_displacement(one->body("outer"), b);
+  const double p_four       = total_normal_reaction(*four) / (2. * M_PI * c);
+  const double p_one        = total_normal_reaction(*one) / (2. * M_PI * c);
   const double four_error_u = std::abs(u_four - u_b_lame) / std::abs(u_b_lame);
   const double four_error_p =
     std::abs(p_four - interface_lame) / interface_lame;
@@ -92,16 +95,21 @@ GLISSADE_TEST(held_by_contact_rings_one_support_lame)
             << p_four << " (Lame " << u_b_lame << ", " << interface_lame
             << "; deviations " << four_error_u << ", " << four_error_p << ")"
             << std::endl;
-  check_relative(u_one, u_b_lame, 1.01 * four_error_u + 1e-9,
+  check_relative(u_one,
+                 u_b_lame,
+                 1.01 * four_error_u + 1e-9,
                  "u_r(2), one support, against Lame");
-  check_relative(p_one, interface_lame, 1.01 * four_error_p + 1e-9,
+  check_relative(p_one,
+                 interface_lame,
+                 1.01 * four_error_p + 1e-9,
                  "interface pressure, one support, against Lame");
   check_relative(u_one, u_four, 1e-8, "u_r(2), one support against four");
 
   // The support carries nothing but round-off of the 400 applied.
   const Tensor<1, 2> reaction = one->body("outer").reaction("point(2, 0)");
   std::cout << "  reaction of the one support: " << reaction[1] << std::endl;
-  check(std::abs(reaction[1]) <= 1e-10 * 400., "the support's reaction is zero");
+  check(std::abs(reaction[1]) <= 1e-10 * 400.,
+        "the support's reaction is zero");
 }
 
 
@@ -116,8 +124,10 @@ namespace
   std::string
   squeezed_puck(const unsigned int increments)
   {
-    const auto block = [](const std::string &name, const std::string &y0,
-                          const std::string &y1, const std::string &supports) {
+    const auto block = [](const std::string &name,
+                          const std::string &y0,
+                          const std::string &y1,
+                          const std::string &supports) {
       return "subsection Body " + name +
              "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = 0, " +
              y0 + "\n  set Corner 2 = 2, " + y1 +
@@ -126,22 +136,31 @@ namespace
              " subsection Boundary conditions\n" +
              supports + " end\nend\n";
     };
-    const auto pair = [](const std::string &name, const std::string &master,
+    const auto pair = [](const std::string &name,
+                         const std::string &master,
                          const std::string &slave_side,
                          const std::string &master_side) {
-      return "subsection Contact " + name + "\n set Slave body = puck\n"
-             " set Slave boundary = " + slave_side + "\n set Master body = " +
-             master + "\n set Master boundary = " + master_side +
+      return "subsection Contact " + name +
+             "\n set Slave body = puck\n"
+             " set Slave boundary = " +
+             slave_side + "\n set Master body = " + master +
+             "\n set Master boundary = " + master_side +
              "\n set Alert distance = 0.1\n set Friction coefficient = 0.5\n"
              " set Tolerance = 1e-13\nend\n";
     };
     return "subsection Scene\n set Bodies = base, puck, press\n"
            " set Contact pairs = lower, upper\nend\n" +
-           block("base", "0", "0.5",
+           block("base",
+                 "0",
+                 "0.5",
                  "  set Fixed = bottom: y; point(1, 0): x\n") +
-           block("puck", "0.5", "1",
+           block("puck",
+                 "0.5",
+                 "1",
                  "  set Point loads = point(2, 0.75): 0.3*t, 0\n") +
-           block("press", "1", "1.5",
+           block("press",
+                 "1",
+                 "1.5",
                  "  set Fixed = point(1, 1.5): x\n"
                  "  set Prescribed displacement = top: y: -0.02*t\n") +
            pair("lower", "base", "bottom", "top") +
@@ -170,7 +189,7 @@ GLISSADE_TEST(held_by_contact_puck_squeezed_with_friction)
         SceneReader::read_string(squeezed_puck(increments), "puck"));
       for (unsigned int k = 1; k <= increments; ++k)
         simulation.advance_to(double(k) / increments, "increment");
-      const auto &pairs = simulation.contact().contact_pairs();
+      const auto        &pairs = simulation.contact().contact_pairs();
       const Tensor<1, 2> lower = pairs[0]->total_force();
       const Tensor<1, 2> upper = pairs[1]->total_force();
       const Tensor<1, 2> load({0.3, 0.});
@@ -219,7 +238,9 @@ GLISSADE_TEST(held_by_contact_rubber_block_to_half_height)
         "subsection Scene\n set Bodies = block\n set Contact pairs = base\nend\n"
         "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
         "  set Corner 1 = -10, 0\n  set Corner 2 = 10, 10\n"
-        "  set Subdivisions = " + subdivisions + "\n end\n"
+        "  set Subdivisions = " +
+        subdivisions +
+        "\n end\n"
         " subsection Material\n  set Young modulus = 5\n"
         "  set Poisson ratio = 0.45\n end\n"
         " subsection Boundary conditions\n"
@@ -236,10 +257,10 @@ GLISSADE_TEST(held_by_contact_rubber_block_to_half_height)
       Simulation simulation(SceneReader::read_string(prm, "rubber"));
       for (unsigned int k = 1; k <= 40; ++k)
         simulation.advance_to(k / 40., "increment " + std::to_string(k));
-      const RunStatistics s       = simulation.statistics();
+      const RunStatistics s = simulation.statistics();
       const Tensor<1, 2>  contact =
         simulation.contact().contact_pairs()[0]->total_force();
-      const double        top = simulation.body("block").reaction("top")[1];
+      const double top = simulation.body("block").reaction("top")[1];
       std::cout << "  mesh " << subdivisions << ": 50 % compression in 40 "
                 << "increments, " << s.newton_iterations
                 << " Newton iterations, " << s.cut_backs << " cut-backs; "

@@ -7,10 +7,10 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
 #include <iomanip>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -74,7 +74,8 @@ GLISSADE_TEST(mesh_ring_area)
       const double exact = 0.5 * n * std::sin(2 * M_PI / n) * (4. - 0.25);
       check_relative(area, exact, 1e-13, "ring area, n = " + std::to_string(n));
     }
-  Simulation half(SceneReader::read_string(ring_scene("half ring", 40), "ring"));
+  Simulation half(
+    SceneReader::read_string(ring_scene("half ring", 40), "ring"));
   const double exact = 0.5 * 40 * std::sin(M_PI / 40) * (4. - 0.25);
   check_relative(GridTools::volume(half.body("ring").triangulation()),
                  exact,
@@ -87,7 +88,8 @@ GLISSADE_TEST(mesh_ring_area)
 // (plane stress, small strain: the load keeps strains near 1e-6).
 GLISSADE_TEST(mesh_gmsh_import)
 {
-  const std::string prm = pulled_gmsh_body("plate", "plate_2x1.msh", R"(  subsection Material
+  const std::string prm =
+    pulled_gmsh_body("plate", "plate_2x1.msh", R"(  subsection Material
     set Young modulus = 1e6
     set Poisson ratio = 0.25
     set Hypothesis = plane stress
@@ -95,8 +97,8 @@ GLISSADE_TEST(mesh_gmsh_import)
 )");
   Simulation simulation(SceneReader::read_string(prm, "gmsh plate"));
   simulation.advance_to(1., "increment 1");
-  const Tensor<1, 2> u = simulation.body("plate").vertex_displacement(
-    Point<2>(2., 1.));
+  const Tensor<1, 2> u =
+    simulation.body("plate").vertex_displacement(Point<2>(2., 1.));
   check_relative(u[0], 1. * 2. / 1e6, 1e-5, "u_x at (2, 1)");
   check_relative(u[1], -0.25 * 1. * 1. / 1e6, 1e-5, "u_y at (2, 1)");
   check_relative(simulation.body("plate").reaction("clamp")[0],
@@ -116,19 +118,19 @@ GLISSADE_TEST(mesh_gmsh_two_material_bar)
   for (const std::string version : {"v22", "v41"})
     {
       const bool        both_listed = version == "v41";
-      const std::string prm = pulled_gmsh_body(
+      const std::string prm         = pulled_gmsh_body(
         "bar",
         "two_material_bar_" + version + ".msh",
         std::string("  subsection Material\n    set Young modulus = ") +
           (both_listed ? "5e5" : "1e6") +
           "\n    set Poisson ratio = 0\n    set Hypothesis = plane stress\n"
-          "    set Regions = " +
+                  "    set Regions = " +
           (both_listed ? "soft, stiff" : "stiff") +
           "\n  end\n  subsection Material stiff\n    set Young modulus = "
-          "3e6\n  end\n" +
+                  "3e6\n  end\n" +
           (both_listed ?
-             "  subsection Material soft\n    set Young modulus = 1e6\n  end\n" :
-             ""));
+                     "  subsection Material soft\n    set Young modulus = 1e6\n  end\n" :
+                     ""));
       std::cout << "MSH " << version << ":" << std::endl;
       Simulation simulation(SceneReader::read_string(prm, "two-material bar"));
       simulation.advance_to(1., "increment 1");
@@ -193,15 +195,15 @@ end
     const double u_x  = ring.vertex_displacement(Point<2>(2., 0.))[0];
     const double u_y  = ring.vertex_displacement(Point<2>(0., 2.))[1];
     std::cout << "  " << file << " (" << space << "): u_r(2) = " << u_x
-              << " at theta = 0, " << u_y << " at theta = pi/2; Lame "
-              << exact << std::endl;
+              << " at theta = 0, " << u_y << " at theta = pi/2; Lame " << exact
+              << std::endl;
     return std::max(std::abs(u_x - exact), std::abs(u_y - exact)) / exact;
   };
   const double q8     = run("quarter_annulus_q8_v22.msh", "q8");
   const double q2     = run("quarter_annulus_q9_v41.msh", "q2");
   const double chords = run("quarter_annulus_chords_v22.msh", "q8");
-  std::cout << "  relative errors: q8 " << q8 << ", q2 " << q2
-            << ", chords " << chords << std::endl;
+  std::cout << "  relative errors: q8 " << q8 << ", q2 " << q2 << ", chords "
+            << chords << std::endl;
   check(q8 < 2e-3 && q2 < 2e-3,
         "a curved quadratic mesh is off Lame by more than 0.2 %");
   check(chords > 10. * std::max(q8, q2),
@@ -224,8 +226,10 @@ GLISSADE_TEST(mesh_diameter_is_deal_ii_s)
   }
   {
     Triangulation<2> rectangle;
-    GridGenerator::subdivided_hyper_rectangle(rectangle, {37, 11},
-                                              Point<2>(-1, 0), Point<2>(3, 0.7));
+    GridGenerator::subdivided_hyper_rectangle(rectangle,
+                                              {37, 11},
+                                              Point<2>(-1, 0),
+                                              Point<2>(3, 0.7));
     GridTools::distort_random(0.3, rectangle, true, 7);
     meshes.emplace_back("distorted rectangle", std::move(rectangle));
   }
@@ -237,10 +241,11 @@ GLISSADE_TEST(mesh_diameter_is_deal_ii_s)
   }
   for (const auto &[name, mesh] : meshes)
     {
-      const double ours = mesh_diameter(mesh), theirs = GridTools::diameter(mesh);
-      std::cout << "  " << name << ": " << mesh.n_vertices() << " vertices, diameter "
-                << std::setprecision(17) << ours << " (deal.II " << theirs
-                << ")" << std::endl;
+      const double ours   = mesh_diameter(mesh),
+                   theirs = GridTools::diameter(mesh);
+      std::cout << "  " << name << ": " << mesh.n_vertices()
+                << " vertices, diameter " << std::setprecision(17) << ours
+                << " (deal.II " << theirs << ")" << std::endl;
       check(ours == theirs, name + ": the same diameter as deal.II's");
     }
 }

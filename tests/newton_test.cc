@@ -6,9 +6,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;

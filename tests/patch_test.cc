@@ -8,9 +8,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -34,7 +34,7 @@ namespace
     uy.precision(17);
     ux << "(" << F[0][0] - 1 << "*x + " << F[0][1] << "*y)*t";
     uy << "(" << F[1][0] << "*x + " << F[1][1] - 1 << "*y)*t";
-    const std::string both = ux.str() + ", " + uy.str();
+    const std::string  both = ux.str() + ", " + uy.str();
     std::ostringstream prm;
     prm << "subsection Scene\n set Bodies = block\nend\n"
         << "subsection Body block\n subsection Mesh\n";
@@ -83,8 +83,8 @@ namespace
         double lo = 1e-3, hi = 1e3;
         for (int i = 0; i < 200; ++i)
           {
-            l3 = std::sqrt(lo * hi);
-            const double s = mu * (l3 * l3 - 1) + lambda * std::log(J2 * l3);
+            l3                = std::sqrt(lo * hi);
+            const double s    = mu * (l3 * l3 - 1) + lambda * std::log(J2 * l3);
             (s > 0 ? hi : lo) = l3;
           }
       }
@@ -105,17 +105,17 @@ namespace
   {
     const double lambda = young_modulus * poisson_ratio /
                           ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
-    const double mu = young_modulus / (2 * (1 + poisson_ratio));
+    const double mu           = young_modulus / (2 * (1 + poisson_ratio));
     const double lambda_plane = 2 * lambda * mu / (lambda + 2 * mu);
-    Tensor<2, 2> E = 0.5 * (transpose(F) * F);
+    Tensor<2, 2> E            = 0.5 * (transpose(F) * F);
     E[0][0] -= 0.5;
     E[1][1] -= 0.5;
     const double E33 = -lambda / (lambda + 2 * mu) * (E[0][0] + E[1][1]);
     Tensor<2, 2> S   = 2 * mu * E;
     S[0][0] += lambda_plane * (E[0][0] + E[1][1]);
     S[1][1] += lambda_plane * (E[0][0] + E[1][1]);
-    const double       J     = determinant(F) * std::sqrt(1 + 2 * E33);
-    const Tensor<2, 2> sigma = F * S * transpose(F) / J;
+    const double          J     = determinant(F) * std::sqrt(1 + 2 * E33);
+    const Tensor<2, 2>    sigma = F * S * transpose(F) / J;
     SymmetricTensor<2, 3> result;
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = i; j < 2; ++j)
@@ -140,15 +140,14 @@ namespace
 
     // Displacement, its gradient and the Cauchy stress at the points of a
     // Gauss rule richer than the assembly's, against u = (F - I) X.
-    const bool plane_stress = (hypothesis == "plane stress");
+    const bool                  plane_stress = (hypothesis == "plane stress");
     const SymmetricTensor<2, 3> exact_sigma =
       law == "neo-Hookean" ? neo_hookean_cauchy(F, plane_stress) :
                              svk_plane_stress_cauchy(F);
-    const auto evaluator = body.space().create_evaluator(5);
+    const auto          evaluator = body.space().create_evaluator(5);
     std::vector<double> values(evaluator->dofs_per_cell());
-    const Tensor<2, 2> exact_H = F - unit_symmetric_tensor<2>();
-    double max_u_error = 0., max_u = 0., max_H_error = 0.,
-           max_sigma_error = 0.;
+    const Tensor<2, 2>  exact_H = F - unit_symmetric_tensor<2>();
+    double max_u_error = 0., max_u = 0., max_H_error = 0., max_sigma_error = 0.;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
         evaluator->reinit(cell);
@@ -167,10 +166,10 @@ namespace
                        (body.material().cauchy_stress(H) - exact_sigma).norm());
           }
       }
-    std::cout << "  space " << space << (ring ? " on a ring mesh" : " on a distorted mesh")
-              << ", " << law << ", " << hypothesis
-              << ": max |u_h - u| " << max_u_error << " (max |u| " << max_u
-              << "), max |H_h - H| " << max_H_error
+    std::cout << "  space " << space
+              << (ring ? " on a ring mesh" : " on a distorted mesh") << ", "
+              << law << ", " << hypothesis << ": max |u_h - u| " << max_u_error
+              << " (max |u| " << max_u << "), max |H_h - H| " << max_H_error
               << ", max |sigma_h - sigma| / |sigma| "
               << max_sigma_error / exact_sigma.norm() << std::endl;
     check(max_u_error <= 1e-10 * max_u, "displacement is not exact");
@@ -197,21 +196,25 @@ namespace
 // Every element space, on a distorted mesh and on a ring mesh, small and
 // large strain (neo-Hookean, plane strain); plus plane stress and Saint
 // Venant-Kirchhoff on Q1.
-#define PATCH_TESTS(space)                                                   \
-  GLISSADE_TEST(patch_small_strain_##space)                                  \
-  {                                                                          \
-    run_patch(#space, small_strain_gradient(), "neo-Hookean",                \
-              "plane strain", 1);                                            \
-  }                                                                          \
-  GLISSADE_TEST(patch_large_strain_##space)                                  \
-  {                                                                          \
-    run_patch(#space, large_strain_gradient(), "neo-Hookean",                \
-              "plane strain", 4);                                            \
-  }                                                                          \
-  GLISSADE_TEST(patch_ring_large_strain_##space)                             \
-  {                                                                          \
-    run_patch(#space, large_strain_gradient(), "neo-Hookean",                \
-              "plane strain", 4, true);                                      \
+#define PATCH_TESTS(space)                                                \
+  GLISSADE_TEST(patch_small_strain_##space)                               \
+  {                                                                       \
+    run_patch(                                                            \
+      #space, small_strain_gradient(), "neo-Hookean", "plane strain", 1); \
+  }                                                                       \
+  GLISSADE_TEST(patch_large_strain_##space)                               \
+  {                                                                       \
+    run_patch(                                                            \
+      #space, large_strain_gradient(), "neo-Hookean", "plane strain", 4); \
+  }                                                                       \
+  GLISSADE_TEST(patch_ring_large_strain_##space)                          \
+  {                                                                       \
+    run_patch(#space,                                                     \
+              large_strain_gradient(),                                    \
+              "neo-Hookean",                                              \
+              "plane strain",                                             \
+              4,                                                          \
+              true);                                                      \
   }
 
 PATCH_TESTS(q1)
@@ -228,9 +231,6 @@ GLISSADE_TEST(patch_large_strain_plane_stress_q1)
 
 GLISSADE_TEST(patch_large_strain_svk_q1)
 {
-  run_patch("q1",
-            large_strain_gradient(),
-            "Saint Venant-Kirchhoff",
-            "plane stress",
-            4);
+  run_patch(
+    "q1", large_strain_gradient(), "Saint Venant-Kirchhoff", "plane stress", 4);
 }

@@ -11,9 +11,9 @@
 #include <glissade/solver/direct_solver.h>
 #include <glissade/solver/schur_cholesky.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace dealii;
 using namespace glissade;
@@ -23,16 +23,14 @@ namespace
 {
   /** 5-point Laplacian on an n x n grid, plus shift * identity. */
   void
-  make_grid_matrix(const unsigned int     n,
-                   const double           shift,
-                   SparsityPattern       &pattern,
-                   SparseMatrix<double>  &matrix)
+  make_grid_matrix(const unsigned int    n,
+                   const double          shift,
+                   SparsityPattern      &pattern,
+                   SparseMatrix<double> &matrix)
   {
     const unsigned int     size = n * n;
     DynamicSparsityPattern dsp(size, size);
-    const auto             id = [n](unsigned int i, unsigned int j) {
-      return i * n + j;
-    };
+    const auto id = [n](unsigned int i, unsigned int j) { return i * n + j; };
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         {
@@ -124,7 +122,8 @@ GLISSADE_TEST(contact_compliance_block_matches_solves)
   check(factor.n_inverse_columns() == 3, "three columns formed");
   check_columns(few, "3 columns by dpotrs");
   factor.compute_inverse_columns(positions(last));
-  check(factor.n_inverse_columns() == long(last.size()), "the whole block formed");
+  check(factor.n_inverse_columns() == long(last.size()),
+        "the whole block formed");
   check_columns(last, "the whole block by dpotri");
 
   Vector<double> b(A.m()), x(A.m());

@@ -5,9 +5,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include "test_tools.h"
-
 #include <cmath>
+
+#include "test_tools.h"
 
 using namespace glissade;
 using namespace dealii;
@@ -116,7 +116,9 @@ GLISSADE_TEST(supports_tangential_ring_lame)
   const double      expected =
     p * a * a * b / (b * b - a * a) *
     (1. / (2. * (lame_lambda() + lame_mu())) + 1. / (2. * lame_mu()));
-  check_relative(outer.mean_radial, expected, 2e-3,
+  check_relative(outer.mean_radial,
+                 expected,
+                 2e-3,
                  "u_r(b), outer held tangentially");
   std::cout << "  u_r spread at b " << outer.radial_spread
             << ", largest u_theta at b " << outer.largest_tangential

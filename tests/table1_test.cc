@@ -26,7 +26,7 @@ namespace
        "Body beam/Mesh/Subdivisions=" + std::to_string(along) + "," +
          std::to_string(across),
        "Output/Progress=false"});
-    Simulation simulation(scene);
+    Simulation         simulation(scene);
     const unsigned int n = scene.load_program.stage_increments[0];
     for (unsigned int k = 1; k <= n; ++k)
       simulation.advance_to(double(k) / n, "increment " + std::to_string(k));

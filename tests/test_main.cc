@@ -1,9 +1,8 @@
-#include "source_tree.h"
-
-#include "test_tools.h"
-
 #include <cmath>
 #include <iomanip>
+
+#include "source_tree.h"
+#include "test_tools.h"
 
 namespace glissade_tests
 {
@@ -50,8 +49,7 @@ main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      std::cout << "test " << argv[1] << ": FAILED: " << e.what()
-                << std::endl;
+      std::cout << "test " << argv[1] << ": FAILED: " << e.what() << std::endl;
       return 1;
     }
 }

@@ -60,8 +60,7 @@ namespace glissade_tests
   source_path(const std::string &relative);
 } // namespace glissade_tests
 
-#define GLISSADE_TEST(name)                                             \
-  static void                                 test_##name();            \
-  static glissade_tests::Registration registration_##name(#name,        \
-                                                          test_##name); \
-  static void                                 test_##name()
+#define GLISSADE_TEST(name)                                                    \
+  static void                         test_##name();                           \
+  static glissade_tests::Registration registration_##name(#name, test_##name); \
+  static void                         test_##name()

@@ -10,6 +10,7 @@
 #include <glissade/base/text.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+
 #include <paper_studies/case3_study.h>
 #include <paper_studies/contact_case_study.h>
 #include <paper_studies/friction_study.h>
@@ -25,15 +26,16 @@ namespace
   void
   print_usage(std::ostream &out)
   {
-    out << "usage: glissade <scene.prm> [--set 'Section/Entry=value' ...] "
-           "[--restart]\n"
-           "       glissade --print-parameters | --version | --help\n"
-           "Runs the scene described by the .prm file; --set overrides an\n"
-           "entry of the file (e.g. --set 'Body beam/Mesh/Subdivisions=60,4');\n"
-           "--restart continues from <Output directory>/checkpoint.bin.\n"
-           "Exit codes: 0 done, 1 command line, 2 input error, 3 an increment\n"
-           "did not converge, 4 other error, 5 stopped by SIGTERM/SIGINT after\n"
-           "writing a checkpoint.\n";
+    out
+      << "usage: glissade <scene.prm> [--set 'Section/Entry=value' ...] "
+         "[--restart]\n"
+         "       glissade --print-parameters | --version | --help\n"
+         "Runs the scene described by the .prm file; --set overrides an\n"
+         "entry of the file (e.g. --set 'Body beam/Mesh/Subdivisions=60,4');\n"
+         "--restart continues from <Output directory>/checkpoint.bin.\n"
+         "Exit codes: 0 done, 1 command line, 2 input error, 3 an increment\n"
+         "did not converge, 4 other error, 5 stopped by SIGTERM/SIGINT after\n"
+         "writing a checkpoint.\n";
   }
 } // namespace
 
@@ -92,8 +94,9 @@ main(int argc, char **argv)
       if (restart && study != "simulation")
         throw InputError(argv[1],
                          "--restart continues a scene; this file is a '" +
-                           study + "' study driver, which runs its scenes "
-                                   "from the start");
+                           study +
+                           "' study driver, which runs its scenes "
+                           "from the start");
       // The study drivers, by the name their file's Study entry gives.
       using StudyDriver =
         void (*)(const std::string &, const std::vector<std::string> &);
@@ -109,9 +112,8 @@ main(int argc, char **argv)
           driver->second(argv[1], overrides);
           return 0;
         }
-      const SceneDescription scene =
-        SceneReader::read_file(argv[1], overrides);
-      Simulation simulation(scene);
+      const SceneDescription scene = SceneReader::read_file(argv[1], overrides);
+      Simulation             simulation(scene);
       interruption::install_handlers();
       const bool completed = simulation.run(restart);
       std::cout << simulation.summary() << '\n'

@@ -8,6 +8,7 @@
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+
 #include <paper_studies/case3_study.h>
 #include <paper_studies/study_progress.h>
 
@@ -15,8 +16,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <sstream>
 #include <iostream>
+#include <sstream>
 
 namespace glissade
 {
@@ -25,7 +26,9 @@ namespace glissade
   double
   Case3Study::paper_spread(const std::string &variant)
   {
-    return variant.rfind("q4", 0) == 0 ? 4.8 : variant == "bspline" ? 0.0015 : 0.1;
+    return variant.rfind("q4", 0) == 0 ? 4.8 :
+           variant == "bspline"        ? 0.0015 :
+                                         0.1;
   }
 
 
@@ -43,8 +46,10 @@ namespace glissade
       variant +
       (outer_elements != 40 ? std::to_string(outer_elements) : std::string());
     std::vector<std::string> overrides = {
-      "Load program/Stage end times=1, " + std::to_string(1. + rotation_degrees / 180.),
-      "Load program/Stage increments=10, " + std::to_string(rotation_increments),
+      "Load program/Stage end times=1, " +
+        std::to_string(1. + rotation_degrees / 180.),
+      "Load program/Stage increments=10, " +
+        std::to_string(rotation_increments),
       "Output/Progress=false",
       "Output/VTU interval=0",
       "Output/Directory=" + output_directory + "/" + label};
@@ -80,9 +85,9 @@ namespace glissade
       {
         // The faceted master with another vertex rule (issue 22's study).
         overrides.push_back("Contact interface/Surface=faceted");
-        overrides.push_back(std::string("Contact interface/Faceted vertex rule=") +
-                            (variant == "q4-closest" ? "closest point" :
-                                                       "vertex normal"));
+        overrides.push_back(
+          std::string("Contact interface/Faceted vertex rule=") +
+          (variant == "q4-closest" ? "closest point" : "vertex normal"));
       }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
@@ -97,21 +102,22 @@ namespace glissade
         overrides.push_back("Contact interface/Surface=hermite");
       }
     else
-      throw InputError("Case 3 study/Variants",
-                       "unknown variant '" + variant +
-                         "' (known: q4, q4-closest, q4-vertex, bspline, bspline-spline, "
-                         "hermite)");
+      throw InputError(
+        "Case 3 study/Variants",
+        "unknown variant '" + variant +
+          "' (known: q4, q4-closest, q4-vertex, bspline, bspline-spline, "
+          "hermite)");
 
-    Simulation simulation(SceneReader::read_file(scene_file, overrides));
+    Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
     result.variant = label;
     for (const auto &b : simulation.bodies())
       result.dofs += b->n_dofs();
-    auto &pair = *simulation.contact().contact_pairs().at(0);
-    const Body  &inner = pair.slave();
+    auto       &pair  = *simulation.contact().contact_pairs().at(0);
+    const Body &inner = pair.slave();
     // The interface radius of prm/case3_rings.prm (the scale of a torque).
     const double interface_radius = 1.25;
-    const double step  = rotation_degrees * M_PI / 180. / rotation_increments;
+    const double step = rotation_degrees * M_PI / 180. / rotation_increments;
     double       previous_torque = 0., previous_force = 0.;
     // Fig 28: the master curve (a deformable master's) near the node, two
     // elements either side.
@@ -120,12 +126,13 @@ namespace glissade
         dynamic_cast<const CurveSurface *>(&pair.surface()) :
         nullptr;
     const double window_degrees = 2. * 360. / outer_elements;
-    simulation.on_increment = [&](const unsigned int increment, double) {
+    simulation.on_increment     = [&](const unsigned int increment, double) {
       if (curve_surface)
         {
-          const MasterCurve             &curve = curve_surface->master_curve();
+          const MasterCurve &curve = curve_surface->master_curve();
           std::vector<std::array<double, 2>> profile;
-          for (unsigned int segment = 0; segment < curve.n_segments(); ++segment)
+          for (unsigned int segment = 0; segment < curve.n_segments();
+               ++segment)
             for (unsigned int k = 0; k < 16; ++k)
               {
                 MasterCurve::Point c, dc, ddc;
@@ -163,15 +170,16 @@ namespace glissade
           result.tangential_work_scale +=
             0.5 * (previous_force + total_force) * interface_radius * step;
           const double ratio =
-            total_force > 0. ? 100. * torque / (interface_radius * total_force) :
-                               0.;
+            total_force > 0. ?
+                  100. * torque / (interface_radius * total_force) :
+                  0.;
           result.torque_percent.push_back(ratio);
           result.worst_torque_percent =
             std::max(result.worst_torque_percent, std::abs(ratio));
         }
       previous_torque = torque;
       previous_force  = total_force;
-      double mean = 0.;
+      double mean     = 0.;
       for (const double f : forces)
         mean += f / forces.size();
       result.mean_force.push_back(mean);
@@ -263,37 +271,50 @@ namespace glissade
     ParameterHandler prm;
     prm.declare_entry("Study", "case3", Patterns::Selection("case3"));
     prm.enter_subsection("Case 3 study");
-    prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
+    prm.declare_entry("Scene",
+                      "case3_rings.prm",
+                      Patterns::Anything(),
                       "The rings' scene (relative to this file's folder).");
-    prm.declare_entry("Variants", "q4, bspline, hermite",
+    prm.declare_entry("Variants",
+                      "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
                         "q4|q4-closest|q4-vertex|bspline|hermite")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-closest and "
                       "q4-vertex the rules closest point and vertex normal "
                       "(doc/contact.md).");
-    prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
+    prm.declare_entry("Rotation angle",
+                      "9",
+                      Patterns::Double(0.),
                       "Degrees of rotation after the compression (the paper: "
                       "180; one element of the outer ring: 9).");
-    prm.declare_entry("Rotation increments", "50", Patterns::Integer(1),
+    prm.declare_entry("Rotation increments",
+                      "50",
+                      Patterns::Integer(1),
                       "Increments of the rotation (the paper: 1000 for 180 "
                       "degrees, i.e. 50 per element).");
-    prm.declare_entry("Hermite outer elements", "40",
+    prm.declare_entry("Hermite outer elements",
+                      "40",
                       Patterns::List(Patterns::Integer(4)),
                       "Elements around the outer ring for the hermite variant "
                       "(fig 29: the paper uses 10, 20, 40; the supports need "
                       "a multiple of 4). The inner ring keeps 40; the nodal "
                       "loads are scaled to keep the total of 400 N.");
-    prm.declare_entry("Output directory", "output/case3_study",
-                      Patterns::Anything(), "Where CSVs and PNGs go.");
+    prm.declare_entry("Output directory",
+                      "output/case3_study",
+                      Patterns::Anything(),
+                      "Where CSVs and PNGs go.");
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
     prm.enter_subsection("Case 3 study");
     const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
-    const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
-    const double       angle      = SceneReader::get_double(prm, "Rotation angle", prm_file);
-    const unsigned int increments = SceneReader::get_integer(prm, "Rotation increments", prm_file);
-    const std::string  directory  = prm.get("Output directory");
+    const auto        variants =
+      Utilities::split_string_list(prm.get("Variants"), ',');
+    const double angle =
+      SceneReader::get_double(prm, "Rotation angle", prm_file);
+    const unsigned int increments =
+      SceneReader::get_integer(prm, "Rotation increments", prm_file);
+    const std::string         directory = prm.get("Output directory");
     std::vector<unsigned int> outer_elements;
     for (const auto &n :
          Utilities::split_string_list(prm.get("Hermite outer elements"), ','))
@@ -307,8 +328,9 @@ namespace glissade
       n_runs += variant == "hermite" ? outer_elements.size() : 1;
     StudyProgress progress(n_runs);
     for (const auto &variant : variants)
-      for (const unsigned int n :
-           variant == "hermite" ? outer_elements : std::vector<unsigned int>{40})
+      for (const unsigned int n : variant == "hermite" ?
+                                    outer_elements :
+                                    std::vector<unsigned int>{40})
         {
           std::ostringstream what;
           what << "case 3, " << variant << " (" << n
@@ -321,8 +343,9 @@ namespace glissade
         }
 
     AtomicFile csv(directory + "/case3_spread.csv");
-    csv.stream() << "variant,increment,spread_percent,node_force,torque_percent,"
-                    "mean_force,smallest_force,largest_force\n";
+    csv.stream()
+      << "variant,increment,spread_percent,node_force,torque_percent,"
+         "mean_force,smallest_force,largest_force\n";
     for (const auto &r : results)
       for (unsigned int i = 0; i < r.node_force.size(); ++i)
         csv.stream() << r.variant << ',' << i + 1 << ','
@@ -361,10 +384,9 @@ namespace glissade
                         r.variant == "hermite" ?
                       paper_figure(r.variant) :
                       std::string("-"))
-                << std::setw(10) << r.dofs
-                << std::setw(14) << r.wall_seconds << std::setw(16)
-                << r.worst_torque_percent << std::setw(16) << r.spurious_work
-                << std::setw(14)
+                << std::setw(10) << r.dofs << std::setw(14) << r.wall_seconds
+                << std::setw(16) << r.worst_torque_percent << std::setw(16)
+                << r.spurious_work << std::setw(14)
                 << r.spurious_work / std::max(r.tangential_work_scale, 1e-300)
                 << '\n';
     std::cout << "(T: the torque of the contact forces on the inner ring, "

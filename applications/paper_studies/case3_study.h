@@ -10,20 +10,21 @@ namespace glissade
   struct Case3Result
   {
     std::string         variant;
-    unsigned int        dofs = 0;
-    double              wall_seconds = 0.;
+    unsigned int        dofs              = 0;
+    double              wall_seconds      = 0.;
     unsigned int        newton_iterations = 0;
-    unsigned int        active_nodes = 0; // at the end
-    std::vector<double> spread_percent; // per rotation increment
-    std::vector<double> node_force;     // |f| of node (1.25, 0), per increment
+    unsigned int        active_nodes      = 0; // at the end
+    std::vector<double> spread_percent;        // per rotation increment
+    std::vector<double> node_force; // |f| of node (1.25, 0), per increment
     /**
      * Fig 28: per increment, the master curve near node (1.25, 0) as
      * (angle in degrees, radius) samples, over two elements either side.
      */
     std::vector<std::vector<std::array<double, 2>>> master_profile;
-    /** Per increment, the mean, smallest and largest |f| over the active nodes. */
+    /** Per increment, the mean, smallest and largest |f| over the active nodes.
+     */
     std::vector<double> mean_force, smallest_force, largest_force;
-    double              worst_spread = 0.;
+    double              worst_spread    = 0.;
     unsigned int        worst_increment = 0;
     std::vector<double> worst_distribution; // (|f| - F_e) / F_e in %, per node
     /**
@@ -36,9 +37,9 @@ namespace glissade
     std::vector<double> torque_percent;
     double              worst_torque_percent = 0.;
     /** The work of T over the rotation (J per unit thickness). */
-    double              spurious_work = 0.;
+    double spurious_work = 0.;
     /** The work if every contact force were tangential: R sum |f| theta. */
-    double              tangential_work_scale = 0.;
+    double tangential_work_scale = 0.;
   };
 
   /**

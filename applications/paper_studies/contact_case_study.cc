@@ -3,12 +3,13 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
-#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
+#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+
 #include <paper_studies/contact_case_study.h>
 #include <paper_studies/study_progress.h>
 
@@ -47,12 +48,14 @@ namespace glissade
           overrides.push_back("Body " + body.name + "/Element/Space=hermite");
       // bspline-spline: the B-spline master with the spline's own force
       // transfer weights instead of the paper's segment hand-over.
-      const std::string surface =
-        variant == "q4" ? "faceted" : variant == "hermite" ? "hermite" : "bspline";
+      const std::string surface = variant == "q4"      ? "faceted" :
+                                  variant == "hermite" ? "hermite" :
+                                                         "bspline";
       for (const auto &contact : scene.contacts)
         if (contact.master_body != "rigid")
           {
-            overrides.push_back("Contact " + contact.name + "/Surface=" + surface);
+            overrides.push_back("Contact " + contact.name +
+                                "/Surface=" + surface);
             if (variant == "bspline-spline")
               overrides.push_back("Contact " + contact.name +
                                   "/Force transfer=spline");
@@ -77,19 +80,22 @@ namespace glissade
 
     /** The vertex of a mesh at a point (looked up once, before the run). */
     unsigned int
-    vertex_at(const Triangulation<2> &mesh, const Point<2> &point,
-              const std::string &where)
+    vertex_at(const Triangulation<2> &mesh,
+              const Point<2>         &point,
+              const std::string      &where)
     {
       const unsigned int v = GridTools::find_closest_vertex(mesh, point);
       if (mesh.get_vertices()[v].distance(point) > 1e-9 * mesh_diameter(mesh))
-        throw InputError(where, "no mesh vertex at the point the study measures");
+        throw InputError(where,
+                         "no mesh vertex at the point the study measures");
       return v;
     }
 
     /** For every vertex of `a`, the vertex of `b` at its mirror image. */
     std::vector<unsigned int>
-    mirror_vertices(const Triangulation<2> &a, const Triangulation<2> &b,
-                    const std::string &where)
+    mirror_vertices(const Triangulation<2> &a,
+                    const Triangulation<2> &b,
+                    const std::string      &where)
     {
       const double tolerance = 1e-9 * mesh_diameter(a);
       std::map<std::pair<long long, long long>, unsigned int> index;
@@ -105,9 +111,10 @@ namespace glissade
           const Point<2> &p     = a.get_vertices()[v];
           const auto      found = index.find(key(Point<2>(-p[0], p[1])));
           if (found == index.end())
-            throw InputError(where, "the meshes are not mirror images of each "
-                                    "other about x = 0 (no vertex at the "
-                                    "mirror of a vertex)");
+            throw InputError(where,
+                             "the meshes are not mirror images of each "
+                             "other about x = 0 (no vertex at the "
+                             "mirror of a vertex)");
           result[v] = found->second;
         }
       return result;
@@ -125,7 +132,8 @@ namespace glissade
                                 const bool         progress,
                                 const std::vector<std::string> &extra_overrides)
   {
-    const SceneDescription base = SceneReader::read_file(scene_file, extra_overrides);
+    const SceneDescription base =
+      SceneReader::read_file(scene_file, extra_overrides);
     std::vector<std::string> overrides = extra_overrides;
     for (const auto &o : variant_overrides(base, variant))
       overrides.push_back(o);
@@ -136,8 +144,9 @@ namespace glissade
     if (increments > 0)
       {
         if (base.load_program.stage_end_times.size() != 1)
-          throw InputError(scene_file, "shortening a run needs a load program "
-                                       "of one stage");
+          throw InputError(scene_file,
+                           "shortening a run needs a load program "
+                           "of one stage");
         std::ostringstream end;
         end.precision(17);
         end << load_fraction * base.load_program.stage_end_times[0];
@@ -145,8 +154,9 @@ namespace glissade
         overrides.push_back("Load program/Stage increments=" +
                             std::to_string(increments));
       }
-    const SceneDescription scene = SceneReader::read_file(scene_file, overrides);
-    Simulation             simulation(scene);
+    const SceneDescription scene =
+      SceneReader::read_file(scene_file, overrides);
+    Simulation simulation(scene);
 
     ContactCaseResult result;
     result.scene   = stem_of(scene_file);
@@ -159,7 +169,7 @@ namespace glissade
     const BodyDescription *left_ring  = find_body(scene, "left ring");
     const BodyDescription *right_ring = find_body(scene, "right ring");
     const BodyDescription *square     = find_body(scene, "square");
-    const ContactPair *left_pair = nullptr, *right_pair = nullptr;
+    const ContactPair     *left_pair = nullptr, *right_pair = nullptr;
     for (const auto &pair : pairs)
       {
         if (pair->name() == "left")
@@ -167,9 +177,9 @@ namespace glissade
         if (pair->name() == "right")
           right_pair = pair.get();
       }
-    const bool symmetric_scene = left_ring && right_ring && square &&
-                                 left_pair && right_pair;
-    std::vector<unsigned int> ring_mirror, square_mirror;
+    const bool symmetric_scene =
+      left_ring && right_ring && square && left_pair && right_pair;
+    std::vector<unsigned int>   ring_mirror, square_mirror;
     std::array<unsigned int, 2> crown_vertex;
     unsigned int                corner_vertex = 0;
     if (symmetric_scene)
@@ -211,12 +221,13 @@ namespace glissade
           const ContactDescription &c = pair->settings();
           if (c.master_body != "rigid" || c.obstacle != "disk")
             continue;
-          const auto   u        = pair->slave().vertex_displacements();
-          double       smallest = std::numeric_limits<double>::max();
+          const auto u        = pair->slave().vertex_displacements();
+          double     smallest = std::numeric_limits<double>::max();
           for (const auto &node : pair->nodes())
             {
-              const Point<2> x        = node.reference_position + u[node.vertex];
-              const double   distance = x.distance(c.obstacle_point) - c.obstacle_radius;
+              const Point<2> x = node.reference_position + u[node.vertex];
+              const double   distance =
+                x.distance(c.obstacle_point) - c.obstacle_radius;
               smallest = std::min(smallest, distance);
               if (node.reaction[1] > 0.)
                 result.max_active_distance =
@@ -227,28 +238,35 @@ namespace glissade
 
       if (symmetric_scene)
         {
-          const auto u_left   = simulation.body("left ring").vertex_displacements();
-          const auto u_right  = simulation.body("right ring").vertex_displacements();
-          const auto u_square = simulation.body("square").vertex_displacements();
-          double     largest = 0., difference = 0.;
+          const auto u_left =
+            simulation.body("left ring").vertex_displacements();
+          const auto u_right =
+            simulation.body("right ring").vertex_displacements();
+          const auto u_square =
+            simulation.body("square").vertex_displacements();
+          double largest = 0., difference = 0.;
           for (unsigned int v = 0; v < u_left.size(); ++v)
             {
-              largest    = std::max({largest, u_left[v].norm(), u_right[v].norm()});
-              difference = std::max(
-                difference, (u_left[v] - mirror(u_right[ring_mirror[v]])).norm());
+              largest =
+                std::max({largest, u_left[v].norm(), u_right[v].norm()});
+              difference =
+                std::max(difference,
+                         (u_left[v] - mirror(u_right[ring_mirror[v]])).norm());
             }
           for (unsigned int v = 0; v < u_square.size(); ++v)
             {
               largest    = std::max(largest, u_square[v].norm());
               difference = std::max(
-                difference, (u_square[v] - mirror(u_square[square_mirror[v]])).norm());
+                difference,
+                (u_square[v] - mirror(u_square[square_mirror[v]])).norm());
             }
-          result.symmetry_displacement.push_back(largest > 0. ? difference / largest : 0.);
+          result.symmetry_displacement.push_back(
+            largest > 0. ? difference / largest : 0.);
 
           double largest_force = 0., force_difference = 0.;
           for (const auto &node : left_pair->nodes())
             {
-              const Point<2> image(-node.reference_position[0],
+              const Point<2>     image(-node.reference_position[0],
                                    node.reference_position[1]);
               const Tensor<1, 2> f = node.force(),
                                  g = mirror(right_pair->node_at(image).force());
@@ -258,8 +276,8 @@ namespace glissade
           result.symmetry_force.push_back(
             largest_force > 0. ? force_difference / largest_force : 0.);
 
-          result.crown_uy.push_back({{u_left[crown_vertex[0]][1],
-                                      u_right[crown_vertex[1]][1]}});
+          result.crown_uy.push_back(
+            {{u_left[crown_vertex[0]][1], u_right[crown_vertex[1]][1]}});
           result.corner_ux.push_back(u_square[corner_vertex][0]);
           result.corner_force.push_back(
             left_pair->node_at(square->mesh.corner_1).force().norm());
@@ -280,8 +298,10 @@ namespace glissade
         result.final_displacement.push_back(b->vertex_displacements());
         std::vector<std::array<unsigned int, 4>> cells;
         for (const auto &cell : b->triangulation().active_cell_iterators())
-          cells.push_back({{cell->vertex_index(0), cell->vertex_index(1),
-                            cell->vertex_index(3), cell->vertex_index(2)}});
+          cells.push_back({{cell->vertex_index(0),
+                            cell->vertex_index(1),
+                            cell->vertex_index(3),
+                            cell->vertex_index(2)}});
         result.cells.push_back(std::move(cells));
       }
     for (const auto &pair : pairs)
@@ -289,8 +309,9 @@ namespace glissade
         const auto u = pair->slave().vertex_displacements();
         for (const auto &node : pair->nodes())
           if (node.reaction[1] > 0.)
-            result.contact_forces.emplace_back(
-              node.reference_position + u[node.vertex], node.force());
+            result.contact_forces.emplace_back(node.reference_position +
+                                                 u[node.vertex],
+                                               node.force());
       }
     return result;
   }
@@ -312,8 +333,9 @@ namespace glissade
         for (unsigned int v = 0; v < a.final_displacement[i].size(); ++v)
           {
             largest    = std::max(largest, a.final_displacement[i][v].norm());
-            difference = std::max(difference, (a.final_displacement[i][v] -
-                                               b.final_displacement[i][v]).norm());
+            difference = std::max(
+              difference,
+              (a.final_displacement[i][v] - b.final_displacement[i][v]).norm());
           }
       }
     return largest > 0. ? difference / largest : 0.;
@@ -399,13 +421,15 @@ namespace glissade
     }
 
     void
-    write_csv(const std::string &directory, const std::vector<ContactCaseResult> &runs)
+    write_csv(const std::string                    &directory,
+              const std::vector<ContactCaseResult> &runs)
     {
       const std::string scene = runs.front().scene;
-      AtomicFile history(directory + "/" + scene + "_history.csv");
-      history.stream() << "variant,increment,active_nodes,min_obstacle_distance,"
-                          "symmetry_displacement,symmetry_force,crown_left_uy,"
-                          "crown_right_uy,corner_ux,corner_force\n";
+      AtomicFile        history(directory + "/" + scene + "_history.csv");
+      history.stream()
+        << "variant,increment,active_nodes,min_obstacle_distance,"
+           "symmetry_displacement,symmetry_force,crown_left_uy,"
+           "crown_right_uy,corner_ux,corner_force\n";
       for (const auto &r : runs)
         {
           std::vector<double> left, right;
@@ -415,19 +439,20 @@ namespace glissade
               right.push_back(c[1]);
             }
           for (unsigned int i = 0; i < r.active_nodes.size(); ++i)
-            history.stream() << r.variant << ',' << i + 1 << ',' << r.active_nodes[i]
-                             << ',' << optional(r.min_obstacle_distance, i) << ','
-                             << optional(r.symmetry_displacement, i) << ','
-                             << optional(r.symmetry_force, i) << ','
-                             << optional(left, i) << ',' << optional(right, i) << ','
-                             << optional(r.corner_ux, i) << ','
-                             << optional(r.corner_force, i) << '\n';
+            history.stream()
+              << r.variant << ',' << i + 1 << ',' << r.active_nodes[i] << ','
+              << optional(r.min_obstacle_distance, i) << ','
+              << optional(r.symmetry_displacement, i) << ','
+              << optional(r.symmetry_force, i) << ',' << optional(left, i)
+              << ',' << optional(right, i) << ',' << optional(r.corner_ux, i)
+              << ',' << optional(r.corner_force, i) << '\n';
         }
       history.commit();
 
       for (const auto &r : runs)
         {
-          AtomicFile mesh(directory + "/" + scene + "_" + r.variant + "_deformed.csv");
+          AtomicFile mesh(directory + "/" + scene + "_" + r.variant +
+                          "_deformed.csv");
           mesh.stream() << "body,x0,y0,x1,y1,x2,y2,x3,y3\n";
           mesh.stream().precision(10);
           for (unsigned int b = 0; b < r.cells.size(); ++b)
@@ -436,17 +461,20 @@ namespace glissade
                 mesh.stream() << r.body_names[b];
                 for (const unsigned int v : cell)
                   {
-                    const Point<2> x = r.vertices[b][v] + r.final_displacement[b][v];
+                    const Point<2> x =
+                      r.vertices[b][v] + r.final_displacement[b][v];
                     mesh.stream() << ',' << x[0] << ',' << x[1];
                   }
                 mesh.stream() << '\n';
               }
           mesh.commit();
-          AtomicFile forces(directory + "/" + scene + "_" + r.variant + "_forces.csv");
+          AtomicFile forces(directory + "/" + scene + "_" + r.variant +
+                            "_forces.csv");
           forces.stream() << "x,y,fx,fy\n";
           forces.stream().precision(12);
           for (const auto &[x, f] : r.contact_forces)
-            forces.stream() << x[0] << ',' << x[1] << ',' << f[0] << ',' << f[1] << '\n';
+            forces.stream()
+              << x[0] << ',' << x[1] << ',' << f[0] << ',' << f[1] << '\n';
           forces.commit();
         }
     }
@@ -461,45 +489,60 @@ namespace glissade
     ParameterHandler prm;
     prm.declare_entry("Study", "case1", Patterns::Selection("case1|case2"));
     prm.enter_subsection("Contact case study");
-    prm.declare_entry("Scenes", "", Patterns::Anything(),
+    prm.declare_entry("Scenes",
+                      "",
+                      Patterns::Anything(),
                       "Scene files, comma separated (relative to this file's "
                       "folder).");
-    prm.declare_entry("Variants", "q4, bspline, hermite",
+    prm.declare_entry("Variants",
+                      "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection("q4|bspline|hermite")),
                       "Discretisations: q4 (faceted masters), bspline (Q4 "
                       "bodies, B-spline masters), hermite (Hermite bodies and "
                       "masters).");
-    prm.declare_entry("Increments", "0", Patterns::Integer(0),
+    prm.declare_entry("Increments",
+                      "0",
+                      Patterns::Integer(0),
                       "0: each scene's own load program; otherwise this many "
                       "increments up to Load fraction of its end time.");
-    prm.declare_entry("Load fraction", "1", Patterns::Double(0., 1.),
+    prm.declare_entry("Load fraction",
+                      "1",
+                      Patterns::Double(0., 1.),
                       "With Increments > 0: where the shortened run stops.");
-    prm.declare_entry("Output directory", "output/contact_cases",
-                      Patterns::Anything(), "Where CSVs, PNGs and VTUs go.");
+    prm.declare_entry("Output directory",
+                      "output/contact_cases",
+                      Patterns::Anything(),
+                      "Where CSVs, PNGs and VTUs go.");
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
     prm.enter_subsection("Contact case study");
     std::vector<std::string> scenes;
-    for (const auto &name : Utilities::split_string_list(prm.get("Scenes"), ','))
+    for (const auto &name :
+         Utilities::split_string_list(prm.get("Scenes"), ','))
       scenes.push_back(text::path_beside(prm_file, name));
     if (scenes.empty())
-      throw InputError(prm_file + ": Contact case study/Scenes", "no scene given");
-    const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
-    const unsigned int increments = SceneReader::get_integer(prm, "Increments", prm_file);
-    const double       fraction   = SceneReader::get_double(prm, "Load fraction", prm_file);
-    const std::string  directory  = prm.get("Output directory");
+      throw InputError(prm_file + ": Contact case study/Scenes",
+                       "no scene given");
+    const auto variants =
+      Utilities::split_string_list(prm.get("Variants"), ',');
+    const unsigned int increments =
+      SceneReader::get_integer(prm, "Increments", prm_file);
+    const double fraction =
+      SceneReader::get_double(prm, "Load fraction", prm_file);
+    const std::string directory = prm.get("Output directory");
     prm.leave_subsection();
     std::filesystem::create_directories(directory);
 
     std::ostringstream table;
-    table << std::setw(22) << "scene" << std::setw(9) << "variant" << std::setw(8)
-          << "dofs" << std::setw(7) << "incr." << std::setw(8) << "Newton"
-          << std::setw(10) << "wall (s)" << "  measure\n";
+    table << std::setw(22) << "scene" << std::setw(9) << "variant"
+          << std::setw(8) << "dofs" << std::setw(7) << "incr." << std::setw(8)
+          << "Newton" << std::setw(10) << "wall (s)"
+          << "  measure\n";
     StudyProgress progress(scenes.size() * variants.size());
     for (const auto &scene_file : scenes)
       {
-        const SceneDescription scene  = SceneReader::read_file(scene_file);
-        bool                   rigid  = true;
+        const SceneDescription scene = SceneReader::read_file(scene_file);
+        bool                   rigid = true;
         for (const auto &c : scene.contacts)
           rigid = rigid && c.master_body == "rigid";
         std::vector<ContactCaseResult> runs;
@@ -514,8 +557,8 @@ namespace glissade
                 continue;
               }
             progress.next(stem_of(scene_file) + ", " + variant);
-            runs.push_back(
-              run_variant(scene_file, variant, increments, fraction, directory, true));
+            runs.push_back(run_variant(
+              scene_file, variant, increments, fraction, directory, true));
           }
         if (runs.empty())
           continue;
@@ -534,11 +577,13 @@ namespace glissade
             std::ostringstream measure;
             measure.precision(3);
             if (!r.min_obstacle_distance.empty())
-              measure << "deepest penetration "
-                      << std::max(0., -*std::min_element(r.min_obstacle_distance.begin(),
-                                                          r.min_obstacle_distance.end()))
-                      << " m, loaded nodes off the circle by <= "
-                      << r.max_active_distance << " m";
+              measure
+                << "deepest penetration "
+                << std::max(0.,
+                            -*std::min_element(r.min_obstacle_distance.begin(),
+                                               r.min_obstacle_distance.end()))
+                << " m, loaded nodes off the circle by <= "
+                << r.max_active_distance << " m";
             else if (!r.corner_force.empty())
               {
                 const auto [first, last] = contact_phase(r);
@@ -549,8 +594,12 @@ namespace glissade
                         << *std::max_element(r.symmetry_force.begin(),
                                              r.symmetry_force.end())
                         << "; corner force roughness "
-                        << roughness(r.corner_force, first + 2, last - 1, r.active_nodes)
-                        << ", u_x kinks " << kink_concentration(r.corner_ux, first + 2, last - 1);
+                        << roughness(r.corner_force,
+                                     first + 2,
+                                     last - 1,
+                                     r.active_nodes)
+                        << ", u_x kinks "
+                        << kink_concentration(r.corner_ux, first + 2, last - 1);
               }
             else if (bspline && hermite && &r != hermite)
               measure << "final u differs from hermite by "
@@ -558,8 +607,8 @@ namespace glissade
             table << std::setw(22) << r.scene << std::setw(9) << r.variant
                   << std::setw(8) << r.dofs << std::setw(7) << r.increments
                   << std::setw(8) << r.newton_iterations << std::setw(10)
-                  << std::setprecision(3) << r.wall_seconds << "  " << measure.str()
-                  << '\n';
+                  << std::setprecision(3) << r.wall_seconds << "  "
+                  << measure.str() << '\n';
           }
       }
     std::cout << '\n' << table.str() << std::flush;

@@ -34,23 +34,24 @@ namespace glissade
     /** Per increment (index 0: the first converged increment). */
     std::vector<double> min_obstacle_distance;
     /** Largest |distance| of a node that carries a force (all increments). */
-    double max_active_distance = 0.;
-    std::vector<double> symmetry_displacement; // max |u - mirror| / max |u|
-    std::vector<double> symmetry_force;        // max |f - mirror| / max |f|
+    double              max_active_distance = 0.;
+    std::vector<double> symmetry_displacement;   // max |u - mirror| / max |u|
+    std::vector<double> symmetry_force;          // max |f - mirror| / max |f|
     std::vector<std::array<double, 2>> crown_uy; // left, right crown
-    std::vector<double> corner_ux, corner_force;
-    std::vector<unsigned int> active_nodes;
+    std::vector<double>                corner_ux, corner_force;
+    std::vector<unsigned int>          active_nodes;
 
     /**
      * Final state: per body, reference vertices, their displacement, and
      * the cells as four vertex indices in counter-clockwise order (for
      * pictures); the forces on the slave nodes that carry one.
      */
-    std::vector<std::string>                             body_names;
-    std::vector<std::vector<dealii::Point<2>>>                   vertices;
-    std::vector<std::vector<dealii::Tensor<1, 2>>>               final_displacement;
+    std::vector<std::string>                              body_names;
+    std::vector<std::vector<dealii::Point<2>>>            vertices;
+    std::vector<std::vector<dealii::Tensor<1, 2>>>        final_displacement;
     std::vector<std::vector<std::array<unsigned int, 4>>> cells;
-    std::vector<std::pair<dealii::Point<2>, dealii::Tensor<1, 2>>>       contact_forces;
+    std::vector<std::pair<dealii::Point<2>, dealii::Tensor<1, 2>>>
+      contact_forces;
   };
 
   /**
@@ -71,12 +72,12 @@ namespace glissade
      * e.g. its meshes (the trade study).
      */
     static ContactCaseResult
-    run_variant(const std::string &scene_file,
-                const std::string &variant,
-                const unsigned int increments,
-                const double       load_fraction,
-                const std::string &output_directory,
-                const bool         progress = false,
+    run_variant(const std::string              &scene_file,
+                const std::string              &variant,
+                const unsigned int              increments,
+                const double                    load_fraction,
+                const std::string              &output_directory,
+                const bool                      progress        = false,
                 const std::vector<std::string> &extra_overrides = {});
 
     /**

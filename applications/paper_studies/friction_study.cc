@@ -7,6 +7,7 @@
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+
 #include <paper_studies/friction_study.h>
 #include <paper_studies/study_progress.h>
 
@@ -49,14 +50,13 @@ namespace glissade
       std::vector<std::string> overrides;
       for (const auto &contact : scene.contacts)
         {
-          overrides.push_back("Contact " + contact.name +
-                              "/Friction coefficient=" +
-                              short_number(friction));
+          overrides.push_back(
+            "Contact " + contact.name +
+            "/Friction coefficient=" + short_number(friction));
           if (contact.master_body == "rigid")
             continue;
-          overrides.push_back(
-            "Contact " + contact.name + "/Surface=" +
-            (variant == "q4" ? "faceted" : variant));
+          overrides.push_back("Contact " + contact.name + "/Surface=" +
+                              (variant == "q4" ? "faceted" : variant));
           if (variant == "hermite")
             overrides.push_back("Body " + contact.master_body +
                                 "/Element/Space=hermite");
@@ -80,8 +80,8 @@ namespace glissade
     for (const auto &o : variant_overrides(base, variant, friction))
       overrides.push_back(o);
     overrides.push_back("Output/Progress=false");
-    overrides.push_back("Output/Directory=" + output_directory + "/" +
-                        variant + "-mu" + short_number(friction));
+    overrides.push_back("Output/Directory=" + output_directory + "/" + variant +
+                        "-mu" + short_number(friction));
     Simulation simulation(SceneReader::read_file(scene_file, overrides));
 
     FrictionRun run;
@@ -101,8 +101,8 @@ namespace glissade
         }
 
     simulation.on_increment = [&](const unsigned int, const double time) {
-      double normal = 0., tangential = 0., largest_rn = 0., excess = 0.;
-      unsigned int               sticking = 0, slipping = 0, open = 0;
+      double       normal = 0., tangential = 0., largest_rn = 0., excess = 0.;
+      unsigned int sticking = 0, slipping = 0, open = 0;
       std::vector<double>        norms;
       std::vector<unsigned char> status;
       for (const auto &pair : pairs)
@@ -163,22 +163,30 @@ namespace glissade
     ParameterHandler prm;
     prm.declare_entry("Study", "friction", Patterns::Selection("friction"));
     prm.enter_subsection("Friction study");
-    prm.declare_entry("Scene", "", Patterns::Anything(),
+    prm.declare_entry("Scene",
+                      "",
+                      Patterns::Anything(),
                       "The scene (relative to this file's folder).");
-    prm.declare_entry("Variants", "q4, bspline, hermite",
+    prm.declare_entry("Variants",
+                      "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection("q4|bspline|hermite")),
                       "Master surfaces: q4 (faceted), bspline, hermite (the "
                       "master bodies' elements too; the slave bodies keep "
                       "theirs).");
-    prm.declare_entry("Friction coefficients", "0, 0.1, 0.3",
+    prm.declare_entry("Friction coefficients",
+                      "0, 0.1, 0.3",
                       Patterns::List(Patterns::Double(0., 100.)),
                       "Coulomb's mu, set on every contact pair.");
-    prm.declare_entry("Scene changes", "", Patterns::Anything(),
+    prm.declare_entry("Scene changes",
+                      "",
+                      Patterns::Anything(),
                       "Entries of the scene to change, 'Section/Entry=value' "
                       "separated by ';' (as --set would, e.g. to shorten the "
                       "load program).");
-    prm.declare_entry("Output directory", "output/friction_study",
-                      Patterns::Anything(), "Where CSVs and PNGs go.");
+    prm.declare_entry("Output directory",
+                      "output/friction_study",
+                      Patterns::Anything(),
+                      "Where CSVs and PNGs go.");
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, command_line);
     prm.enter_subsection("Friction study");
@@ -186,7 +194,8 @@ namespace glissade
       throw InputError(prm_file + ": Friction study/Scene",
                        "is empty: name the scene to study");
     const std::string scene = text::path_beside(prm_file, prm.get("Scene"));
-    const auto variants = Utilities::split_string_list(prm.get("Variants"), ',');
+    const auto        variants =
+      Utilities::split_string_list(prm.get("Variants"), ',');
     std::vector<double> coefficients;
     for (const auto &mu :
          Utilities::split_string_list(prm.get("Friction coefficients"), ','))
@@ -201,7 +210,7 @@ namespace glissade
     std::filesystem::create_directories(directory);
 
     std::vector<FrictionRun> runs;
-    StudyProgress progress(variants.size() * coefficients.size());
+    StudyProgress            progress(variants.size() * coefficients.size());
     for (const auto &variant : variants)
       for (const double mu : coefficients)
         {
@@ -248,11 +257,10 @@ namespace glissade
               << std::setw(9) << "master" << std::setw(6) << "mu"
               << std::setw(8) << "dofs" << std::setw(10) << "wall (s)"
               << std::setw(8) << "Newton" << std::setw(6) << "cuts"
-              << std::setw(14) << "sum r_n"
-              << std::setw(14) << "sum |r_t|" << std::setw(11) << "ratio"
-              << std::setw(7) << "stick" << std::setw(6) << "slip"
-              << std::setw(13) << "spread (%)" << std::setw(13)
-              << "cone excess" << '\n';
+              << std::setw(14) << "sum r_n" << std::setw(14) << "sum |r_t|"
+              << std::setw(11) << "ratio" << std::setw(7) << "stick"
+              << std::setw(6) << "slip" << std::setw(13) << "spread (%)"
+              << std::setw(13) << "cone excess" << '\n';
     for (const auto &r : runs)
       {
         // Case 3's uniformity measure, after the first stage (there: the
@@ -273,8 +281,8 @@ namespace glissade
                   << std::setw(8) << r.dofs << std::setw(10)
                   << std::setprecision(3) << r.wall_seconds << std::setw(8)
                   << r.newton_iterations << std::setw(6) << r.cut_backs
-                  << std::setw(14) << std::setprecision(6) << n << std::setw(14) << t
-                  << std::setw(11) << std::setprecision(4)
+                  << std::setw(14) << std::setprecision(6) << n << std::setw(14)
+                  << t << std::setw(11) << std::setprecision(4)
                   << (n > 0. ? t / n : 0.) << std::setw(7)
                   << (r.sticking.empty() ? 0 : r.sticking.back())
                   << std::setw(6)

@@ -9,17 +9,17 @@ namespace glissade
   /** One run of the friction study: a master and a friction coefficient. */
   struct FrictionRun
   {
-    std::string variant; // q4 | bspline | hermite
-    double      friction = 0.;
-    unsigned int dofs    = 0;
-    double       wall_seconds = 0.;
+    std::string  variant; // q4 | bspline | hermite
+    double       friction          = 0.;
+    unsigned int dofs              = 0;
+    double       wall_seconds      = 0.;
     unsigned int newton_iterations = 0;
-    unsigned int cut_backs = 0;
+    unsigned int cut_backs         = 0;
 
     /** Per increment, over every pair's slave nodes. */
-    std::vector<double> time;
-    std::vector<double> normal_force;     // sum of r_n
-    std::vector<double> tangential_force; // sum of |r_t|
+    std::vector<double>       time;
+    std::vector<double>       normal_force;     // sum of r_n
+    std::vector<double>       tangential_force; // sum of |r_t|
     std::vector<unsigned int> sticking, slipping, open;
     /**
      * The spread of the contact forces' norms around their mean over the

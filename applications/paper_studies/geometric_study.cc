@@ -6,9 +6,10 @@
 #include <glissade/contact/hermite_curve.h>
 #include <glissade/contact/lagrange_edge_curve.h>
 #include <glissade/io/atomic_file.h>
-#include <glissade/scene/scene_reader.h>
-#include <paper_studies/geometric_study.h>
 #include <glissade/io/plotting.h>
+#include <glissade/scene/scene_reader.h>
+
+#include <paper_studies/geometric_study.h>
 
 #include <cmath>
 #include <filesystem>
@@ -110,7 +111,7 @@ namespace glissade
       throw InputError("Geometric study/Element counts",
                        "n_e must be even and at least 4, so that a node "
                        "sits at theta = pi/2");
-    const auto curve = build_curve(method, n_e);
+    const auto                   curve = build_curve(method, n_e);
     std::vector<GeometricSample> samples;
     // Clockwise order: segment n_e/2 - 1 ends at pi/2, segment n_e/2 starts
     // there.
@@ -122,9 +123,9 @@ namespace glissade
             const double s = double(k) / (samples_per_edge - 1);
             Point        c, dc, ddc;
             curve->evaluate(segment, s, c, dc, ddc);
-            const Point  n      = curve->unit_normal(segment, s);
-            const double radius = std::hypot(c[0], c[1]);
-            const Point  exact_normal = {{c[0] / radius, c[1] / radius}};
+            const Point     n            = curve->unit_normal(segment, s);
+            const double    radius       = std::hypot(c[0], c[1]);
+            const Point     exact_normal = {{c[0] / radius, c[1] / radius}};
             GeometricSample sample;
             sample.edge              = edge;
             sample.xi                = 2. * s - 1.;
@@ -148,7 +149,7 @@ namespace glissade
   {
     // The last sample of edge 1 and the first of edge 2 are both at pi/2.
     double end_of_first = 0., start_of_second = 0.;
-    bool   found        = false;
+    bool   found = false;
     for (unsigned int i = 0; i + 1 < samples.size(); ++i)
       if (samples[i].edge == 1 && samples[i + 1].edge == 2)
         {
@@ -221,10 +222,14 @@ namespace glissade
                       Patterns::List(
                         Patterns::Selection("q4|q8|q12|bspline|hermite")),
                       "Discretisations of the outer edge.");
-    prm.declare_entry("Samples per edge", "41", Patterns::Integer(3),
+    prm.declare_entry("Samples per edge",
+                      "41",
+                      Patterns::Integer(3),
                       "Points per edge at which the errors are evaluated.");
-    prm.declare_entry("Output directory", "output/geometric_study",
-                      Patterns::Anything(), "Where CSVs and PNGs go.");
+    prm.declare_entry("Output directory",
+                      "output/geometric_study",
+                      Patterns::Anything(),
+                      "Where CSVs and PNGs go.");
     prm.leave_subsection();
     SceneReader::parse_study(prm, prm_file, overrides);
 
@@ -233,10 +238,10 @@ namespace glissade
     for (const auto &c :
          Utilities::split_string_list(prm.get("Element counts"), ','))
       counts.push_back(Utilities::string_to_int(c));
-    const auto methods =
-      Utilities::split_string_list(prm.get("Methods"), ',');
-    const unsigned int samples   = SceneReader::get_integer(prm, "Samples per edge", prm_file);
-    const std::string  directory = prm.get("Output directory");
+    const auto methods = Utilities::split_string_list(prm.get("Methods"), ',');
+    const unsigned int samples =
+      SceneReader::get_integer(prm, "Samples per edge", prm_file);
+    const std::string directory = prm.get("Output directory");
     prm.leave_subsection();
     std::filesystem::create_directories(directory);
 
@@ -260,15 +265,14 @@ namespace glissade
           {
             const auto result = evaluate(method, n_e, samples);
             for (const auto &s : result)
-              curves.stream() << method << ',' << n_e << ',' << s.edge << ','
-                              << s.xi << ',' << s.theta << ','
-                              << s.gap_error_percent << ','
-                              << s.normal_error_degrees << '\n';
+              curves.stream()
+                << method << ',' << n_e << ',' << s.edge << ',' << s.xi << ','
+                << s.theta << ',' << s.gap_error_percent << ','
+                << s.normal_error_degrees << '\n';
             gap_errors.push_back(max_gap_error_percent(result));
             normal_errors.push_back(max_normal_error_degrees(result));
-            summary.stream() << method << ',' << n_e << ','
-                             << gap_errors.back() << ','
-                             << normal_errors.back() << ','
+            summary.stream() << method << ',' << n_e << ',' << gap_errors.back()
+                             << ',' << normal_errors.back() << ','
                              << normal_jump_degrees(result) << '\n';
             std::cout << std::setw(8) << method << std::setw(6) << n_e
                       << std::setw(16) << std::setprecision(4)
@@ -277,8 +281,8 @@ namespace glissade
                       << normal_jump_degrees(result) << '\n';
           }
         if (counts.size() >= 2)
-          std::cout << std::setw(8) << method
-                    << "  measured order: gap " << std::setprecision(3)
+          std::cout << std::setw(8) << method << "  measured order: gap "
+                    << std::setprecision(3)
                     << convergence_order(counts, gap_errors) << ", normal "
                     << convergence_order(counts, normal_errors) << "\n";
       }

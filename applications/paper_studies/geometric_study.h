@@ -9,10 +9,10 @@ namespace glissade
   struct GeometricSample
   {
     unsigned int edge; // 1: theta in [pi/2, pi/2 + pi/n_e], 2: the other
-    double       xi;   // local coordinate in [-1, 1], xi = 1 at theta = pi/2 on edge 1
-    double       theta;
-    double       gap_error_percent;    // (|c| - R) / R, in % of R
-    double       normal_error_degrees; // angle from the circle's normal
+    double xi; // local coordinate in [-1, 1], xi = 1 at theta = pi/2 on edge 1
+    double theta;
+    double gap_error_percent;    // (|c| - R) / R, in % of R
+    double normal_error_degrees; // angle from the circle's normal
   };
 
   /**

@@ -3,6 +3,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
+
 #include <paper_studies/case3_study.h>
 #include <paper_studies/contact_case_study.h>
 #include <paper_studies/geometric_study.h>
@@ -22,9 +23,13 @@ namespace glissade
     std::string
     space_of(const std::string &discretisation)
     {
-      static const std::map<std::string, std::string> spaces = {
-        {"q4", "q1"},   {"q9", "q2"},   {"q16", "q3"},
-        {"q8", "q8"},   {"q12", "q12"}, {"hermite", "hermite"}};
+      static const std::map<std::string, std::string> spaces = {{"q4", "q1"},
+                                                                {"q9", "q2"},
+                                                                {"q16", "q3"},
+                                                                {"q8", "q8"},
+                                                                {"q12", "q12"},
+                                                                {"hermite",
+                                                                 "hermite"}};
       return spaces.at(discretisation);
     }
 
@@ -59,9 +64,9 @@ namespace glissade
     {
       // Building and sampling a curve takes microseconds: repeat it until
       // the timer can resolve it, and report the time of one.
-      TradePoint   point;
-      unsigned int repetitions = 0;
-      Timer        timer;
+      TradePoint                   point;
+      unsigned int                 repetitions = 0;
+      Timer                        timer;
       std::vector<GeometricSample> samples;
       do
         {
@@ -71,9 +76,9 @@ namespace glissade
       while (timer.wall_time() < 0.05);
       point.wall_seconds = timer.wall_time() / repetitions;
       point.dofs         = edge_dofs(method, n);
-      point.value = measure == "geometric_gap" ?
-                      GeometricStudy::max_gap_error_percent(samples) :
-                      GeometricStudy::max_normal_error_degrees(samples);
+      point.value        = measure == "geometric_gap" ?
+                             GeometricStudy::max_gap_error_percent(samples) :
+                             GeometricStudy::max_normal_error_degrees(samples);
       return point;
     }
 
@@ -133,8 +138,8 @@ namespace glissade
       if (measure == "case1")
         // Beam and ring alike: n along, n/15 across (the paper: 120 x 8).
         for (const auto &body : base.bodies)
-          meshes.push_back("Body " + body.name + "/Mesh/Subdivisions=" +
-                           along_and_across(n));
+          meshes.push_back("Body " + body.name +
+                           "/Mesh/Subdivisions=" + along_and_across(n));
       else
         {
           // Case 2: n around each ring (the scene's 120 x 8), the square
@@ -145,22 +150,29 @@ namespace glissade
               // rotation is held there): an even number of cells.
               const unsigned int m =
                 body.name == "square" ?
-                  2 * std::max(1u, static_cast<unsigned int>(std::lround(n / 24.))) :
+                  2 *
+                    std::max(1u,
+                             static_cast<unsigned int>(std::lround(n / 24.))) :
                   n;
               const unsigned int across =
                 body.name == "square" ? m : std::max(1u, n / 15);
-              meshes.push_back("Body " + body.name + "/Mesh/Subdivisions=" +
-                               std::to_string(m) + ", " +
-                               std::to_string(across));
+              meshes.push_back("Body " + body.name +
+                               "/Mesh/Subdivisions=" + std::to_string(m) +
+                               ", " + std::to_string(across));
             }
           increments    = static_cast<unsigned int>(settings.at(0));
           load_fraction = settings.at(1);
         }
       meshes.push_back("Output/VTU interval=0");
-      const ContactCaseResult r = ContactCaseStudy::run_variant(
-        scene_file, variant, increments, load_fraction,
-        output_directory + "/" + measure + "/" + std::to_string(n), false,
-        meshes);
+      const ContactCaseResult r =
+        ContactCaseStudy::run_variant(scene_file,
+                                      variant,
+                                      increments,
+                                      load_fraction,
+                                      output_directory + "/" + measure + "/" +
+                                        std::to_string(n),
+                                      false,
+                                      meshes);
 
       TradePoint point;
       point.dofs              = r.dofs;
@@ -174,12 +186,15 @@ namespace glissade
       else
         {
           if (r.corner_force.empty())
-            throw InputError(scene_file, "the trade study's case 2 needs the "
-                                         "scene of case 2 (two rings and a "
-                                         "square)");
+            throw InputError(scene_file,
+                             "the trade study's case 2 needs the "
+                             "scene of case 2 (two rings and a "
+                             "square)");
           const auto [first, last] = ContactCaseStudy::contact_phase(r);
-          point.value = ContactCaseStudy::roughness(r.corner_force, first + 2,
-                                                    last - 1, r.active_nodes);
+          point.value              = ContactCaseStudy::roughness(r.corner_force,
+                                                    first + 2,
+                                                    last - 1,
+                                                    r.active_nodes);
         }
       return point;
     }
@@ -195,19 +210,19 @@ namespace glissade
       // The rotation crosses angle / (360 / n) elements of the finer of
       // the two rings (Hermite: its inner ring keeps 40), each in the same
       // number of increments, so that every mesh samples its ripple alike.
-      const double       angle       = settings.at(0);
-      const unsigned int finest      = variant == "hermite" ? std::max(n, 40u) : n;
-      const unsigned int increments  = static_cast<unsigned int>(
+      const double       angle  = settings.at(0);
+      const unsigned int finest = variant == "hermite" ? std::max(n, 40u) : n;
+      const unsigned int increments = static_cast<unsigned int>(
         std::ceil(angle / (360. / finest) * settings.at(1)));
-      const Case3Result  r           = Case3Study::run_variant(
+      const Case3Result r = Case3Study::run_variant(
         scene_file, variant, angle, increments, output_directory + "/case3", n);
       TradePoint point;
       point.dofs              = r.dofs;
       point.newton_iterations = r.newton_iterations;
       point.active_nodes      = r.active_nodes;
       point.wall_seconds      = r.wall_seconds;
-      point.value = measure == "case3_torque" ? r.worst_torque_percent :
-                                                r.worst_spread;
+      point.value =
+        measure == "case3_torque" ? r.worst_torque_percent : r.worst_spread;
       return point;
     }
   } // namespace
@@ -217,9 +232,13 @@ namespace glissade
   const std::vector<std::string> &
   TradeMeasures::names()
   {
-    static const std::vector<std::string> all = {
-      "geometric_gap", "geometric_normal", "table1", "case1", "case2", "case3",
-      "case3_torque"};
+    static const std::vector<std::string> all = {"geometric_gap",
+                                                 "geometric_normal",
+                                                 "table1",
+                                                 "case1",
+                                                 "case2",
+                                                 "case3",
+                                                 "case3_torque"};
     return all;
   }
 
@@ -268,8 +287,10 @@ namespace glissade
       "q4", "q8", "q12", "bspline", "hermite"};
     static const std::vector<std::string> table1 = {
       "q4", "q8", "q9", "q12", "q16", "hermite"};
-    static const std::vector<std::string> contact = {
-      "q4", "bspline", "bspline-spline", "hermite"};
+    static const std::vector<std::string> contact = {"q4",
+                                                     "bspline",
+                                                     "bspline-spline",
+                                                     "hermite"};
     if (measure == "table1")
       return table1;
     if (measure.rfind("geometric", 0) == 0)
@@ -292,11 +313,12 @@ namespace glissade
     if (measure == "table1")
       return table1_point(space_of(discretisation), n, scene, output_directory);
     if (measure == "case1" || measure == "case2")
-      return contact_case_point(measure, discretisation, n, scene, settings,
-                                output_directory);
+      return contact_case_point(
+        measure, discretisation, n, scene, settings, output_directory);
     if (measure == "case3" || measure == "case3_torque")
-      return case3_point(measure, discretisation, n, scene, settings,
-                         output_directory);
-    throw InputError("Trade study/Measures", "unknown measure '" + measure + "'");
+      return case3_point(
+        measure, discretisation, n, scene, settings, output_directory);
+    throw InputError("Trade study/Measures",
+                     "unknown measure '" + measure + "'");
   }
 } // namespace glissade

@@ -71,7 +71,9 @@ namespace glissade
      * reference, |value - reference| / |reference| in %.
      */
     static double
-    error(const std::string &measure, const double value, const double reference);
+    error(const std::string &measure,
+          const double       value,
+          const double       reference);
 
     /** The discretisations a measure accepts. */
     static const std::vector<std::string> &

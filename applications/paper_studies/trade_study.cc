@@ -4,11 +4,16 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/io/atomic_file.h>
-#include <glissade/scene/scene_reader.h>
 #include <glissade/io/plotting.h>
-#include <paper_studies/trade_measures.h>
+#include <glissade/scene/scene_reader.h>
+
 #include <paper_studies/study_progress.h>
+#include <paper_studies/trade_measures.h>
 #include <paper_studies/trade_study.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,10 +23,6 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
-
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace glissade
 {
@@ -66,7 +67,7 @@ namespace glissade
         {
           if (text::trim(group).empty())
             continue;
-          const auto colon = group.find(':');
+          const auto        colon = group.find(':');
           const std::string name =
             text::trim(group.substr(0, colon == std::string::npos ? 0 : colon));
           if (colon == std::string::npos ||
@@ -75,9 +76,11 @@ namespace glissade
               std::string list;
               for (const auto &k : known)
                 list += (list.empty() ? "" : ", ") + k;
-              throw InputError(entry, "'" + text::trim(group) +
-                                        "' is not 'discretisation: n n ...' "
-                                        "with a discretisation among " + list);
+              throw InputError(entry,
+                               "'" + text::trim(group) +
+                                 "' is not 'discretisation: n n ...' "
+                                 "with a discretisation among " +
+                                 list);
             }
           std::istringstream numbers(group.substr(colon + 1));
           std::string        word;
@@ -86,12 +89,14 @@ namespace glissade
               const bool digits =
                 word.find_first_not_of("0123456789") == std::string::npos;
               const long n = digits && word.size() < 7 ? std::stol(word) : 0;
-              const bool even = measure.rfind("geometric", 0) != 0 || n % 2 == 0;
+              const bool even =
+                measure.rfind("geometric", 0) != 0 || n % 2 == 0;
               if (n < 4 || !even)
-                throw InputError(entry, "'" + word + "' after '" + name +
-                                          "' is not a number of elements of "
-                                          "at least 4" +
-                                          (even ? "" : " and even"));
+                throw InputError(entry,
+                                 "'" + word + "' after '" + name +
+                                   "' is not a number of elements of "
+                                   "at least 4" +
+                                   (even ? "" : " and even"));
               points.emplace_back(name, static_cast<unsigned int>(n));
             }
         }
@@ -105,7 +110,8 @@ namespace glissade
      * the child's message above.
      */
     TradePoint
-    run_in_child(const std::function<TradePoint()> &point, double &peak_megabytes)
+    run_in_child(const std::function<TradePoint()> &point,
+                 double                            &peak_megabytes)
     {
       int channel[2];
       if (pipe(channel) != 0)
@@ -151,7 +157,7 @@ namespace glissade
     /** y = factor n^exponent, least squares in log-log. */
     struct PowerLaw
     {
-      bool   valid = false;
+      bool   valid  = false;
       double factor = 0., exponent = 0.;
 
       PowerLaw(const std::vector<double> &n, const std::vector<double> &y)
@@ -216,10 +222,10 @@ namespace glissade
              "peak (MB) | error |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
       for (const auto &p : points)
         out << "| " << p.discretisation << " | " << p.n << " | "
-            << p.figures.dofs << " | " << p.figures.newton_iterations
-            << " | " << p.figures.active_nodes << " | "
-            << figure(p.figures.wall_seconds) << " | "
-            << figure(p.peak_megabytes) << " | " << figure(p.error) << " |\n";
+            << p.figures.dofs << " | " << p.figures.newton_iterations << " | "
+            << p.figures.active_nodes << " | " << figure(p.figures.wall_seconds)
+            << " | " << figure(p.peak_megabytes) << " | " << figure(p.error)
+            << " |\n";
 
       std::vector<double> n, error, time, dofs;
       for (const auto &p : points)
@@ -245,7 +251,8 @@ namespace glissade
           const SweepPoint *match = nullptr;
           for (const auto &q : points)
             if (q.discretisation == "q4" && q.error <= p.error &&
-                (!match || q.figures.wall_seconds < match->figures.wall_seconds))
+                (!match ||
+                 q.figures.wall_seconds < match->figures.wall_seconds))
               match = &q;
           out << "| " << p.discretisation << ' ' << p.n << " | "
               << figure(p.error) << " | " << figure(p.figures.wall_seconds)
@@ -258,7 +265,8 @@ namespace glissade
             {
               const double needed =
                 std::pow(p.error / error_law.factor, 1. / error_law.exponent);
-              out << "about " << figure(needed, 2) << " (fit, beyond the sweep) | "
+              out << "about " << figure(needed, 2)
+                  << " (fit, beyond the sweep) | "
                   << figure(time_law(needed), 2) << " | "
                   << figure(dofs_law(needed), 2) << " |\n";
             }
@@ -288,12 +296,16 @@ namespace glissade
                         "case2, case3",
                         Patterns::List(Patterns::Selection(measures)),
                         "The paper's measures of accuracy to sweep.");
-      prm.declare_entry("Output directory", "output/trade_study",
-                        Patterns::Anything(), "Where the CSVs, PNGs and "
-                                              "trade_tables.md go.");
+      prm.declare_entry("Output directory",
+                        "output/trade_study",
+                        Patterns::Anything(),
+                        "Where the CSVs, PNGs and "
+                        "trade_tables.md go.");
       const auto sweep = [&](const std::string &default_value,
                              const std::string &what) {
-        prm.declare_entry("Sweep", default_value, Patterns::Anything(),
+        prm.declare_entry("Sweep",
+                          default_value,
+                          Patterns::Anything(),
                           "'discretisation: n n ...; ...': " + what);
       };
       prm.enter_subsection("Geometric");
@@ -302,48 +314,69 @@ namespace glissade
             "elements along the half ring's outer edge (even).");
       prm.leave_subsection();
       prm.enter_subsection("Table 1");
-      prm.declare_entry("Scene", "table1_beam.prm", Patterns::Anything(),
+      prm.declare_entry("Scene",
+                        "table1_beam.prm",
+                        Patterns::Anything(),
                         "Table 1's beam (relative to this file's folder).");
       sweep("q4: 30 60 120 240 480; q8: 30 60 120; q9: 30 60 120; "
             "q12: 30 60 120; hermite: 30 60 120",
             "elements along the beam (n/15 across).");
-      prm.declare_entry("Reference", "q16: 240", Patterns::Anything(),
+      prm.declare_entry("Reference",
+                        "q16: 240",
+                        Patterns::Anything(),
                         "'discretisation: n': the run the errors are taken "
                         "against.");
       prm.leave_subsection();
       prm.enter_subsection("Case 1");
-      prm.declare_entry("Scene", "case1_beam_ring.prm", Patterns::Anything(),
+      prm.declare_entry("Scene",
+                        "case1_beam_ring.prm",
+                        Patterns::Anything(),
                         "Case 1 with the deformable ring.");
       sweep("q4: 30 60 120; bspline: 30 60 120; bspline-spline: 60; "
             "hermite: 30 60",
             "elements along the beam and the ring (n/15 across).");
-      prm.declare_entry("Reference", "hermite: 120", Patterns::Anything(),
+      prm.declare_entry("Reference",
+                        "hermite: 120",
+                        Patterns::Anything(),
                         "'discretisation: n': the run the errors are taken "
                         "against.");
       prm.leave_subsection();
       prm.enter_subsection("Case 2");
-      prm.declare_entry("Scene", "case2_sliding.prm", Patterns::Anything(),
+      prm.declare_entry("Scene",
+                        "case2_sliding.prm",
+                        Patterns::Anything(),
                         "Case 2's scene.");
-      sweep("q4: 60 120 240; bspline: 60 120; bspline-spline: 120; "
-            "hermite: 60 120",
-            "elements around each ring (n/15 across; the square about n/12 a side, even).");
-      prm.declare_entry("Increments", "250", Patterns::Integer(1),
+      sweep(
+        "q4: 60 120 240; bspline: 60 120; bspline-spline: 120; "
+        "hermite: 60 120",
+        "elements around each ring (n/15 across; the square about n/12 a side, even).");
+      prm.declare_entry("Increments",
+                        "250",
+                        Patterns::Integer(1),
                         "Increments of the push (250 over half the scene's "
                         "load: the paper's 1e-4 m each, the contact phase).");
-      prm.declare_entry("Load fraction", "0.5", Patterns::Double(0., 1.),
+      prm.declare_entry("Load fraction",
+                        "0.5",
+                        Patterns::Double(0., 1.),
                         "Share of the scene's load program that is run.");
       prm.leave_subsection();
       prm.enter_subsection("Case 3");
-      prm.declare_entry("Scene", "case3_rings.prm", Patterns::Anything(),
+      prm.declare_entry("Scene",
+                        "case3_rings.prm",
+                        Patterns::Anything(),
                         "Case 3's scene.");
       sweep("q4: 40 80 160; bspline: 40 80; bspline-spline: 40; "
             "hermite: 20 40 80",
             "elements around the rings (multiples of 4; Hermite: the outer "
             "ring, the inner Q4 ring keeps 40).");
-      prm.declare_entry("Rotation angle", "9", Patterns::Double(0.),
+      prm.declare_entry("Rotation angle",
+                        "9",
+                        Patterns::Double(0.),
                         "Degrees of rotation after the compression: the same "
                         "for every point (9: one element at 40).");
-      prm.declare_entry("Increments per element", "50", Patterns::Integer(1),
+      prm.declare_entry("Increments per element",
+                        "50",
+                        Patterns::Integer(1),
                         "Rotation increments per element crossed, so that "
                         "every mesh samples its ripple alike (the paper: 50).");
       prm.leave_subsection();
@@ -367,21 +400,26 @@ namespace glissade
         const std::string section = section_of(measure);
         prm.enter_subsection(section);
         const std::string where = "Trade study/" + section + "/";
-        const auto points = parse_sweep(prm.get("Sweep"), measure, where + "Sweep");
+        const auto        points =
+          parse_sweep(prm.get("Sweep"), measure, where + "Sweep");
         std::string         scene;
         std::vector<double> settings;
         if (measure.rfind("geometric", 0) != 0)
           scene = text::path_beside(prm_file, prm.get("Scene"));
         if (measure == "case2")
-          settings = {double(SceneReader::get_integer(prm, "Increments", prm_file)),
+          settings = {double(
+                        SceneReader::get_integer(prm, "Increments", prm_file)),
                       SceneReader::get_double(prm, "Load fraction", prm_file)};
         if (measure.rfind("case3", 0) == 0)
           settings = {SceneReader::get_double(prm, "Rotation angle", prm_file),
-                      double(SceneReader::get_integer(prm, "Increments per element", prm_file))};
+                      double(SceneReader::get_integer(prm,
+                                                      "Increments per element",
+                                                      prm_file))};
         std::vector<std::pair<std::string, unsigned int>> reference;
         if (TradeMeasures::needs_reference(measure))
           {
-            reference = parse_sweep(prm.get("Reference"), measure, where + "Reference");
+            reference =
+              parse_sweep(prm.get("Reference"), measure, where + "Reference");
             if (reference.size() != 1)
               throw InputError(where + "Reference",
                                "give one 'discretisation: n'");
@@ -399,14 +437,14 @@ namespace glissade
           p.n              = n;
           p.figures        = run_in_child(
             [&]() {
-              return TradeMeasures::run(measure, discretisation, n, scene,
-                                        settings, directory);
+              return TradeMeasures::run(
+                measure, discretisation, n, scene, settings, directory);
             },
             p.peak_megabytes);
           std::cout << " value " << std::setprecision(6) << p.figures.value
-                    << ", " << p.figures.dofs << " dofs, " << std::setprecision(3)
-                    << p.figures.wall_seconds << " s, peak " << p.peak_megabytes
-                    << " MB" << std::endl;
+                    << ", " << p.figures.dofs << " dofs, "
+                    << std::setprecision(3) << p.figures.wall_seconds
+                    << " s, peak " << p.peak_megabytes << " MB" << std::endl;
           return p;
         };
 
@@ -414,10 +452,11 @@ namespace glissade
         double      reference_value = 0.;
         if (!reference.empty())
           {
-            const SweepPoint r = run_point(reference[0].first, reference[0].second);
-            reference_value    = r.figures.value;
-            reference_text     = reference[0].first + " at n = " +
-                             std::to_string(r.n) + ", value " +
+            const SweepPoint r =
+              run_point(reference[0].first, reference[0].second);
+            reference_value = r.figures.value;
+            reference_text  = reference[0].first +
+                             " at n = " + std::to_string(r.n) + ", value " +
                              figure(r.figures.value, 8) + ", " +
                              figure(r.figures.dofs) + " dofs, " +
                              figure(r.figures.wall_seconds) + " s";
@@ -426,8 +465,10 @@ namespace glissade
         for (const auto &[discretisation, n] : points)
           {
             results.push_back(run_point(discretisation, n));
-            results.back().error = TradeMeasures::error(
-              measure, results.back().figures.value, reference_value);
+            results.back().error =
+              TradeMeasures::error(measure,
+                                   results.back().figures.value,
+                                   reference_value);
           }
 
         AtomicFile csv(directory + "/trade_" + measure + ".csv");

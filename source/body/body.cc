@@ -19,27 +19,30 @@ namespace glissade
     : description(description)
     , source(source)
   {
-    const std::string where  = source + ": Body " + description.name;
-    const MeshLabels  labels = MeshFactory::create(description.mesh, mesh, where);
-    boundary_names           = labels.boundaries;
-    reference_size           = mesh_diameter(mesh);
-    materials                = std::make_unique<BodyMaterials>(
-      description.material,
-      labels.regions,
-      description.mesh.type == "gmsh" ? description.mesh.file : "",
-      where);
+    const std::string where = source + ": Body " + description.name;
+    const MeshLabels  labels =
+      MeshFactory::create(description.mesh, mesh, where);
+    boundary_names = labels.boundaries;
+    reference_size = mesh_diameter(mesh);
+    materials =
+      std::make_unique<BodyMaterials>(description.material,
+                                      labels.regions,
+                                      description.mesh.type == "gmsh" ?
+                                        description.mesh.file :
+                                        "",
+                                      where);
 
     element_space = ElementSpaceRegistry::create(description.element_space);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
     // the chords instead.
-    if (labels.second_order &&
-        (description.element_space == "q1" ||
-         description.element_space == "hermite"))
+    if (labels.second_order && (description.element_space == "q1" ||
+                                description.element_space == "hermite"))
       throw InputError(where + "/Element/Space",
                        "'" + description.mesh.file +
                          "' has second-order quadrilaterals, whose curved "
-                         "edges a '" + description.element_space +
+                         "edges a '" +
+                         description.element_space +
                          "' body cannot follow: choose q2, q8, q3 or q12, "
                          "or save the mesh first-order (gmsh -order 1)");
     dofs.reinit(mesh);
@@ -47,9 +50,7 @@ namespace glissade
     element_space->setup(dofs, element_constraints);
 
     boundary_conditions =
-      std::make_unique<BoundaryConditions>(description,
-                                           boundary_names,
-                                           mesh);
+      std::make_unique<BoundaryConditions>(description, boundary_names, mesh);
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());
@@ -98,9 +99,9 @@ namespace glissade
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
 
-    const double       thickness = description.material.thickness;
+    const double       thickness          = description.material.thickness;
     const auto         boundary_evaluator = element_space->create_evaluator();
-    const unsigned int n_local = boundary_evaluator->dofs_per_cell();
+    const unsigned int n_local            = boundary_evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
       component[i] = boundary_evaluator->displacement_component(i);
@@ -134,10 +135,10 @@ namespace glissade
       Scratch(const Scratch &other)
         : Scratch(other.space, other.grad.size())
       {}
-      const ElementSpace                   &space;
-      std::unique_ptr<CellEvaluator>        evaluator;
-      std::vector<Tensor<1, 2>>             grad;
-      std::vector<SymmetricTensor<2, 2>>    dE, D_dE;
+      const ElementSpace                &space;
+      std::unique_ptr<CellEvaluator>     evaluator;
+      std::vector<Tensor<1, 2>>          grad;
+      std::vector<SymmetricTensor<2, 2>> dE, D_dE;
     };
     struct CellContribution
     {
@@ -155,92 +156,94 @@ namespace glissade
       typename DoFHandler<2>::active_cell_iterator cell;
     };
 
-    const auto integrate = [&](const typename DoFHandler<2>::active_cell_iterator &cell,
-                               Scratch          &scratch,
-                               CellContribution &data) {
-      CellEvaluator &evaluator = *scratch.evaluator;
-      auto          &grad      = scratch.grad;
-      auto          &dE        = scratch.dE;
-      auto          &D_dE      = scratch.D_dE;
-      auto          &cell_matrix = data.cell_matrix;
-      auto          &cell_rhs    = data.cell_rhs;
-      data.cell = cell;
-      data.rejection.clear();
-      evaluator.reinit(cell);
-      cell->get_dof_indices(data.local_dofs);
-      cell_matrix = 0.;
-      cell_rhs    = 0.;
-      const Material &cell_material = materials->of_cell(cell->material_id());
+    const auto integrate =
+      [&](const typename DoFHandler<2>::active_cell_iterator &cell,
+          Scratch                                            &scratch,
+          CellContribution                                   &data) {
+        CellEvaluator &evaluator   = *scratch.evaluator;
+        auto          &grad        = scratch.grad;
+        auto          &dE          = scratch.dE;
+        auto          &D_dE        = scratch.D_dE;
+        auto          &cell_matrix = data.cell_matrix;
+        auto          &cell_rhs    = data.cell_rhs;
+        data.cell                  = cell;
+        data.rejection.clear();
+        evaluator.reinit(cell);
+        cell->get_dof_indices(data.local_dofs);
+        cell_matrix                   = 0.;
+        cell_rhs                      = 0.;
+        const Material &cell_material = materials->of_cell(cell->material_id());
 
-      for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
-        {
-          // Every shape function is primitive: Grad N_i has a single
-          // non-zero row (its component c_i), which makes every
-          // contraction below a small dot product.
-          Tensor<2, 2> H; // displacement gradient
-          for (unsigned int i = 0; i < n_local; ++i)
-            {
-              grad[i] = evaluator.shape_grad(i, q);
-              H[component[i]] += solution(data.local_dofs[i]) * grad[i];
-            }
-          const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
-          const double       J = determinant(F);
-          if (!(J > 0.) || !std::isfinite(J))
-            {
-              std::ostringstream why;
-              why << "is inverted, det F = " << J
-                  << " (an increment too large for the deformation, or a "
-                     "mesh too coarse for it)";
-              if (data.rejection.empty())
-                data.rejection = why.str();
-              continue;
-            }
-          const MaterialPointResponse response = cell_material.evaluate(H);
-          // The tangent too: at u = 0 the stress is zero however large
-          // E is, and only the stiffness overflows.
-          if (!std::isfinite(response.stress.norm()) ||
-              !std::isfinite(response.tangent.norm()))
-            {
-              std::ostringstream why;
-              const auto [young_modulus, entry] =
-                materials->young_modulus_of_cell(cell->material_id());
-              why << "has a stress or stiffness that is not finite: the "
-                  << entry << " (" << young_modulus << ") times the strain is beyond double precision; "
-                     "express the scene in other units";
-              if (data.rejection.empty())
-                data.rejection = why.str();
-              continue;
-            }
-          const Tensor<2, 2> P  = F * Tensor<2, 2>(response.stress);
-          const double       dV = evaluator.JxW(q) * thickness;
+        for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
+          {
+            // Every shape function is primitive: Grad N_i has a single
+            // non-zero row (its component c_i), which makes every
+            // contraction below a small dot product.
+            Tensor<2, 2> H; // displacement gradient
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                grad[i] = evaluator.shape_grad(i, q);
+                H[component[i]] += solution(data.local_dofs[i]) * grad[i];
+              }
+            const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+            const double       J = determinant(F);
+            if (!(J > 0.) || !std::isfinite(J))
+              {
+                std::ostringstream why;
+                why << "is inverted, det F = " << J
+                    << " (an increment too large for the deformation, or a "
+                       "mesh too coarse for it)";
+                if (data.rejection.empty())
+                  data.rejection = why.str();
+                continue;
+              }
+            const MaterialPointResponse response = cell_material.evaluate(H);
+            // The tangent too: at u = 0 the stress is zero however large
+            // E is, and only the stiffness overflows.
+            if (!std::isfinite(response.stress.norm()) ||
+                !std::isfinite(response.tangent.norm()))
+              {
+                std::ostringstream why;
+                const auto [young_modulus, entry] =
+                  materials->young_modulus_of_cell(cell->material_id());
+                why << "has a stress or stiffness that is not finite: the "
+                    << entry << " (" << young_modulus
+                    << ") times the strain is beyond double precision; "
+                       "express the scene in other units";
+                if (data.rejection.empty())
+                  data.rejection = why.str();
+                continue;
+              }
+            const Tensor<2, 2> P  = F * Tensor<2, 2>(response.stress);
+            const double       dV = evaluator.JxW(q) * thickness;
 
-          for (unsigned int i = 0; i < n_local; ++i)
-            {
-              const unsigned int c = component[i];
-              for (unsigned int a = 0; a < 2; ++a)
-                for (unsigned int b = a; b < 2; ++b)
-                  dE[i][a][b] =
-                    0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
-              D_dE[i] = response.tangent * dE[i];
-              cell_rhs(i) -= (P[c] * grad[i]) * dV;
-            }
-          for (unsigned int i = 0; i < n_local; ++i)
-            {
-              const Tensor<1, 2> S_grad_i =
-                Tensor<2, 2>(response.stress) * grad[i];
-              for (unsigned int j = 0; j <= i; ++j)
-                {
-                  double k = dE[j] * D_dE[i];
-                  if (component[i] == component[j])
-                    k += S_grad_i * grad[j];
-                  cell_matrix(i, j) += k * dV;
-                }
-            }
-        }
-      for (unsigned int i = 0; i < n_local; ++i)
-        for (unsigned int j = i + 1; j < n_local; ++j)
-          cell_matrix(i, j) = cell_matrix(j, i);
-    };
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                const unsigned int c = component[i];
+                for (unsigned int a = 0; a < 2; ++a)
+                  for (unsigned int b = a; b < 2; ++b)
+                    dE[i][a][b] =
+                      0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
+                D_dE[i] = response.tangent * dE[i];
+                cell_rhs(i) -= (P[c] * grad[i]) * dV;
+              }
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                const Tensor<1, 2> S_grad_i =
+                  Tensor<2, 2>(response.stress) * grad[i];
+                for (unsigned int j = 0; j <= i; ++j)
+                  {
+                    double k = dE[j] * D_dE[i];
+                    if (component[i] == component[j])
+                      k += S_grad_i * grad[j];
+                    cell_matrix(i, j) += k * dV;
+                  }
+              }
+          }
+        for (unsigned int i = 0; i < n_local; ++i)
+          for (unsigned int j = i + 1; j < n_local; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+      };
 
     // The first cell that makes the state inadmissible names the problem.
     const auto add = [&](const CellContribution &data) {
@@ -280,7 +283,10 @@ namespace glissade
                     CellContribution(n_local));
 
     Vector<double> point_loads(dofs.n_dofs());
-    boundary_conditions->add_point_loads(dofs, *element_space, time, point_loads);
+    boundary_conditions->add_point_loads(dofs,
+                                         *element_space,
+                                         time,
+                                         point_loads);
     unconstrained_residual -= point_loads;
     {
       std::vector<types::global_dof_index> index(1);
@@ -294,7 +300,7 @@ namespace glissade
           }
     }
 
-    internal_force_norm = internal_forces.l2_norm();
+    internal_force_norm     = internal_forces.l2_norm();
     Vector<double> external = internal_forces;
     external -= unconstrained_residual;
     external_force_norm = external.l2_norm();
@@ -342,8 +348,8 @@ namespace glissade
                 if (!load.is_pressure)
                   {
                     // Dead traction per unit reference length.
-                    const Tensor<1, 2> t({load.function->value(X, 0),
-                                          load.function->value(X, 1)});
+                    const Tensor<1, 2> t(
+                      {load.function->value(X, 0), load.function->value(X, 1)});
                     for (unsigned int i = 0; i < n_local; ++i)
                       cell_rhs(i) += evaluator.shape_value(i, q) *
                                      t[evaluator.displacement_component(i)] *
@@ -355,9 +361,9 @@ namespace glissade
                 const Tensor<2, 2> F = unit_symmetric_tensor<2>() +
                                        evaluator.gradient(cell_values, q);
                 const double       p = load.function->value(X);
-                const Tensor<1, 2> cof_F_N0({F[1][1] * N0[0] - F[1][0] * N0[1],
-                                             -F[0][1] * N0[0] +
-                                               F[0][0] * N0[1]});
+                const Tensor<1, 2> cof_F_N0(
+                  {F[1][1] * N0[0] - F[1][0] * N0[1],
+                   -F[0][1] * N0[0] + F[0][0] * N0[1]});
                 for (unsigned int i = 0; i < n_local; ++i)
                   {
                     const unsigned int ci = evaluator.displacement_component(i);
@@ -431,8 +437,8 @@ namespace glissade
         const double k = sum / n_dofs();
         for (unsigned int s = 0; s < springs.size(); ++s)
           {
-            double &diagonal = tangent.diag_element(springs[s].first);
-            assembled[s]     = diagonal;
+            double &diagonal  = tangent.diag_element(springs[s].first);
+            assembled[s]      = diagonal;
             springs[s].second = k;
             diagonal += k;
           }
@@ -495,7 +501,8 @@ namespace glissade
 
 
   void
-  Body::choose_spring_dofs(const std::vector<types::global_dof_index> &contact_dofs)
+  Body::choose_spring_dofs(
+    const std::vector<types::global_dof_index> &contact_dofs)
   {
     // The candidates: unconstrained nodal values among the contact dofs,
     // each with the values that the free motions take there.
@@ -523,7 +530,7 @@ namespace glissade
     std::vector<std::vector<double>> held;
     for (unsigned int step = 0; step < free_motions.size(); ++step)
       {
-        double                  best = 0.;
+        double                  best   = 0.;
         types::global_dof_index chosen = 0;
         std::vector<double>     direction;
         for (const auto &[dof, values] : candidates)
@@ -603,12 +610,14 @@ namespace glissade
           }
         std::vector<long> wanted;
         for (const auto dof : columns)
-          for (const auto &[j, w] : contact_rows_resolved[contact_position[dof]])
+          for (const auto &[j, w] :
+               contact_rows_resolved[contact_position[dof]])
             wanted.push_back(j);
         cholesky.compute_inverse_columns(wanted);
         for (std::size_t c = 0; c < columns.size(); ++c)
           {
-            const auto &column = contact_rows_resolved[contact_position[columns[c]]];
+            const auto &column =
+              contact_rows_resolved[contact_position[columns[c]]];
             for (std::size_t r = 0; r < n_rows; ++r)
               {
                 double value = 0.;
@@ -630,7 +639,8 @@ namespace glissade
           {
             Vector<double> unit(n_dofs());
             unit(columns[c]) = 1.;
-            found = compliance_columns.emplace(columns[c], Vector<double>()).first;
+            found =
+              compliance_columns.emplace(columns[c], Vector<double>()).first;
             solve_homogeneous(unit, found->second);
           }
         for (std::size_t r = 0; r < n_rows; ++r)
@@ -712,14 +722,13 @@ namespace glissade
     std::ostringstream location;
     location.precision(17);
     location << "point(" << point[0] << ", " << point[1] << ")";
-    const Location where =
-      BoundaryConditions::resolve(location.str(),
-                                  boundary_names,
-                                  mesh,
-                                  description.name,
-                                  "",
-                                  false,
-                                  reference_size);
+    const Location where = BoundaryConditions::resolve(location.str(),
+                                                       boundary_names,
+                                                       mesh,
+                                                       description.name,
+                                                       "",
+                                                       false,
+                                                       reference_size);
     return BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
   }
 
@@ -746,8 +755,8 @@ namespace glissade
   Body::max_displacement() const
   {
     // Nodal values: pair the x and y value dofs that share a node.
-    const FiniteElement<2> &fe      = element_space->finite_element();
-    const unsigned int      per_dim = element_space->components_per_displacement();
+    const FiniteElement<2> &fe = element_space->finite_element();
+    const unsigned int per_dim = element_space->components_per_displacement();
     std::vector<std::pair<unsigned int, unsigned int>> pairs;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       {

@@ -2,11 +2,11 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
-#include <glissade/mesh/mesh_diameter.h>
 #include <glissade/base/text.h>
 #include <glissade/base/user_function.h>
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/mesh/boundary_normals.h>
+#include <glissade/mesh/mesh_diameter.h>
 
 #include <cmath>
 #include <set>
@@ -40,10 +40,10 @@ namespace glissade
         angle.set_time(this->get_time());
         const double a = checked_user_value(
           angle.value(X), entry, angle_expression, this->get_time(), X);
-        const Tensor<1, 2> d = X - center;
-        const double rotated = component == 0 ?
-                                 std::cos(a) * d[0] - std::sin(a) * d[1] :
-                                 std::sin(a) * d[0] + std::cos(a) * d[1];
+        const Tensor<1, 2> d       = X - center;
+        const double       rotated = component == 0 ?
+                                       std::cos(a) * d[0] - std::sin(a) * d[1] :
+                                       std::sin(a) * d[0] + std::cos(a) * d[1];
         return rotated - d[component];
       }
 
@@ -77,8 +77,8 @@ namespace glissade
     double   x, y;
     if (text::parse_point_location(location, x, y))
       {
-        result.is_vertex = true;
-        result.point     = Point<2>(x, y);
+        result.is_vertex      = true;
+        result.point          = Point<2>(x, y);
         const auto  &vertices = triangulation.get_vertices();
         const auto   used     = triangulation.get_used_vertices();
         double       best     = std::numeric_limits<double>::max();
@@ -91,9 +91,8 @@ namespace glissade
             }
         // The diameter walks the boundary: callers that resolve many
         // points pass it.
-        const double size = known_diameter > 0. ?
-                              known_diameter :
-                              mesh_diameter(triangulation);
+        const double size =
+          known_diameter > 0. ? known_diameter : mesh_diameter(triangulation);
         if (best > 1e-8 * size && allow_face_point)
           for (const auto &cell : triangulation.active_cell_iterators())
             for (const unsigned int f : cell->face_indices())
@@ -101,7 +100,8 @@ namespace glissade
                 {
                   const Point<2>     a = cell->face(f)->vertex(0);
                   const Tensor<1, 2> d = cell->face(f)->vertex(1) - a;
-                  const double fraction = (result.point - a) * d / d.norm_square();
+                  const double       fraction =
+                    (result.point - a) * d / d.norm_square();
                   const double distance =
                     (result.point - (a + fraction * d)).norm();
                   if (fraction >= 0. && fraction <= 1. &&
@@ -123,8 +123,7 @@ namespace glissade
                     << "'"
                     << (allow_face_point ? " nor on a straight boundary face" :
                                            "")
-                    << " (the nearest vertex is at " << vertices[best_v]
-                    << ")";
+                    << " (the nearest vertex is at " << vertices[best_v] << ")";
             throw InputError(entry, message.str());
           }
         result.vertex = best_v;
@@ -167,8 +166,9 @@ namespace glissade
     std::array<types::global_dof_index, 2> dofs;
     for (unsigned int k = 0; k < fe.n_dofs_per_vertex(); ++k)
       {
-        const unsigned int local     = v * fe.n_dofs_per_vertex() + k;
-        const unsigned int component = fe.system_to_component_index(local).first;
+        const unsigned int local = v * fe.n_dofs_per_vertex() + k;
+        const unsigned int component =
+          fe.system_to_component_index(local).first;
         if (component % per_dim == 0)
           dofs[component / per_dim] = cell->vertex_dof_index(v, k);
       }
@@ -213,9 +213,8 @@ namespace glissade
     for (const auto &d : body.dirichlet)
       {
         DirichletItem item;
-        item.where = resolve(d.location, names, tria, body.name,
-                             d.entry);
-        item.components      = {{d.x_component, d.y_component}};
+        item.where      = resolve(d.location, names, tria, body.name, d.entry);
+        item.components = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
         if (d.direction != DirichletDescription::Direction::cartesian)
           {
@@ -278,16 +277,16 @@ namespace glissade
 
   std::vector<std::pair<unsigned int, Tensor<1, 2>>>
   BoundaryConditions::support_directions(
-    const Location                         &where,
-    const DirichletDescription::Direction   direction,
-    const Triangulation<2>                 &tria,
-    const std::string                      &body_name,
-    const std::string                      &entry)
+    const Location                       &where,
+    const DirichletDescription::Direction direction,
+    const Triangulation<2>               &tria,
+    const std::string                    &body_name,
+    const std::string                    &entry)
   {
     // The outward normal at a boundary vertex: the sum of the unit outward
     // normals of its faces on that boundary (on any boundary for a point).
-    std::map<unsigned int, Tensor<1, 2>> normal = boundary_vertex_normals(
-      tria, [&where](const types::boundary_id id) {
+    std::map<unsigned int, Tensor<1, 2>> normal =
+      boundary_vertex_normals(tria, [&where](const types::boundary_id id) {
         return where.is_vertex || id == where.boundary;
       });
     if (where.is_vertex)
@@ -307,11 +306,11 @@ namespace glissade
                              "': the boundary normal at a node is undefined "
                              "(a cusp); give x or y there");
         const Tensor<1, 2> unit = n / n.norm();
-        directions.emplace_back(
-          vertex,
-          direction == DirichletDescription::Direction::normal ?
-            unit :
-            Tensor<1, 2>({-unit[1], unit[0]}));
+        directions.emplace_back(vertex,
+                                direction ==
+                                    DirichletDescription::Direction::normal ?
+                                  unit :
+                                  Tensor<1, 2>({-unit[1], unit[0]}));
       }
     if (directions.empty())
       throw InputError(entry,
@@ -345,7 +344,8 @@ namespace glissade
             // rollers).
             for (const auto &[vertex, d] : item.directed_vertices)
               {
-                const auto dofs = cached_vertex_dofs(dof_handler, space, vertex);
+                const auto dofs =
+                  cached_vertex_dofs(dof_handler, space, vertex);
                 unsigned int a = std::abs(d[0]) >= std::abs(d[1]) ? 0 : 1;
                 if (relations.count(dofs[a]) && !relations.count(dofs[1 - a]) &&
                     std::abs(d[1 - a]) > 1e-12)
@@ -400,8 +400,8 @@ namespace glissade
           const double det = 1. - c_a * c_b;
           if (std::abs(det) > 1e-10)
             {
-              ra.value          = (v_a - c_a * v_b) / det;
-              rb->second.value  = v_b - c_b * ra.value;
+              ra.value         = (v_a - c_a * v_b) / det;
+              rb->second.value = v_b - c_b * ra.value;
               rb->second.others.clear();
             }
           else
@@ -434,9 +434,10 @@ namespace glissade
 
 
   std::vector<std::vector<double>>
-  BoundaryConditions::support_rows(const DoFHandler<2>              &dof_handler,
-                                   const ElementSpace               &space,
-                                   const std::array<RigidMotion, 3> &basis) const
+  BoundaryConditions::support_rows(
+    const DoFHandler<2>              &dof_handler,
+    const ElementSpace               &space,
+    const std::array<RigidMotion, 3> &basis) const
   {
     // A rigid motion as a displacement field: the space interpolates it on
     // a support exactly (it is linear), derivative dofs included.
@@ -494,8 +495,9 @@ namespace glissade
                                    item.all_derivatives,
                                    relations[j]);
         for (unsigned int i = 0; i < relations[0].size(); ++i)
-          rows.push_back(
-            {relations[0][i].value, relations[1][i].value, relations[2][i].value});
+          rows.push_back({relations[0][i].value,
+                          relations[1][i].value,
+                          relations[2][i].value});
       }
     return rows;
   }

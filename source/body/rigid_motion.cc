@@ -5,8 +5,15 @@
 #include <sstream>
 
 extern "C" void
-dsyev_(const char *jobz, const char *uplo, const int *n, double *a,
-       const int *lda, double *w, double *work, const int *lwork, int *info);
+dsyev_(const char *jobz,
+       const char *uplo,
+       const int  *n,
+       double     *a,
+       const int  *lda,
+       double     *w,
+       double     *work,
+       const int  *lwork,
+       int        *info);
 
 namespace glissade
 {
@@ -28,10 +35,11 @@ namespace glissade
       }
     else
       {
-        // The point that does not move: translation + rotation e3 x (p - c) = 0.
+        // The point that does not move: translation + rotation e3 x (p - c) =
+        // 0.
         const Point<2> p(center[0] - translation[1] / rotation,
                          center[1] + translation[0] / rotation);
-        const auto clean = [length](const double x) {
+        const auto     clean = [length](const double x) {
           return std::abs(x) < 1e-9 * length ? 0. : x;
         };
         text << std::setprecision(4) << "a rotation about (" << clean(p[0])
@@ -102,8 +110,15 @@ namespace glissade
     const int           size = n, lwork = 8 * n + 8;
     std::vector<double> eigenvalues(n), work(lwork);
     int                 info = 0;
-    dsyev_("V", "L", &size, gram.data(), &size, eigenvalues.data(),
-           work.data(), &lwork, &info);
+    dsyev_("V",
+           "L",
+           &size,
+           gram.data(),
+           &size,
+           eigenvalues.data(),
+           work.data(),
+           &lwork,
+           &info);
     if (info != 0)
       return basis;
     for (unsigned int k = 0; k < n; ++k)

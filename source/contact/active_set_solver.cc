@@ -17,8 +17,8 @@ namespace glissade
                                          const std::vector<double>  &mu,
                                          std::vector<Vector2>       &r) const
   {
-    constexpr unsigned int t = ComplianceMatrix::tangential;
-    constexpr unsigned int n = ComplianceMatrix::normal;
+    constexpr unsigned int t       = ComplianceMatrix::tangential;
+    constexpr unsigned int n       = ComplianceMatrix::normal;
     const unsigned int     n_nodes = W.n_nodes();
     Result                 result;
     if (u_free.size() != n_nodes || mu.size() != n_nodes ||
@@ -69,7 +69,8 @@ namespace glissade
         result.sweeps = update;
         if (!solve_for_statuses(W, u_free, mu, status, slip_sign, r))
           r.assign(n_nodes, Vector2{{0., 0.}});
-        result.residuals = compute_contact_residuals(W, u_free, mu, r, scale, &u);
+        result.residuals =
+          compute_contact_residuals(W, u_free, mu, r, scale, &u);
 
         // x = r - rho (u_t, g + mu |u_t|), projected on the cone: its
         // status is the one the law gives the node (the semismooth Newton
@@ -77,12 +78,14 @@ namespace glissade
         bool changed = false;
         for (unsigned int k = 0; k < n_nodes; ++k)
           {
-            const Vector2 x = {{r[k][t] - rho[k] * u[k][t],
-                                r[k][n] - rho[k] * (u[k][n] + mu[k] * std::abs(u[k][t]))}};
-            const Vector2    p = project_on_coulomb_cone(x, mu[k]);
-            const NodeStatus s = classify(p, mu[k]);
-            const double     sign =
-              s == NodeStatus::slip && mu[k] > 0. ? (p[t] >= 0. ? 1. : -1.) : 0.;
+            const Vector2 x = {
+              {r[k][t] - rho[k] * u[k][t],
+               r[k][n] - rho[k] * (u[k][n] + mu[k] * std::abs(u[k][t]))}};
+            const Vector2    p    = project_on_coulomb_cone(x, mu[k]);
+            const NodeStatus s    = classify(p, mu[k]);
+            const double     sign = s == NodeStatus::slip && mu[k] > 0. ?
+                                      (p[t] >= 0. ? 1. : -1.) :
+                                      0.;
             if (s != status[k] || sign != slip_sign[k])
               {
                 changed = true;
@@ -91,8 +94,8 @@ namespace glissade
                   std::cerr << "        update " << update << " node " << k
                             << ": " << int(status[k]) << " " << slip_sign[k]
                             << " -> " << int(s) << " " << sign << "  r ("
-                            << r[k][t] << ", " << r[k][n] << ") u ("
-                            << u[k][t] << ", " << u[k][n] << ")" << std::endl;
+                            << r[k][t] << ", " << r[k][n] << ") u (" << u[k][t]
+                            << ", " << u[k][n] << ")" << std::endl;
               }
             status[k]    = s;
             slip_sign[k] = sign;
@@ -100,8 +103,8 @@ namespace glissade
         double largest_r = 0.;
         for (const auto &rk : r)
           largest_r = std::max(largest_r, std::hypot(rk[0], rk[1]));
-        const double bound =
-          settings.residual_tolerance * std::max(free_length, scale * largest_r);
+        const double bound = settings.residual_tolerance *
+                             std::max(free_length, scale * largest_r);
         result.residual_bound = bound;
         if (!changed && result.residuals.complementarity <= bound &&
             result.residuals.friction <= bound &&

@@ -5,8 +5,14 @@
 #include <sstream>
 
 extern "C" void
-dgesv_(const int *n, const int *nrhs, double *a, const int *lda, int *ipiv,
-       double *b, const int *ldb, int *info);
+dgesv_(const int *n,
+       const int *nrhs,
+       double    *a,
+       const int *lda,
+       int       *ipiv,
+       double    *b,
+       const int *ldb,
+       int       *info);
 
 namespace glissade
 {
@@ -83,9 +89,10 @@ namespace glissade
       Residuals result;
       for (std::size_t k = 0; k < u.size(); ++k)
         {
-          const double gap       = u[k][n];
-          result.complementarity = std::max(
-              result.complementarity, std::abs(std::min(gap, scale * r[k][n])));
+          const double gap = u[k][n];
+          result.complementarity =
+            std::max(result.complementarity,
+                     std::abs(std::min(gap, scale * r[k][n])));
           result.max_penetration = std::max(result.max_penetration, -gap);
 
           // Coulomb's law for the tangential part, at the given normal
@@ -97,12 +104,12 @@ namespace glissade
           const double scaled_r_t = scale * r[k][t];
           const double trial      = scaled_r_t - u[k][t];
           const double projected =
-              std::max(-half_width, std::min(half_width, trial));
+            std::max(-half_width, std::min(half_width, trial));
           result.friction =
-              std::max(result.friction, std::abs(scaled_r_t - projected));
+            std::max(result.friction, std::abs(scaled_r_t - projected));
           result.max_cone_violation =
-              std::max(result.max_cone_violation,
-                       scale * (std::abs(r[k][t]) - mu[k] * r[k][n]));
+            std::max(result.max_cone_violation,
+                     scale * (std::abs(r[k][t]) - mu[k] * r[k][n]));
         }
       return result;
     }
@@ -111,13 +118,15 @@ namespace glissade
     // LAPACK's LU with partial pivoting; false if A is singular to working
     // precision.
     bool
-    solve_dense(std::vector<double> &A, std::vector<double> &b,
-                const std::size_t m)
+    solve_dense(std::vector<double> &A,
+                std::vector<double> &b,
+                const std::size_t    m)
     {
       const int        size = m, one = 1;
       int              info = 0;
       std::vector<int> pivots(m);
-      dgesv_(&size, &one, A.data(), &size, pivots.data(), b.data(), &size, &info);
+      dgesv_(
+        &size, &one, A.data(), &size, pivots.data(), b.data(), &size, &info);
       if (info != 0)
         return false;
       for (std::size_t c = 0; c < m; ++c)
@@ -147,8 +156,8 @@ namespace glissade
           if (status[k] == NodeStatus::slip && mu[k] > 0.)
             slip_sign[k] = r[k][t] >= 0. ? 1. : -1.;
         }
-      return BiPotentialSolver::solve_for_statuses(W, u_free, mu, status,
-                                                   slip_sign, polished);
+      return BiPotentialSolver::solve_for_statuses(
+        W, u_free, mu, status, slip_sign, polished);
     }
 
     double
@@ -235,12 +244,13 @@ namespace glissade
     }
   } // namespace
 
-  BiPotentialSolver::BiPotentialSolver() : settings() {}
+  BiPotentialSolver::BiPotentialSolver()
+    : settings()
+  {}
 
   BiPotentialSolver::BiPotentialSolver(const Settings &settings)
-      : settings(settings)
-  {
-  }
+    : settings(settings)
+  {}
 
   const BiPotentialSolver::Settings &
   BiPotentialSolver::get_settings() const
@@ -283,13 +293,14 @@ namespace glissade
                                         const std::vector<Vector2>    &u_free,
                                         const std::vector<double>     &mu,
                                         const std::vector<NodeStatus> &status,
-                                        const std::vector<double>     &slip_sign,
-                                        std::vector<Vector2>          &r)
+                                        const std::vector<double> &slip_sign,
+                                        std::vector<Vector2>      &r)
   {
     const unsigned int n_nodes = W.n_nodes();
     // Unknowns: r_n of every closed node, and r_t of every stick node.
-    std::vector<int> normal_unknown(n_nodes, -1), tangential_unknown(n_nodes, -1);
-    std::size_t      m = 0;
+    std::vector<int> normal_unknown(n_nodes, -1),
+      tangential_unknown(n_nodes, -1);
+    std::size_t m = 0;
     for (unsigned int k = 0; k < n_nodes; ++k)
       {
         if (status[k] == NodeStatus::open)
@@ -306,7 +317,8 @@ namespace glissade
     for (unsigned int k = 0; k < n_nodes; ++k)
       for (const unsigned int component : {n, t})
         {
-          const int row = component == n ? normal_unknown[k] : tangential_unknown[k];
+          const int row =
+            component == n ? normal_unknown[k] : tangential_unknown[k];
           if (row < 0)
             continue;
           b[row] = -u_free[k][component];
@@ -315,7 +327,8 @@ namespace glissade
               if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
                 continue;
               const ComplianceMatrix::Block w = W.block(k, l);
-              const double sliding = tangential_unknown[l] >= 0 ? 0. : slip_sign[l];
+              const double                  sliding =
+                tangential_unknown[l] >= 0 ? 0. : slip_sign[l];
               A[normal_unknown[l] * m + row] +=
                 w[component][n] + sliding * mu[l] * w[component][t];
               if (tangential_unknown[l] >= 0)
@@ -348,7 +361,7 @@ namespace glissade
 
     // 1. Refuse what cannot be solved, before touching r.
     const std::string problem =
-        invalid_input_message(settings, W, u_free, mu, r);
+      invalid_input_message(settings, W, u_free, mu, r);
     if (!problem.empty())
       {
         result.outcome = Outcome::invalid_input;
@@ -380,9 +393,9 @@ namespace glissade
       }
 
     // 2. Scales and step lengths.
-    const double scale           = settings.force_to_length_scale > 0.
-                                       ? settings.force_to_length_scale
-                                       : max_normal_compliance;
+    const double scale           = settings.force_to_length_scale > 0. ?
+                                     settings.force_to_length_scale :
+                                     max_normal_compliance;
     result.force_to_length_scale = scale;
 
     std::vector<double> rho(n_nodes);
@@ -390,22 +403,22 @@ namespace glissade
       {
         const ComplianceMatrix::Block w_kk = W.diagonal_block(k);
         const bool                    use_largest =
-            settings.rho_choice == RhoChoice::largest_diagonal_compliance &&
-            mu[k] > 0.;
-        rho[k] = settings.beta /
-                 (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
+          settings.rho_choice == RhoChoice::largest_diagonal_compliance &&
+          mu[k] > 0.;
+        rho[k] =
+          settings.beta / (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
       }
 
     const std::vector<Vector2> initial_r =
-        r.empty() ? std::vector<Vector2>(n_nodes, Vector2{{0., 0.}}) : r;
+      r.empty() ? std::vector<Vector2>(n_nodes, Vector2{{0., 0.}}) : r;
     r = initial_r;
 
     const double free_length =
-        std::max(max_norm(u_free), settings.length_floor);
+      std::max(max_norm(u_free), settings.length_floor);
     // The forces this problem can produce: those that close the free gaps,
     // or those the caller already had. Used only to detect a blow-up.
     const double force_reference = std::max(
-        {free_length / scale, settings.reaction_floor, max_norm(initial_r)});
+      {free_length / scale, settings.reaction_floor, max_norm(initial_r)});
 
     std::vector<Vector2> u;
     compute_displacement(W, u_free, r, u);
@@ -436,8 +449,8 @@ namespace glissade
                 // gap g + mu |u_t|, which couples Signorini and Coulomb so
                 // that a single projection on K_mu enforces both.
                 const Vector2 trial = {
-                    {r[k][t] - rho[k] * u_k[t],
-                     r[k][n] - rho[k] * (u_k[n] + mu[k] * std::abs(u_k[t]))}};
+                  {r[k][t] - rho[k] * u_k[t],
+                   r[k][n] - rho[k] * (u_k[n] + mu[k] * std::abs(u_k[t]))}};
                 new_r = project_on_coulomb_cone(trial, mu[k]);
               }
 
@@ -457,8 +470,8 @@ namespace glissade
           ++stable_sweeps;
         else
           {
-            stable_sweeps = 0;
-            polish_after  = first_polish_after_stable_sweeps;
+            stable_sweeps     = 0;
+            polish_after      = first_polish_after_stable_sweeps;
             previous_statuses = statuses;
           }
         const bool statuses_settled = stable_sweeps == polish_after;
@@ -475,8 +488,8 @@ namespace glissade
           }
 
         result.reaction_change_bound =
-            settings.change_tolerance *
-            std::max(max_reaction, settings.reaction_floor);
+          settings.change_tolerance *
+          std::max(max_reaction, settings.reaction_floor);
         const bool small_change = max_change <= result.reaction_change_bound;
         if (small_change || sweep % refresh_period == 0)
           {
@@ -500,9 +513,9 @@ namespace glissade
                   sweep == settings.max_sweeps))
           {
             // Gauss-Seidel finds the statuses long before the values, the
-            // more so when W is ill-conditioned (a stiff slave on a soft master: the
-            // reactions of neighbouring nodes trade off along an almost
-            // null direction of W). With the statuses fixed the law is
+            // more so when W is ill-conditioned (a stiff slave on a soft
+            // master: the reactions of neighbouring nodes trade off along an
+            // almost null direction of W). With the statuses fixed the law is
             // linear: solve it, and keep the answer if it satisfies the law.
             std::vector<Vector2> candidate, candidate_u;
             if (polish(W, u_free, mu, r, candidate))
@@ -624,7 +637,7 @@ namespace glissade
     std::vector<Vector2> u;
     compute_displacement(W, u_free, r, u);
     const double scale =
-        force_to_length_scale > 0. ? force_to_length_scale : natural_scale(W);
+      force_to_length_scale > 0. ? force_to_length_scale : natural_scale(W);
     const Residuals result = residuals_of(u, r, mu, scale);
     if (displacement != nullptr)
       *displacement = std::move(u);

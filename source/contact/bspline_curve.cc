@@ -178,9 +178,9 @@ namespace glissade
     // N (the test program checks it against a dense inverse), and the table
     // costs O(N) once per N. It is independent of the Thomas solve used by
     // update(), which the tests exploit: weights() . nodes == value().
-    const unsigned int m    = is_closed() ? n : 2 * n;
-    const double       root = 2. - std::sqrt(3.); // |z|
-    const double       z_m  = (m % 2 ? -1. : 1.) * std::pow(root, m);
+    const unsigned int m       = is_closed() ? n : 2 * n;
+    const double       root    = 2. - std::sqrt(3.); // |z|
+    const double       z_m     = (m % 2 ? -1. : 1.) * std::pow(root, m);
     const auto         z_power = [root](const unsigned int d) {
       return (d % 2 ? -1. : 1.) * std::pow(root, d);
     };
@@ -331,9 +331,10 @@ namespace glissade
 
 
   void
-  BSplineCurve::weights_and_derivatives(const unsigned int         segment,
-                                        const double               s,
-                                        NodeWeightsAndDerivatives &weights) const
+  BSplineCurve::weights_and_derivatives(
+    const unsigned int         segment,
+    const double               s,
+    NodeWeightsAndDerivatives &weights) const
   {
     assert(segment < n_segments());
     weights.clear();

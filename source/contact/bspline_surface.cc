@@ -19,7 +19,8 @@ namespace glissade
     {
     public:
       BSplineSurface(const SurfaceContext &context)
-        : CurveSurface(*context.master, context.description.master_boundary,
+        : CurveSurface(*context.master,
+                       context.description.master_boundary,
                        context.description.entry + "/Master boundary")
         , segment_transfer(context.description.force_transfer == "segment")
       {

@@ -103,7 +103,7 @@ namespace glissade
         for (unsigned int b = 0; b < 2; ++b)
           for (unsigned int a = 0; a < 2; ++a)
             dense_values[(2 * std::size_t(l) + b) * n_rows + 2 * k + a] =
-                block[a][b];
+              block[a][b];
       }
     else if (const Block *stored = find_sparse_block(k, l))
       *const_cast<Block *>(stored) = block;
@@ -133,7 +133,7 @@ namespace glissade
         for (unsigned int b = 0; b < 2; ++b)
           for (unsigned int a = 0; a < 2; ++a)
             result[a][b] =
-                dense_values[(2 * std::size_t(l) + b) * n_rows + 2 * k + a];
+              dense_values[(2 * std::size_t(l) + b) * n_rows + 2 * k + a];
       }
     else if (const Block *stored = find_sparse_block(k, l))
       result = *stored;
@@ -185,7 +185,7 @@ namespace glissade
             if (factor == 0.)
               continue;
             const double *column =
-                &dense_values[(2 * std::size_t(l) + b) * n_rows];
+              &dense_values[(2 * std::size_t(l) + b) * n_rows];
             for (unsigned int k = 0; k < n_contact_nodes; ++k)
               {
                 u[k][0] += column[2 * k] * factor;
@@ -220,7 +220,7 @@ namespace glissade
   ComplianceMatrix::memory_consumption() const
   {
     std::size_t bytes =
-        sizeof(*this) + dense_values.capacity() * sizeof(double);
+      sizeof(*this) + dense_values.capacity() * sizeof(double);
     for (const auto &rows : column_rows)
       bytes += sizeof(rows) + rows.capacity() * sizeof(unsigned int);
     for (const auto &blocks : column_blocks)

@@ -5,25 +5,55 @@
 #include <map>
 
 extern "C" void
-dgetrf_(const int *m, const int *n, double *a, const int *lda, int *ipiv,
-        int *info);
+dgetrf_(const int *m,
+        const int *n,
+        double    *a,
+        const int *lda,
+        int       *ipiv,
+        int       *info);
 extern "C" void
-dgemm_(const char *transa, const char *transb, const int *m, const int *n,
-       const int *k, const double *alpha, const double *a, const int *lda,
-       const double *b, const int *ldb, const double *beta, double *c,
-       const int *ldc);
+dgemm_(const char   *transa,
+       const char   *transb,
+       const int    *m,
+       const int    *n,
+       const int    *k,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       const double *b,
+       const int    *ldb,
+       const double *beta,
+       double       *c,
+       const int    *ldc);
 extern "C" double
-dlange_(const char *norm, const int *m, const int *n, const double *a,
-        const int *lda, double *work);
+dlange_(const char   *norm,
+        const int    *m,
+        const int    *n,
+        const double *a,
+        const int    *lda,
+        double       *work);
 extern "C" void
-dgecon_(const char *norm, const int *n, const double *a, const int *lda,
-        const double *anorm, double *rcond, double *work, int *iwork,
-        int *info);
+dgecon_(const char   *norm,
+        const int    *n,
+        const double *a,
+        const int    *lda,
+        const double *anorm,
+        double       *rcond,
+        double       *work,
+        int          *iwork,
+        int          *info);
 extern "C" void
 dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 extern "C" void
-dgetrs_(const char *trans, const int *n, const int *nrhs, const double *a,
-        const int *lda, const int *ipiv, double *b, const int *ldb, int *info);
+dgetrs_(const char   *trans,
+        const int    *n,
+        const int    *nrhs,
+        const double *a,
+        const int    *lda,
+        const int    *ipiv,
+        double       *b,
+        const int    *ldb,
+        int          *info);
 
 namespace glissade
 {
@@ -43,7 +73,9 @@ namespace glissade
 
     /** u += factor v. */
     void
-    add(const PairVector &v, const double factor, std::vector<Vector<double>> &u)
+    add(const PairVector            &v,
+        const double                 factor,
+        std::vector<Vector<double>> &u)
     {
       for (const auto &e : *v.coefficients)
         u[v.bodies[e.body]](e.dof) += factor * e.value;
@@ -85,7 +117,8 @@ namespace glissade
     const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
     std::vector<double> P(n_rows * n_loads, 0.);
     add_compliance_products(all_rows, all_loads, P);
-    const auto product = [&](const std::size_t i, const std::size_t j) -> double & {
+    const auto product = [&](const std::size_t i,
+                             const std::size_t j) -> double & {
       return P[i + j * n_rows];
     };
     const int size = 2 * n, t = n_given + augmented_row.size();
@@ -104,7 +137,8 @@ namespace glissade
     for (unsigned int j = 0; j < augmented_row.size(); ++j)
       {
         const unsigned int k = augmented_row[j] / 2;
-        augmented_scale.push_back(-(stiffness[k] > 0. ? stiffness[k] : largest));
+        augmented_scale.push_back(
+          -(stiffness[k] > 0. ? stiffness[k] : largest));
         for (std::size_t i = 0; i < n_rows; ++i)
           {
             double &value = product(i, size + n_given + j);
@@ -137,21 +171,30 @@ namespace glissade
         int                 info = 0;
         std::vector<double> work(4 * t);
         std::vector<int>    iwork(t);
-        const double        norm = dlange_("1", &t, &t, S.data(), &t, work.data());
+        const double norm = dlange_("1", &t, &t, S.data(), &t, work.data());
         dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
         // Singular in floating point too: a body that relies on contact
         // with its springs taken out and the contact not holding it leaves
         // S singular up to round-off, not exactly.
         double rcond = 0.;
         if (info == 0)
-          dgecon_("1", &t, S.data(), &t, &norm, &rcond, work.data(),
-                  iwork.data(), &info);
+          dgecon_("1",
+                  &t,
+                  S.data(),
+                  &t,
+                  &norm,
+                  &rcond,
+                  work.data(),
+                  iwork.data(),
+                  &info);
         is_regular = (info == 0 && rcond > 1e-13);
         if (!is_regular)
           return;
         const int one = 1;
-        dgetrs_("N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
-        dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
+        dgetrs_(
+          "N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
+        dgetrs_(
+          "N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
       }
 
     // W = R C F + (R C U) X (BLAS: the product is the dense part of the
@@ -165,8 +208,19 @@ namespace glissade
       {
         const double one = 1.;
         const int    ld  = n_rows;
-        dgemm_("N", "N", &size, &size, &t, &one, &P[std::size_t(size) * n_rows],
-               &ld, X.data(), &t, &one, W_dense.data(), &size);
+        dgemm_("N",
+               "N",
+               &size,
+               &size,
+               &t,
+               &one,
+               &P[std::size_t(size) * n_rows],
+               &ld,
+               X.data(),
+               &t,
+               &one,
+               W_dense.data(),
+               &size);
       }
     W.reinit(n);
     for (unsigned int l = 0; l < n; ++l)
@@ -175,7 +229,8 @@ namespace glissade
           ComplianceMatrix::Block block;
           for (unsigned int a = 0; a < 2; ++a)
             for (unsigned int c = 0; c < 2; ++c)
-              block[a][c] = W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
+              block[a][c] =
+                W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
           W.set_block(k, l, block);
         }
     u_free = nodes.initial;
@@ -256,14 +311,15 @@ namespace glissade
             i = column_dofs.size();
             column_dofs.push_back(dof);
           }
-        const auto local = [&](const PairVector &v,
-                               std::map<types::global_dof_index, unsigned int> &index) {
-          std::vector<Local> result;
-          for (const auto &e : *v.coefficients)
-            if (v.bodies[e.body] == b)
-              result.push_back({index[e.dof], e.value});
-          return result;
-        };
+        const auto local =
+          [&](const PairVector                                &v,
+              std::map<types::global_dof_index, unsigned int> &index) {
+            std::vector<Local> result;
+            for (const auto &e : *v.coefficients)
+              if (v.bodies[e.body] == b)
+                result.push_back({index[e.dof], e.value});
+            return result;
+          };
         std::vector<std::pair<std::size_t, std::vector<Local>>> rows_here;
         for (std::size_t i = 0; i < n_rows; ++i)
           if (auto l = local(all_rows[i], row_index); !l.empty())
@@ -309,10 +365,32 @@ namespace glissade
             std::vector<double> T(m * l_here), RT(n_here * l_here);
             const int    im = m, ic = m_columns, il = l_here, ir = n_here;
             const double one = 1., zero = 0.;
-            dgemm_("N", "N", &im, &il, &ic, &one, C.data(), &im, L.data(),
-                   &ic, &zero, T.data(), &im);
-            dgemm_("N", "N", &ir, &il, &im, &one, R.data(), &ir, T.data(),
-                   &im, &zero, RT.data(), &ir);
+            dgemm_("N",
+                   "N",
+                   &im,
+                   &il,
+                   &ic,
+                   &one,
+                   C.data(),
+                   &im,
+                   L.data(),
+                   &ic,
+                   &zero,
+                   T.data(),
+                   &im);
+            dgemm_("N",
+                   "N",
+                   &ir,
+                   &il,
+                   &im,
+                   &one,
+                   R.data(),
+                   &ir,
+                   T.data(),
+                   &im,
+                   &zero,
+                   RT.data(),
+                   &ir);
             for (std::size_t k = 0; k < l_here; ++k)
               for (std::size_t r = 0; r < n_here; ++r)
                 products[rows_here[r].first + loads_here[k].first * n_rows] +=
@@ -328,7 +406,7 @@ namespace glissade
         // long (the rings at 800 x 80, B-spline master). The loads go in
         // blocks, so that T costs 2 m x 256 doubles, not m x loads.
         constexpr std::size_t block = 256;
-        std::vector<double>   T(m * block), T_rows(m * block), row_product(block);
+        std::vector<double> T(m * block), T_rows(m * block), row_product(block);
         for (std::size_t k0 = 0; k0 < l_here; k0 += block)
           {
             const std::size_t width = std::min(block, l_here - k0);

@@ -37,22 +37,23 @@ namespace glissade
 
   ContactLinearization
   linearize_contact(
-    const Point<2>                                        &x,
-    const std::array<types::global_dof_index, 2>          &slave_dofs,
-    const Tensor<1, 2>                                    &slave_motion,
-    const SurfacePoint                                    &point,
-    const std::function<double(types::global_dof_index)>  &master_increment,
-    const std::array<double, 2>                           &reaction)
+    const Point<2>                                       &x,
+    const std::array<types::global_dof_index, 2>         &slave_dofs,
+    const Tensor<1, 2>                                   &slave_motion,
+    const SurfacePoint                                   &point,
+    const std::function<double(types::global_dof_index)> &master_increment,
+    const std::array<double, 2>                          &reaction)
   {
     ContactLinearization result;
-    const Tensor<1, 2> &t  = point.tangent;
-    const Tensor<1, 2> &n  = point.normal;
-    const Tensor<1, 2> &dc = point.first_derivative;
-    const Tensor<1, 2>  r  = x - point.point;
-    const double        speed = dc.norm();
+    const Tensor<1, 2>  &t     = point.tangent;
+    const Tensor<1, 2>  &n     = point.normal;
+    const Tensor<1, 2>  &dc    = point.first_derivative;
+    const Tensor<1, 2>   r     = x - point.point;
+    const double         speed = dc.norm();
 
-    const std::vector<Entry> kinematics = relative_map(slave_dofs, point.kinematics);
-    const std::vector<Entry> forces     = relative_map(slave_dofs, point.forces);
+    const std::vector<Entry> kinematics =
+      relative_map(slave_dofs, point.kinematics);
+    const std::vector<Entry> forces = relative_map(slave_dofs, point.forces);
 
     // The relative motion since the increment began, d, and its
     // derivative along the curve, d' (the master point is a material one).
@@ -79,8 +80,9 @@ namespace glissade
     for (const auto &e : kinematics)
       {
         const double ds =
-          slides ? (e.weight * dc[e.component] - e.derivative * r[e.component]) / D :
-                   0.;
+          slides ?
+            (e.weight * dc[e.component] - e.derivative * r[e.component]) / D :
+            0.;
         const double dtheta =
           slides ? (-e.derivative * n[e.component] + n_ddc * ds) / speed : 0.;
         if (ds != 0.)
@@ -122,8 +124,10 @@ namespace glissade
     const Tensor<1, 2> mu     = reaction[0] * n - reaction[1] * t;
     for (const auto &e : forces)
       {
-        result.tangential_force.push_back({e.body, e.dof, e.weight * t[e.component]});
-        result.normal_force.push_back({e.body, e.dof, e.weight * n[e.component]});
+        result.tangential_force.push_back(
+          {e.body, e.dof, e.weight * t[e.component]});
+        result.normal_force.push_back(
+          {e.body, e.dof, e.weight * n[e.component]});
         if (e.derivative != 0. && !result.sliding_row.empty())
           result.sliding_load.push_back(
             {e.body, e.dof, e.derivative * lambda[e.component]});

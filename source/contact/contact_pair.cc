@@ -38,8 +38,8 @@ namespace glissade
       if (body != nullptr &&
           body->space().finite_element().n_dofs_per_line() > 0)
         throw InputError(entry + role,
-                         "body '" + body->name() + "' uses the element space '" +
-                           body->space().name() +
+                         "body '" + body->name() +
+                           "' uses the element space '" + body->space().name() +
                            "', whose nodes along the element edges "
                            "node-to-segment contact would leave out; contact "
                            "bodies must use q1 or hermite");
@@ -47,8 +47,10 @@ namespace glissade
     // The slave nodes: the vertices of the declared contact area, one or
     // several boundaries ("bottom, left, right"); a vertex where two of
     // them meet is one node, not two constraints on the same point.
-    for (const auto &name : text::split_top_level(description.slave_boundary, ','))
-      slave_ids.insert(slave.boundary_id(text::trim(name), entry + "/Slave boundary"));
+    for (const auto &name :
+         text::split_top_level(description.slave_boundary, ','))
+      slave_ids.insert(
+        slave.boundary_id(text::trim(name), entry + "/Slave boundary"));
     std::set<unsigned int> seen;
     for (const auto &cell : slave.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
@@ -62,14 +64,18 @@ namespace glissade
               ContactNode node;
               node.vertex             = vertex;
               node.reference_position = cell->face(f)->vertex(v);
-              node.dofs = BoundaryConditions::cell_vertex_dofs(
-                cell, GeometryInfo<2>::face_to_cell_vertices(f, v), slave.space());
+              node.dofs               = BoundaryConditions::cell_vertex_dofs(
+                cell,
+                GeometryInfo<2>::face_to_cell_vertices(f, v),
+                slave.space());
               slave_nodes.push_back(node);
             }
 
-    slave_outward_normal = boundary_vertex_normals(
-      slave.triangulation(),
-      [this](const types::boundary_id id) { return slave_ids.count(id) > 0; });
+    slave_outward_normal =
+      boundary_vertex_normals(slave.triangulation(),
+                              [this](const types::boundary_id id) {
+                                return slave_ids.count(id) > 0;
+                              });
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
       check_obstacle_faces_slave(slave_outward_normal);
@@ -90,8 +96,9 @@ namespace glissade
     unsigned int facing_away = 0;
     for (const ContactNode &node : slave_nodes)
       {
-        const SurfacePoint point = master_surface->project(node.reference_position);
-        const Tensor<1, 2> out   = outward_normal.at(node.vertex);
+        const SurfacePoint point =
+          master_surface->project(node.reference_position);
+        const Tensor<1, 2> out = outward_normal.at(node.vertex);
         if (point.valid && point.normal * out > 0.5 * out.norm())
           ++facing_away;
       }
@@ -118,10 +125,10 @@ namespace glissade
   {
     const Vector<double> &u  = slave_body.displacement();
     const Vector<double> &u0 = slave_body.stored_displacement();
-    const Tensor<1, 2>    motion({u(node.dofs[0]) - u0(node.dofs[0]),
-                                  u(node.dofs[1]) - u0(node.dofs[1])});
-    const Point<2>        x({node.reference_position[0] + u(node.dofs[0]),
-                             node.reference_position[1] + u(node.dofs[1])});
+    const Tensor<1, 2>    motion(
+      {u(node.dofs[0]) - u0(node.dofs[0]), u(node.dofs[1]) - u0(node.dofs[1])});
+    const Point<2> x({node.reference_position[0] + u(node.dofs[0]),
+                      node.reference_position[1] + u(node.dofs[1])});
 
     SegmentHint keep;
     if (keep_segment)
@@ -132,11 +139,11 @@ namespace glissade
     if (keep_segment && node.segment >= 0 && point.segment != node.segment)
       ++node.segment_switches;
 
-    node.segment = point.segment;
-    node.s       = point.s;
-    node.tangent = point.tangent;
-    node.normal  = point.normal;
-    node.gap     = point.gap;
+    node.segment                = point.segment;
+    node.s                      = point.s;
+    node.tangent                = point.tangent;
+    node.normal                 = point.normal;
+    node.gap                    = point.gap;
     const auto master_increment = [this](const types::global_dof_index dof) {
       return master_body->displacement()(dof) -
              master_body->stored_displacement()(dof);
@@ -223,9 +230,9 @@ namespace glissade
         node.reaction = {{0., 0.}};
         node.status   = BiPotentialSolver::NodeStatus::open;
       }
-    const double size =
-      master_body ? std::min(slave_body.size(), master_body->size()) :
-                    slave_body.size();
+    const double size = master_body ?
+                          std::min(slave_body.size(), master_body->size()) :
+                          slave_body.size();
     // Interference fits and the sagitta of a faceted circle stay well
     // below this; a master that faces away puts the slave a whole
     // thickness behind it.

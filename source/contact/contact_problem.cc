@@ -33,11 +33,12 @@ namespace glissade
     InputErrorList mistakes;
     for (const auto &c : scene.contacts)
       mistakes.collect([&]() {
-        auto pair = std::make_unique<ContactPair>(
-          c,
-          *find(c.slave_body),
-          c.master_body == "rigid" ? nullptr : find(c.master_body),
-          timer);
+        auto pair = std::make_unique<ContactPair>(c,
+                                                  *find(c.slave_body),
+                                                  c.master_body == "rigid" ?
+                                                    nullptr :
+                                                    find(c.master_body),
+                                                  timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
       });
@@ -72,8 +73,8 @@ namespace glissade
                                name +
                                ": the active nodes of all pairs form one "
                                "local problem, solved with one set of "
-                               "settings; set Contact solver/" + name +
-                               " once for all pairs");
+                               "settings; set Contact solver/" +
+                               name + " once for all pairs");
       }
     if (!pairs.empty())
       {
@@ -171,8 +172,8 @@ namespace glissade
     // different pairs couple through the bodies they share.
     std::vector<ContactNode *> active;
     const ActiveNodes          nodes = active_nodes(active);
-    result           = BiPotentialSolver::Result();
-    result.converged = true;
+    result                           = BiPotentialSolver::Result();
+    result.converged                 = true;
     if (active.empty())
       {
         // (with no node in contact, only a body that relies on contact
@@ -278,14 +279,15 @@ namespace glissade
     // local problem is augmented on them (theory.md, section 4.5): exact
     // as long as they stay closed and sticking, which is checked. A node
     // starts with the augmentation of its last solve.
-    const unsigned int               n = active.size();
+    const unsigned int                            n     = active.size();
     const std::vector<BiPotentialSolver::Vector2> start = r;
-    std::vector<std::array<bool, 2>> held(n);
-    Augmentation                     augmentation;
+    std::vector<std::array<bool, 2>>              held(n);
+    Augmentation                                  augmentation;
     augmentation.directions.resize(n);
     for (unsigned int k = 0; k < n; ++k)
       {
-        const auto status = BiPotentialSolver::classify(start[k], nodes.friction[k]);
+        const auto status =
+          BiPotentialSolver::classify(start[k], nodes.friction[k]);
         held[k] = {{status == BiPotentialSolver::NodeStatus::stick &&
                       nodes.friction[k] > 0.,
                     status != BiPotentialSolver::NodeStatus::open}};
@@ -302,8 +304,10 @@ namespace glissade
       {
         {
           TimerOutput::Scope scope(timer, timing::compliance);
-          condensed = std::make_unique<CondensedProblem>(nodes, augmentation,
-                                                         bodies, predictor);
+          condensed = std::make_unique<CondensedProblem>(nodes,
+                                                         augmentation,
+                                                         bodies,
+                                                         predictor);
         }
         // The bi-potential iteration (Gauss-Seidel), the paper's law
         // solver. Where W is not positive on the directions in play (the
@@ -317,12 +321,12 @@ namespace glissade
           {
             TimerOutput::Scope      scope(timer, timing::local_solve);
             const BiPotentialSolver solver(solver_settings);
-            r      = start;
-            result = solver.solve(condensed->compliance(),
+            r                 = start;
+            result            = solver.solve(condensed->compliance(),
                                   condensed->free_displacement(),
                                   nodes.friction,
                                   r);
-            solved = result.converged;
+            solved            = result.converged;
             bool check_branch = !solved;
             if (solved)
               {
@@ -330,11 +334,11 @@ namespace glissade
                 bool                             changed = false;
                 for (unsigned int k = 0; k < n; ++k)
                   {
-                    const auto status = result.status[k];
-                    const std::array<bool, 2> now = {
-                      {status == BiPotentialSolver::NodeStatus::stick &&
-                         nodes.friction[k] > 0.,
-                       status != BiPotentialSolver::NodeStatus::open}};
+                    const auto                status = result.status[k];
+                    const std::array<bool, 2> now    = {
+                         {status == BiPotentialSolver::NodeStatus::stick &&
+                            nodes.friction[k] > 0.,
+                          status != BiPotentialSolver::NodeStatus::open}};
                     changed = changed || now != held[k];
                     for (unsigned int c = 0; c < 2; ++c)
                       in_play[k][c] = in_play[k][c] || now[c];
@@ -379,8 +383,8 @@ namespace glissade
         if (std::getenv("GLISSADE_DEBUG"))
           std::cerr << "    contact solve: " << augmentation.count()
                     << " augmented directions (factor " << augmentation.factor
-                    << "), " << (result.polished ? "active set" : "Gauss-Seidel")
-                    << ": "
+                    << "), "
+                    << (result.polished ? "active set" : "Gauss-Seidel") << ": "
                     << (solved ? (consistent ? "solved" : "inconsistent") :
                                  "failed: " + result.message)
                     << std::endl;
@@ -445,8 +449,9 @@ namespace glissade
                         << node.reference_position[1] << ") of pair '"
                         << pair->name() << "' (body '" << pair->slave().name()
                         << "'"
-                        << (pair->master() ? " on body '" + pair->master()->name() + "'" :
-                                             std::string(" on the obstacle"))
+                        << (pair->master() ?
+                              " on body '" + pair->master()->name() + "'" :
+                              std::string(" on the obstacle"))
                         << "): its " << (c == 1 ? "normal" : "tangential")
                         << " compliance in the Newton matrix is " << w[c][c]
                         << " <= 0, so the tangent is not positive there even "
@@ -480,7 +485,8 @@ namespace glissade
         }
     return names.empty() ? "" :
                            "the contact does not hold the bodies that rely on "
-                           "it, " + names;
+                           "it, " +
+                             names;
   }
 
 

@@ -66,7 +66,8 @@ namespace glissade
 
 
   double
-  CurveSurface::end_of_extension(const unsigned int segment, const double s) const
+  CurveSurface::end_of_extension(const unsigned int segment,
+                                 const double       s) const
   {
     if (curve->is_closed())
       return -1.;
@@ -80,8 +81,8 @@ namespace glissade
 
 
   void
-  CurveSurface::evaluate(const unsigned int   segment,
-                         const double         s,
+  CurveSurface::evaluate(const unsigned int  segment,
+                         const double        s,
                          MasterCurve::Point &c,
                          MasterCurve::Point &dc,
                          MasterCurve::Point &ddc) const
@@ -145,8 +146,8 @@ namespace glissade
     point.s       = s;
     MasterCurve::Point c, dc, ddc;
     evaluate(segment, s, c, dc, ddc);
-    const double end = end_of_extension(segment, s);
-    const auto   t   = curve->unit_tangent(segment, end < 0. ? s : end);
+    const double end        = end_of_extension(segment, s);
+    const auto   t          = curve->unit_tangent(segment, end < 0. ? s : end);
     point.point             = Point<2>(c[0], c[1]);
     point.first_derivative  = Tensor<1, 2>({dc[0], dc[1]});
     point.second_derivative = Tensor<1, 2>({ddc[0], ddc[1]});
@@ -155,7 +156,7 @@ namespace glissade
     point.gap               = (x - point.point) * point.normal;
 
     // The weights, continued linearly past an open end like the curve.
-    const double s_weights = end < 0. ? s : end;
+    const double                           s_weights = end < 0. ? s : end;
     MasterCurve::NodeWeightsAndDerivatives weights;
     curve->weights_and_derivatives(segment, s_weights, weights);
     for (const auto &w : weights)
@@ -167,7 +168,8 @@ namespace glissade
     const std::size_t first_extra = point.kinematics.size();
     add_kinematics(segment, s_weights, point.kinematics);
     for (std::size_t i = first_extra; i < point.kinematics.size(); ++i)
-      point.kinematics[i].value += (s - s_weights) * point.kinematics[i].derivative;
+      point.kinematics[i].value +=
+        (s - s_weights) * point.kinematics[i].derivative;
     set_forces(point);
     return point;
   }
@@ -187,7 +189,7 @@ namespace glissade
     for (const auto &[segment, s] :
          {std::pair<unsigned int, double>{incoming, 1.}, {outgoing, 0.}})
       {
-        const MasterCurve::Point dc = curve->derivative(segment, s);
+        const MasterCurve::Point dc     = curve->derivative(segment, s);
         const double             length = std::hypot(dc[0], dc[1]);
         if (!(length > 0.))
           continue;
@@ -196,26 +198,27 @@ namespace glissade
         curve->weights_and_derivatives(segment, s, weights);
         for (const auto &w : weights)
           for (unsigned int comp = 0; comp < 2; ++comp)
-            point.vertex_rotation.push_back({chain.value_dofs[w.node][comp],
-                                             comp,
-                                             0.5 * w.derivative * n[comp] /
-                                               length,
-                                             0.});
+            point.vertex_rotation.push_back(
+              {chain.value_dofs[w.node][comp],
+               comp,
+               0.5 * w.derivative * n[comp] / length,
+               0.});
       }
   }
 
 
 
   SurfacePoint
-  CurveSurface::corner_point(const Point<2> &x, const unsigned int segment) const
+  CurveSurface::corner_point(const Point<2>    &x,
+                             const unsigned int segment) const
   {
     SurfacePoint point = point_at(x, segment, 0.);
     if (segment == 0 && !curve->is_closed())
       return point;
     const unsigned int incoming =
       segment == 0 ? curve->n_segments() - 1 : segment - 1;
-    const auto t_in  = curve->unit_tangent(incoming, 1.);
-    const auto t_out = curve->unit_tangent(segment, 0.);
+    const auto   t_in  = curve->unit_tangent(incoming, 1.);
+    const auto   t_out = curve->unit_tangent(segment, 0.);
     Tensor<1, 2> t({t_in[0] + t_out[0], t_in[1] + t_out[1]});
     // Two segments folded back on each other have no mean direction: keep
     // the outgoing one's.
@@ -238,7 +241,9 @@ namespace glissade
     if (keep.segment >= 0)
       {
         double s = keep.s;
-        if (project_on_segment(x, keep.segment, s,
+        if (project_on_segment(x,
+                               keep.segment,
+                               s,
                                keep.held ? std::max(extension(), 0.5) :
                                            extension()))
           return point_at(x, keep.segment, s);

@@ -1,9 +1,9 @@
 #include <glissade/contact/faceted_curve.h>
 
 #include <algorithm>
-#include <initializer_list>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 
 namespace glissade
 {
@@ -99,17 +99,18 @@ namespace glissade
   {
     const auto   ends = segment_nodes(segment);
     const Point &a = nodes()[ends[0]], &b = nodes()[ends[1]];
-    value_at_s       = {{(1. - s) * a[0] + s * b[0], (1. - s) * a[1] + s * b[1]}};
-    first_derivative = {{b[0] - a[0], b[1] - a[1]}};
+    value_at_s = {{(1. - s) * a[0] + s * b[0], (1. - s) * a[1] + s * b[1]}};
+    first_derivative       = {{b[0] - a[0], b[1] - a[1]}};
     second_derivative_at_s = {{0., 0.}};
   }
 
 
 
   void
-  FacetedCurve::weights_and_derivatives(const unsigned int         segment,
-                                        const double               s,
-                                        NodeWeightsAndDerivatives &weights) const
+  FacetedCurve::weights_and_derivatives(
+    const unsigned int         segment,
+    const double               s,
+    NodeWeightsAndDerivatives &weights) const
   {
     const auto ends = segment_nodes(segment);
     weights         = {{ends[0], 1. - s, -1.}, {ends[1], s, 1.}};

@@ -23,7 +23,8 @@ namespace glissade
     {
     public:
       FacetedSurface(const SurfaceContext &context)
-        : CurveSurface(*context.master, context.description.master_boundary,
+        : CurveSurface(*context.master,
+                       context.description.master_boundary,
                        context.description.entry + "/Master boundary")
         , rule(context.description.vertex_rule)
       {
@@ -47,8 +48,8 @@ namespace glissade
         if (std::abs(point.s) <= tolerance)
           return corner_point(x, point.segment);
         if (std::abs(point.s - 1.) <= tolerance &&
-            (curve->is_closed() || point.segment + 1 < static_cast<int>(
-                                                         curve->n_segments())))
+            (curve->is_closed() ||
+             point.segment + 1 < static_cast<int>(curve->n_segments())))
           return corner_point(x, (point.segment + 1) % curve->n_segments());
         return point;
       }

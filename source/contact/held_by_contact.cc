@@ -48,7 +48,8 @@ namespace glissade
                     const unsigned int b       = index(body);
                     const auto        &motions = body->free_rigid_motions();
                     for (unsigned int j = 0; j < motions.size(); ++j)
-                      row[first[b] + j] += sign * (d * motions[j].at(contact.position));
+                      row[first[b] + j] +=
+                        sign * (d * motions[j].at(contact.position));
                   }
               rows.push_back(row);
             }
@@ -60,9 +61,9 @@ namespace glissade
 
     // The first free motion, body by body.
     const std::vector<double> &x = free[0];
-    std::ostringstream          motion;
-    std::string                 first_body;
-    unsigned int                n_bodies = 0;
+    std::ostringstream         motion;
+    std::string                first_body;
+    unsigned int               n_bodies = 0;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         double size = 0.;
@@ -70,19 +71,20 @@ namespace glissade
           size += x[j] * x[j];
         if (!(size > 1e-16))
           continue;
-        const auto &motions = bodies[b]->free_rigid_motions();
+        const auto               &motions = bodies[b]->free_rigid_motions();
         const std::vector<double> local(x.begin() + first[b],
                                         x.begin() + first[b + 1]);
         motion << (n_bodies > 0 ? "; with it, body '" : "body '")
-               << bodies[b]->name() << "': "
-               << combine(motions, local).describe(bodies[b]->size());
+               << bodies[b]->name()
+               << "': " << combine(motions, local).describe(bodies[b]->size());
         if (n_bodies++ == 0)
           first_body = bodies[b]->name();
       }
     std::vector<std::string> names;
     for (const auto &pair : pairs)
-      names.push_back("'" + pair->name() + "'" +
-                      (pair->settings().friction > 0. ? "" : " (frictionless)"));
+      names.push_back(
+        "'" + pair->name() + "'" +
+        (pair->settings().friction > 0. ? "" : " (frictionless)"));
     std::ostringstream message;
     message << "a rigid-body motion is free (" << motion.str()
             << "). Its supports do not hold it, and ";

@@ -1,9 +1,9 @@
 #include <glissade/contact/hermite_curve.h>
 
 #include <algorithm>
-#include <initializer_list>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 
 namespace glissade
@@ -32,10 +32,10 @@ namespace glissade
     hermite(const double s, double h[4])
     {
       const double s2 = s * s, s3 = s2 * s;
-      h[0]            = 2. * s3 - 3. * s2 + 1.;
-      h[1]            = -2. * s3 + 3. * s2;
-      h[2]            = s3 - 2. * s2 + s;
-      h[3]            = s3 - s2;
+      h[0] = 2. * s3 - 3. * s2 + 1.;
+      h[1] = -2. * s3 + 3. * s2;
+      h[2] = s3 - 2. * s2 + s;
+      h[3] = s3 - s2;
     }
 
     inline void
@@ -77,8 +77,9 @@ namespace glissade
 
 
   void
-  HermiteCurve::update(const std::vector<Point>                &nodes,
-                       const std::vector<std::array<Point, 2>> &segment_tangents)
+  HermiteCurve::update(
+    const std::vector<Point>                &nodes,
+    const std::vector<std::array<Point, 2>> &segment_tangents)
   {
     update(nodes);
     set_segment_tangents(segment_tangents);
@@ -218,9 +219,10 @@ namespace glissade
 
 
   void
-  HermiteCurve::weights_and_derivatives(const unsigned int         segment,
-                                        const double               s,
-                                        NodeWeightsAndDerivatives &weights) const
+  HermiteCurve::weights_and_derivatives(
+    const unsigned int         segment,
+    const double               s,
+    NodeWeightsAndDerivatives &weights) const
   {
     double h[4], dh[4];
     hermite(s, h);

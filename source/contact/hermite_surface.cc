@@ -24,7 +24,8 @@ namespace glissade
     {
     public:
       HermiteSurface(const SurfaceContext &context)
-        : CurveSurface(*context.master, context.description.master_boundary,
+        : CurveSurface(*context.master,
+                       context.description.master_boundary,
                        context.description.entry + "/Master boundary")
       {
         const auto *hermite =
@@ -45,15 +46,19 @@ namespace glissade
           {
             const auto        &face = chain.faces[i];
             const unsigned int a = i, b = (i + 1) % chain.vertices.size();
-            const auto edge = HermiteQuadrilateral::edge_from_dealii_face(face.face);
+            const auto         edge =
+              HermiteQuadrilateral::edge_from_dealii_face(face.face);
             const auto ends = HermiteQuadrilateral::edge_nodes(edge.edge);
-            const auto dir  = HermiteQuadrilateral::edge_reference_direction(edge.edge);
-            const auto &element = hermite->element(face.cell->active_cell_index());
+            const auto dir =
+              HermiteQuadrilateral::edge_reference_direction(edge.edge);
+            const auto &element =
+              hermite->element(face.cell->active_cell_index());
             std::array<Tensor<1, 2>, 2> tangent_at_end;
             for (unsigned int e = 0; e < 2; ++e)
               {
-                const auto ref = HermiteQuadrilateral::node_reference_point(ends[e]);
-                const auto J   = element.jacobian(ref[0], ref[1]);
+                const auto ref =
+                  HermiteQuadrilateral::node_reference_point(ends[e]);
+                const auto J = element.jacobian(ref[0], ref[1]);
                 // d/ds on [-1, 1] -> d/dsigma on [0, 1]: a factor 2.
                 tangent_at_end[e] =
                   2. * Tensor<1, 2>({J[0][0] * dir[0] + J[0][1] * dir[1],
@@ -63,17 +68,20 @@ namespace glissade
                 const unsigned int node =
                   face.cell->vertex_index(v) == chain.vertices[a] ? a : b;
                 for (unsigned int k = 0; k < 6; ++k)
-                  derivative_dofs[node]
-                                 [fe.system_to_component_index(v * 6 + k).first] =
+                  derivative_dofs[node][fe.system_to_component_index(v * 6 + k)
+                                          .first] =
                     face.cell->vertex_dof_index(v, k);
               }
             const bool same_direction =
-              face.cell->vertex_index(HermiteQuadrilateral::dealii_vertex_from_node(
-                ends[0])) == chain.vertices[a];
+              face.cell->vertex_index(
+                HermiteQuadrilateral::dealii_vertex_from_node(ends[0])) ==
+              chain.vertices[a];
             reference_tangents.push_back(
               same_direction ?
-                std::array<Tensor<1, 2>, 2>{{tangent_at_end[0], tangent_at_end[1]}} :
-                std::array<Tensor<1, 2>, 2>{{-tangent_at_end[1], -tangent_at_end[0]}});
+                std::array<Tensor<1, 2>, 2>{
+                  {tangent_at_end[0], tangent_at_end[1]}} :
+                std::array<Tensor<1, 2>, 2>{
+                  {-tangent_at_end[1], -tangent_at_end[0]}});
           }
         check_reference_edge_is_smooth(context);
       }
@@ -118,9 +126,8 @@ namespace glissade
       {
         // The tangent data d = (I + grad u) T enter c(s) with H10, H11.
         const auto ends = curve->segment_nodes(segment);
-        const auto h =
-          static_cast<const HermiteCurve &>(*curve).tangent_weights_and_derivatives(
-            segment, s);
+        const auto h    = static_cast<const HermiteCurve &>(*curve)
+                         .tangent_weights_and_derivatives(segment, s);
         for (unsigned int e = 0; e < 2; ++e)
           {
             const Tensor<1, 2> &T = reference_tangents[segment][e];
@@ -153,7 +160,7 @@ namespace glissade
             if (!chain.closed && i + 1 == n_segments)
               break;
             const Tensor<1, 2> &before = reference_tangents[i][1];
-            const Tensor<1, 2> &after  =
+            const Tensor<1, 2> &after =
               reference_tangents[(i + 1) % n_segments][0];
             const double angle =
               std::atan2(std::abs(cross_product_2d(before) * after),
@@ -168,8 +175,9 @@ namespace glissade
             context.description.entry + "/Surface",
             "a hermite surface on body '" + master.name() +
               "': the reference geometry of its master boundary has a "
-              "tangent that jumps at " + std::to_string(kinks) + " of its " +
-              std::to_string(interior) + " nodes (by up to " +
+              "tangent that jumps at " +
+              std::to_string(kinks) + " of its " + std::to_string(interior) +
+              " nodes (by up to " +
               std::to_string(largest * 180. / numbers::PI) +
               " degrees), as in a mesh read from a file, whose cells have "
               "straight sides; such an edge is no smoother than a faceted "

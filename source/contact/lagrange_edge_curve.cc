@@ -128,7 +128,7 @@ namespace glissade
   {
     std::vector<double> v, d1, d2;
     basis(s, v, d1, d2);
-    const std::vector<double> &w = order == 0 ? v : (order == 1 ? d1 : d2);
+    const std::vector<double> &w      = order == 0 ? v : (order == 1 ? d1 : d2);
     const auto                 points = segment_points(segment);
     Point                      result = {{0., 0.}};
     for (unsigned int j = 0; j < points.size(); ++j)
@@ -172,7 +172,7 @@ namespace glissade
   {
     // A Lagrange curve can leave the box of its nodes, its Bezier control
     // polygon cannot: convert to Bernstein form (p <= 3) and box that.
-    const auto         P = segment_points(segment);
+    const auto         P       = segment_points(segment);
     std::vector<Point> control = P;
     if (degree == 2)
       for (unsigned int d = 0; d < 2; ++d)
@@ -180,12 +180,10 @@ namespace glissade
     else if (degree == 3)
       for (unsigned int d = 0; d < 2; ++d)
         {
-          control[1][d] = (-5. * P[0][d] + 18. * P[1][d] - 9. * P[2][d] +
-                           2. * P[3][d]) /
-                          6.;
-          control[2][d] = (2. * P[0][d] - 9. * P[1][d] + 18. * P[2][d] -
-                           5. * P[3][d]) /
-                          6.;
+          control[1][d] =
+            (-5. * P[0][d] + 18. * P[1][d] - 9. * P[2][d] + 2. * P[3][d]) / 6.;
+          control[2][d] =
+            (2. * P[0][d] - 9. * P[1][d] + 18. * P[2][d] - 5. * P[3][d]) / 6.;
         }
     low = high = control[0];
     for (const auto &c : control)

@@ -21,7 +21,7 @@ namespace glissade
       unsigned int v0, v1;
       Face         face;
     };
-    std::vector<BoundaryFace>                          faces;
+    std::vector<BoundaryFace>                         faces;
     std::map<unsigned int, std::vector<unsigned int>> at_vertex;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
@@ -52,7 +52,7 @@ namespace glissade
           }
       }
     MasterChain chain;
-    chain.closed                      = (n_ends == 0);
+    chain.closed                       = (n_ends == 0);
     std::vector<unsigned int> vertices = {start};
     std::vector<unsigned int> order;
     std::vector<bool>         used(faces.size(), false);
@@ -78,10 +78,10 @@ namespace glissade
 
     // The master body must lie to the right of the direction of travel,
     // so that n = e3 x t points out of it.
-    const auto         &points = body.triangulation().get_vertices();
-    const Face         &first  = faces[order[0]].face;
-    const Tensor<1, 2>  t      = points[vertices[1]] - points[vertices[0]];
-    const Tensor<1, 2>  outward =
+    const auto        &points = body.triangulation().get_vertices();
+    const Face        &first  = faces[order[0]].face;
+    const Tensor<1, 2> t      = points[vertices[1]] - points[vertices[0]];
+    const Tensor<1, 2> outward =
       first.cell->face(first.face)->center() - first.cell->center();
     if (-t[1] * outward[0] + t[0] * outward[1] < 0.)
       {
@@ -95,14 +95,15 @@ namespace glissade
 
     const unsigned int minimum = chain.closed ? 3 : 2;
     if (vertices.size() < minimum)
-      throw InputError(entry, "the master boundary has too few nodes for a curve");
+      throw InputError(entry,
+                       "the master boundary has too few nodes for a curve");
 
     chain.vertices = vertices;
     for (const unsigned int v : vertices)
       {
         chain.reference_points.push_back(points[v]);
-        chain.value_dofs.push_back(BoundaryConditions::vertex_dofs(
-          body.dof_handler(), body.space(), v));
+        chain.value_dofs.push_back(
+          BoundaryConditions::vertex_dofs(body.dof_handler(), body.space(), v));
       }
     for (const unsigned int f : order)
       chain.faces.push_back(faces[f].face);

@@ -107,8 +107,9 @@ namespace glissade
     double largest_value = 0., largest_derivative = 0.;
     for (const auto &w : weights)
       {
-        largest_value      = std::max(largest_value, std::abs(w.value));
-        largest_derivative = std::max(largest_derivative, std::abs(w.derivative));
+        largest_value = std::max(largest_value, std::abs(w.value));
+        largest_derivative =
+          std::max(largest_derivative, std::abs(w.derivative));
       }
     weights.erase(std::remove_if(weights.begin(),
                                  weights.end(),
@@ -155,7 +156,7 @@ namespace glissade
     const double       small = 1e-14 * scale;
 
     Point        before = here, after = here;
-    unsigned int i      = ends[0];
+    unsigned int i = ends[0];
     for (unsigned int step = 0; step < n; ++step)
       {
         if (norm(difference(node_positions[i], here)) > small)
@@ -234,10 +235,10 @@ namespace glissade
                            const unsigned int        minimum_number)
   {
     if (nodes.size() < minimum_number)
-      throw std::invalid_argument(
-        "MasterCurve: this curve needs at least " +
-        std::to_string(minimum_number) + " nodes, got " +
-        std::to_string(nodes.size()));
+      throw std::invalid_argument("MasterCurve: this curve needs at least " +
+                                  std::to_string(minimum_number) +
+                                  " nodes, got " +
+                                  std::to_string(nodes.size()));
 
     node_positions = nodes;
     segment_boxes.clear();
@@ -263,7 +264,9 @@ namespace glissade
   {
     segment_boxes.resize(n_segments());
     for (unsigned int segment = 0; segment < n_segments(); ++segment)
-      bounding_box(segment, segment_boxes[segment][0], segment_boxes[segment][1]);
+      bounding_box(segment,
+                   segment_boxes[segment][0],
+                   segment_boxes[segment][1]);
   }
 
 

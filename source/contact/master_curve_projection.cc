@@ -170,7 +170,7 @@ namespace glissade
                         const Point            &x,
                         std::vector<Candidate> &candidates)
     {
-      constexpr unsigned int n_intervals = 4;
+      constexpr unsigned int              n_intervals = 4;
       std::array<double, n_intervals + 1> f, distance;
       std::array<bool, n_intervals + 1>   orthogonal;
       Point                               c, d1, d2;
@@ -180,10 +180,9 @@ namespace glissade
           const Point r = difference(c, x);
           f[k]          = dot(r, d1);
           distance[k]   = norm(r);
-          orthogonal[k] =
-            std::abs(f[k]) <= norm(d1) * (1e-10 * distance[k] +
-                                          1e-14 * (curve.length_scale() +
-                                                   norm(c)));
+          orthogonal[k] = std::abs(f[k]) <=
+                          norm(d1) * (1e-10 * distance[k] +
+                                      1e-14 * (curve.length_scale() + norm(c)));
         }
 
       for (const unsigned int k : {0u, n_intervals})
@@ -213,7 +212,7 @@ namespace glissade
   MasterCurve::NodeCase
   MasterCurve::classify_node(const unsigned int node, const Point &x) const
   {
-    NodeCase result;
+    NodeCase     result;
     const Point  r = difference(x, node_positions[node]);
     const double tolerance =
       1e-10 * norm(r) + 1e-14 * (scale + norm(node_positions[node]));
@@ -400,12 +399,12 @@ namespace glissade
         else if (node.has_outgoing && node.has_incoming)
           {
             // Convex corner: the average of the two adjacent normals.
-            result.on_vertex = true;
-            result.segment   = node.outgoing;
-            result.s         = 0.;
-            const Point n_in  = rotate_left(node.incoming_tangent);
-            const Point n_out = rotate_left(node.outgoing_tangent);
-            Point       n = {{n_in[0] + n_out[0], n_in[1] + n_out[1]}};
+            result.on_vertex    = true;
+            result.segment      = node.outgoing;
+            result.s            = 0.;
+            const Point  n_in   = rotate_left(node.incoming_tangent);
+            const Point  n_out  = rotate_left(node.outgoing_tangent);
+            Point        n      = {{n_in[0] + n_out[0], n_in[1] + n_out[1]}};
             const double length = norm(n);
             if (length > 1e-12)
               n = {{n[0] / length, n[1] / length}};
@@ -418,10 +417,10 @@ namespace glissade
             // Beyond an open end: the end segment's own normal.
             result.beyond_end = true;
             result.valid      = false;
-            result.segment    = node.has_outgoing ? node.outgoing : node.incoming;
-            result.s          = node.has_outgoing ? 0. : 1.;
-            tangent = node.has_outgoing ? node.outgoing_tangent :
-                                          node.incoming_tangent;
+            result.segment = node.has_outgoing ? node.outgoing : node.incoming;
+            result.s       = node.has_outgoing ? 0. : 1.;
+            tangent =
+              node.has_outgoing ? node.outgoing_tangent : node.incoming_tangent;
           }
         if (result.segment != best.segment)
           result.newton_iterations = 0;

@@ -59,9 +59,9 @@ namespace glissade
             const Tensor<1, 2> &second_derivative) const
       {
         SurfacePoint p;
-        p.valid                   = true;
-        p.point                   = closest;
-        p.normal                  = normal;
+        p.valid  = true;
+        p.point  = closest;
+        p.normal = normal;
         // t such that n = e3 x t, as for the master curves.
         p.tangent                 = Tensor<1, 2>({normal[1], -normal[0]});
         p.first_derivative        = speed * p.tangent;
@@ -78,11 +78,11 @@ namespace glissade
       translation(const double time) const
       {
         motion.set_time(time);
-        return Tensor<1, 2>({motion.value(Point<2>(), 0),
-                             motion.value(Point<2>(), 1)});
+        return Tensor<1, 2>(
+          {motion.value(Point<2>(), 0), motion.value(Point<2>(), 1)});
       }
 
-      const Point<2>       reference_point;
+      const Point<2> reference_point;
       /** m(t), its values checked finite (UserFunction). */
       mutable UserFunction motion;
       Tensor<1, 2>         step_motion;
@@ -134,9 +134,12 @@ namespace glissade
         // At the centre itself any direction is as good: take +y, never NaN.
         Tensor<1, 2> d      = x - position;
         const double length = d.norm();
-        d = length > 0. ? d / length : Tensor<1, 2>({0., 1.});
+        d                   = length > 0. ? d / length : Tensor<1, 2>({0., 1.});
         const Tensor<1, 2> normal = hole ? -d : d;
-        return point(x, position + radius * d, normal, radius,
+        return point(x,
+                     position + radius * d,
+                     normal,
+                     radius,
                      (hole ? radius : -radius) * normal);
       }
 

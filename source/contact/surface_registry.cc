@@ -55,17 +55,18 @@ namespace glissade
   std::unique_ptr<MasterSurface>
   SurfaceRegistry::create(const SurfaceContext &context)
   {
-    const Kind kind = context.master ? Kind::deformable : Kind::rigid;
-    const std::string &name =
-      kind == Kind::deformable ? context.description.surface :
-                                 context.description.obstacle;
+    const Kind         kind = context.master ? Kind::deformable : Kind::rigid;
+    const std::string &name = kind == Kind::deformable ?
+                                context.description.surface :
+                                context.description.obstacle;
     for (const auto &entry : entries())
       if (entry.kind == kind && entry.name == name)
         return entry.create(context);
-    throw InputError(context.description.entry +
-                       (kind == Kind::deformable ? "/Surface" : "/Obstacle/Type"),
-                     "unknown surface '" + name + "' (known: " +
-                       names_as_pattern(kind) + ")");
+    throw InputError(context.description.entry + (kind == Kind::deformable ?
+                                                    "/Surface" :
+                                                    "/Obstacle/Type"),
+                     "unknown surface '" + name +
+                       "' (known: " + names_as_pattern(kind) + ")");
   }
 
 
@@ -88,8 +89,8 @@ namespace glissade
     std::string text;
     for (const auto &entry : entries())
       if (entry.kind == kind)
-        text += (text.empty() ? "" : "; ") + entry.name + ": " +
-                entry.description;
+        text +=
+          (text.empty() ? "" : "; ") + entry.name + ": " + entry.description;
     return text + ".";
   }
 } // namespace glissade

@@ -45,8 +45,8 @@ namespace glissade
       if (entry.name == name)
         return entry.create();
     throw InputError("Element/Space",
-                     "unknown element space '" + name + "' (known: " +
-                       names_as_pattern() + ")");
+                     "unknown element space '" + name +
+                       "' (known: " + names_as_pattern() + ")");
   }
 
 
@@ -67,8 +67,8 @@ namespace glissade
   {
     std::string text;
     for (const auto &entry : entries())
-      text += (text.empty() ? "" : "; ") + entry.name + ": " +
-              entry.description;
+      text +=
+        (text.empty() ? "" : "; ") + entry.name + ": " + entry.description;
     return text + ".";
   }
 } // namespace glissade

@@ -40,13 +40,13 @@ namespace glissade
             for (unsigned int k = 1; k <= n_points; ++k)
               {
                 const double p_next =
-                    ((2.0 * k - 1.0) * x * p_current - (k - 1.0) * p_previous) /
-                    k;
+                  ((2.0 * k - 1.0) * x * p_current - (k - 1.0) * p_previous) /
+                  k;
                 p_previous = p_current;
                 p_current  = p_next;
               }
             derivative =
-                n_points * (x * p_current - p_previous) / (x * x - 1.0);
+              n_points * (x * p_current - p_previous) / (x * x - 1.0);
             const double step = p_current / derivative;
             x -= step;
             if (std::abs(step) < 1e-16)
@@ -57,7 +57,7 @@ namespace glissade
         for (unsigned int k = 1; k <= n_points; ++k)
           {
             const double p_next =
-                ((2.0 * k - 1.0) * x * p_current - (k - 1.0) * p_previous) / k;
+              ((2.0 * k - 1.0) * x * p_current - (k - 1.0) * p_previous) / k;
             p_previous = p_current;
             p_current  = p_next;
           }
@@ -79,7 +79,7 @@ namespace glissade
   tensor_gauss_rule(const unsigned int n_points_per_direction)
   {
     const GaussLegendreRule rule_1d =
-        gauss_legendre_rule(n_points_per_direction);
+      gauss_legendre_rule(n_points_per_direction);
     std::vector<QuadraturePoint2D> rule;
     rule.reserve(n_points_per_direction * n_points_per_direction);
     for (unsigned int j = 0; j < n_points_per_direction; ++j)

@@ -57,8 +57,10 @@ namespace glissade
     // deal.II face 0 (xi=-1) runs from vertex 0 to 2, i.e. upward, while our
     // edge 3 runs downward; face 3 (eta=1) runs rightward, our edge 2
     // leftward.
-    constexpr EdgeOfFace map[4] = {
-        {3, true}, {1, false}, {0, false}, {2, true}};
+    constexpr EdgeOfFace map[4] = {{3, true},
+                                   {1, false},
+                                   {0, false},
+                                   {2, true}};
     return map[face];
   }
 
@@ -129,8 +131,8 @@ namespace glissade
         const double D = 1.0 - xi * xi, E = 1.0 - eta * eta;
 
         // value: 1/8 A B C
-        gradients[3 * a] = {{0.125 * B * (xa * C + A * C_xi),
-                             0.125 * A * (ea * C + B * C_eta)}};
+        gradients[3 * a] = {
+          {0.125 * B * (xa * C + A * C_xi), 0.125 * A * (ea * C + B * C_eta)}};
         // xi-derivative function: -xa/8 A B D
         gradients[3 * a + 1] = {{-0.125 * xa * B * (xa * D - 2.0 * xi * A),
                                  -0.125 * xa * A * D * ea}};
@@ -171,14 +173,13 @@ namespace glissade
 
   // ------------------------------------------------------------------ creation
   HermiteQuadrilateral::HermiteQuadrilateral(
-      const std::array<NodeGeometry, 4> &nodes)
-      : nodes(nodes)
-  {
-  }
+    const std::array<NodeGeometry, 4> &nodes)
+    : nodes(nodes)
+  {}
 
   HermiteQuadrilateral
   HermiteQuadrilateral::from_straight_sides(
-      const std::array<Vector, 4> &vertices)
+    const std::array<Vector, 4> &vertices)
   {
     // Along xi the edges are 0-1 (bottom) and 3-2 (top); along eta they are
     // 0-3 (left) and 1-2 (right). Each node takes half the edge vector of
@@ -201,10 +202,9 @@ namespace glissade
 
   HermiteQuadrilateral
   HermiteQuadrilateral::from_parametrization(
-      const std::function<ParametrizationValue(double, double)>
-                   &parametrization,
-      const Vector &p_range,
-      const Vector &q_range)
+    const std::function<ParametrizationValue(double, double)> &parametrization,
+    const Vector                                              &p_range,
+    const Vector                                              &q_range)
   {
     const double                half_dp = 0.5 * (p_range[1] - p_range[0]);
     const double                half_dq = 0.5 * (q_range[1] - q_range[0]);
@@ -214,9 +214,9 @@ namespace glissade
         const double p = node_xi[a] < 0 ? p_range[0] : p_range[1];
         const double q = node_eta[a] < 0 ? q_range[0] : q_range[1];
         const ParametrizationValue X = parametrization(p, q);
-        nodes[a] = {X.point,
-                    {{X.d_dp[0] * half_dp, X.d_dp[1] * half_dp}},
-                    {{X.d_dq[0] * half_dq, X.d_dq[1] * half_dq}}};
+        nodes[a]                     = {X.point,
+                                        {{X.d_dp[0] * half_dp, X.d_dp[1] * half_dp}},
+                                        {{X.d_dq[0] * half_dq, X.d_dq[1] * half_dq}}};
       }
     return HermiteQuadrilateral(nodes);
   }
@@ -231,7 +231,7 @@ namespace glissade
   // ---------------------------------------------------------------- evaluation
   HermiteQuadrilateral::Vector
   HermiteQuadrilateral::geometry_from_reference(
-      const ShapeArray &reference) const
+    const ShapeArray &reference) const
   {
     Vector X = {{0.0, 0.0}};
     for (unsigned int a = 0; a < 4; ++a)
@@ -244,7 +244,7 @@ namespace glissade
 
   HermiteQuadrilateral::ShapeArray
   HermiteQuadrilateral::physical_from_reference(
-      const ShapeArray &reference) const
+    const ShapeArray &reference) const
   {
     ShapeArray physical;
     for (unsigned int a = 0; a < 4; ++a)
@@ -252,9 +252,9 @@ namespace glissade
         const Vector &X_xi = nodes[a].tangent_xi, &X_eta = nodes[a].tangent_eta;
         physical[3 * a] = reference[3 * a];
         physical[3 * a + 1] =
-            X_xi[0] * reference[3 * a + 1] + X_eta[0] * reference[3 * a + 2];
+          X_xi[0] * reference[3 * a + 1] + X_eta[0] * reference[3 * a + 2];
         physical[3 * a + 2] =
-            X_xi[1] * reference[3 * a + 1] + X_eta[1] * reference[3 * a + 2];
+          X_xi[1] * reference[3 * a + 1] + X_eta[1] * reference[3 * a + 2];
       }
     return physical;
   }
@@ -293,11 +293,11 @@ namespace glissade
         d_eta[i] = gradients[i][1];
       }
 
-    result.point                = geometry_from_reference(values);
-    const Vector X_xi           = geometry_from_reference(d_xi);
-    const Vector X_eta          = geometry_from_reference(d_eta);
-    result.jacobian             = {{{{X_xi[0], X_eta[0]}}, {{X_xi[1], X_eta[1]}}}};
-    const double det            = X_xi[0] * X_eta[1] - X_eta[0] * X_xi[1];
+    result.point       = geometry_from_reference(values);
+    const Vector X_xi  = geometry_from_reference(d_xi);
+    const Vector X_eta = geometry_from_reference(d_eta);
+    result.jacobian    = {{{{X_xi[0], X_eta[0]}}, {{X_xi[1], X_eta[1]}}}};
+    const double det   = X_xi[0] * X_eta[1] - X_eta[0] * X_xi[1];
     result.jacobian_determinant = det;
 
     result.shape_values      = physical_from_reference(values);
@@ -308,8 +308,8 @@ namespace glissade
     // J^{-1} = 1/det [[X_eta[1], -X_eta[0]], [-X_xi[1], X_xi[0]]].
     for (unsigned int i = 0; i < 12; ++i)
       result.shape_gradients[i] = {
-          {(X_eta[1] * phi_xi[i] - X_xi[1] * phi_eta[i]) / det,
-           (-X_eta[0] * phi_xi[i] + X_xi[0] * phi_eta[i]) / det}};
+        {(X_eta[1] * phi_xi[i] - X_xi[1] * phi_eta[i]) / det,
+         (-X_eta[0] * phi_xi[i] + X_xi[0] * phi_eta[i]) / det}};
     return result;
   }
 
@@ -324,9 +324,9 @@ namespace glissade
 
     const ShapeArray values = reference_values(reference[0], reference[1]);
     const std::array<Vector, 12> gradients =
-        reference_gradients(reference[0], reference[1]);
+      reference_gradients(reference[0], reference[1]);
     const std::array<std::array<double, 3>, 12> hessians =
-        reference_hessians(reference[0], reference[1]);
+      reference_hessians(reference[0], reference[1]);
 
     // Chain rule along the straight reference edge (t is constant).
     ShapeArray d_ds, d2_ds2;
@@ -353,9 +353,9 @@ namespace glissade
         result.tangent[0] += result.weights_ds[i] * displacement_x_dofs[i];
         result.tangent[1] += result.weights_ds[i] * displacement_y_dofs[i];
         result.tangent_derivative[0] +=
-            result.weights_ds2[i] * displacement_x_dofs[i];
+          result.weights_ds2[i] * displacement_x_dofs[i];
         result.tangent_derivative[1] +=
-            result.weights_ds2[i] * displacement_y_dofs[i];
+          result.weights_ds2[i] * displacement_y_dofs[i];
       }
     return result;
   }

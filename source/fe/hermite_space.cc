@@ -76,12 +76,10 @@ namespace glissade
           {
             const Vector2 ref =
               HermiteQuadrilateral::edge_reference_point(edge, points[q]);
-            values[q] = element.evaluate(ref[0], ref[1]);
-            const auto  &J = values[q].jacobian;
-            const double tx =
-              J[0][0] * direction[0] + J[0][1] * direction[1];
-            const double ty =
-              J[1][0] * direction[0] + J[1][1] * direction[1];
+            values[q]       = element.evaluate(ref[0], ref[1]);
+            const auto  &J  = values[q].jacobian;
+            const double tx = J[0][0] * direction[0] + J[0][1] * direction[1];
+            const double ty = J[1][0] * direction[0] + J[1][1] * direction[1];
             const double length = std::hypot(tx, ty);
             weights[q]          = length * point_weights[q];
             // Edges run counterclockwise: the outward normal is the tangent
@@ -95,7 +93,8 @@ namespace glissade
                 const unsigned int  face,
                 const double        fraction) override
       {
-        const auto edge_of_face = HermiteQuadrilateral::edge_from_dealii_face(face);
+        const auto edge_of_face =
+          HermiteQuadrilateral::edge_from_dealii_face(face);
         const double s =
           edge_of_face.reversed ? 1. - 2. * fraction : 2. * fraction - 1.;
         evaluate_on_edge(cell, edge_of_face.edge, {s}, {1.});
@@ -152,12 +151,12 @@ namespace glissade
       }
 
     private:
-      const HermiteSpace                              &space;
-      const std::vector<QuadraturePoint2D>             cell_rule;
-      const GaussLegendreRule                          line_rule;
-      std::vector<HermiteQuadrilateral::PointValues>   values;
-      std::vector<double>                              weights;
-      std::vector<Tensor<1, 2>>                        normals;
+      const HermiteSpace                            &space;
+      const std::vector<QuadraturePoint2D>           cell_rule;
+      const GaussLegendreRule                        line_rule;
+      std::vector<HermiteQuadrilateral::PointValues> values;
+      std::vector<double>                            weights;
+      std::vector<Tensor<1, 2>>                      normals;
     };
   } // namespace
 
@@ -197,11 +196,12 @@ namespace glissade
             const unsigned int v_eta = v ^ 2; // neighbour along eta
             const double       s_xi  = (v & 1) ? -0.5 : 0.5;
             const double       s_eta = (v & 2) ? -0.5 : 0.5;
-            auto &node       = nodes[HermiteQuadrilateral::node_from_dealii_vertex(v)];
-            node.point       = to_array(cell->vertex(v));
-            node.tangent_xi  = to_array(
-              s_xi * manifold.get_tangent_vector(cell->vertex(v),
-                                                 cell->vertex(v_xi)));
+            auto              &node =
+              nodes[HermiteQuadrilateral::node_from_dealii_vertex(v)];
+            node.point = to_array(cell->vertex(v));
+            node.tangent_xi =
+              to_array(s_xi * manifold.get_tangent_vector(cell->vertex(v),
+                                                          cell->vertex(v_xi)));
             node.tangent_eta = to_array(
               s_eta * manifold.get_tangent_vector(cell->vertex(v),
                                                   cell->vertex(v_eta)));
@@ -238,7 +238,7 @@ namespace glissade
       std::vector<Tensor<1, 2>>              tangents;
       double                                 size;
     };
-    std::map<unsigned int, VertexData> vertices;
+    std::map<unsigned int, VertexData>   vertices;
     std::vector<types::global_dof_index> local(numbering.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
@@ -246,7 +246,7 @@ namespace glissade
             cell->face(f)->boundary_id() == boundary)
           {
             cell->get_dof_indices(local);
-            const auto &element = elements[cell->active_cell_index()];
+            const auto        &element = elements[cell->active_cell_index()];
             const unsigned int edge =
               HermiteQuadrilateral::edge_from_dealii_face(f).edge;
             const auto direction =
@@ -258,17 +258,21 @@ namespace glissade
                   HermiteQuadrilateral::dealii_vertex_from_node(node);
                 auto &data = vertices[cell->vertex_index(v)];
                 for (unsigned int k = 0; k < 6; ++k)
-                  data.dofs[k] = local[numbering.component_to_system_index(k, v)];
+                  data.dofs[k] =
+                    local[numbering.component_to_system_index(k, v)];
                 data.X    = cell->vertex(v);
                 data.size = cell->diameter();
-                const auto   ref = HermiteQuadrilateral::node_reference_point(node);
-                const auto   J   = element.jacobian(ref[0], ref[1]);
-                Tensor<1, 2> t({J[0][0] * direction[0] + J[0][1] * direction[1],
-                                J[1][0] * direction[0] + J[1][1] * direction[1]});
+                const auto ref =
+                  HermiteQuadrilateral::node_reference_point(node);
+                const auto   J = element.jacobian(ref[0], ref[1]);
+                Tensor<1, 2> t(
+                  {J[0][0] * direction[0] + J[0][1] * direction[1],
+                   J[1][0] * direction[0] + J[1][1] * direction[1]});
                 t /= t.norm();
                 bool known = false;
                 for (const auto &other : data.tangents)
-                  known = known || std::abs(other[0] * t[1] - other[1] * t[0]) < 1e-10;
+                  known = known ||
+                          std::abs(other[0] * t[1] - other[1] * t[0]) < 1e-10;
                 if (!known)
                   data.tangents.push_back(t);
               }
@@ -306,7 +310,7 @@ namespace glissade
             {
               // t_x du/dx + t_y du/dy = t . grad g, solved for the dof with
               // the larger coefficient.
-              const Tensor<1, 2> &t = data.tangents[0];
+              const Tensor<1, 2> &t      = data.tangents[0];
               const double        target = t * grad;
               if (std::abs(t[0]) >= std::abs(t[1]))
                 relations.push_back(

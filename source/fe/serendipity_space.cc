@@ -23,12 +23,12 @@ namespace glissade
                          const unsigned int power)
     {
       // Expand prod_{m != j} (x - x_m) / (x_j - x_m) as a polynomial.
-      std::vector<double> poly = {1.};
+      std::vector<double> poly        = {1.};
       double              denominator = 1.;
       for (unsigned int m = 0; m <= degree; ++m)
         if (m != j)
           {
-            const double       xm = double(m) / degree;
+            const double        xm = double(m) / degree;
             std::vector<double> next(poly.size() + 1, 0.);
             for (unsigned int k = 0; k < poly.size(); ++k)
               {
@@ -54,9 +54,9 @@ namespace glissade
       throw std::invalid_argument("serendipity elements of degree 2 or 3");
 
     // Which 1D node each base dof sits on, from FE_Q's support points.
-    const FiniteElement<2> &base = fe.base_element(0);
-    const auto             &support = base.get_unit_support_points();
-    const unsigned int      n       = base.n_dofs_per_cell();
+    const FiniteElement<2>   &base    = fe.base_element(0);
+    const auto               &support = base.get_unit_support_points();
+    const unsigned int        n       = base.n_dofs_per_cell();
     std::vector<unsigned int> ix(n), iy(n);
     std::vector<unsigned int> interior, boundary;
     for (unsigned int i = 0; i < n; ++i)
@@ -132,7 +132,9 @@ namespace glissade
                 element_constraints.add_line(dof);
                 for (const auto &[j, coefficient] : relations[i])
                   element_constraints.add_entry(
-                    dof, local[fe.component_to_system_index(c, j)], coefficient);
+                    dof,
+                    local[fe.component_to_system_index(c, j)],
+                    coefficient);
               }
       }
     element_constraints.close();
@@ -149,13 +151,14 @@ namespace glissade
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
+            const unsigned int c   = fe.system_to_component_index(i).first;
             euler_vector[local[i]] = support[local[i]][c];
           }
       }
     element_constraints.distribute(euler_vector);
-    geometry = std::make_unique<MappingFEField<2, 2, Vector<double>>>(
-      dof_handler, euler_vector);
+    geometry =
+      std::make_unique<MappingFEField<2, 2, Vector<double>>>(dof_handler,
+                                                             euler_vector);
   }
 
 

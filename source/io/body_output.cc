@@ -28,8 +28,9 @@ namespace glissade
       {}
 
       void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
-                            std::vector<Vector<double>> &computed) const override
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<2> &inputs,
+        std::vector<Vector<double>>              &computed) const override
       {
         for (unsigned int p = 0; p < computed.size(); ++p)
           for (unsigned int c = 0; c < 2; ++c)

@@ -35,16 +35,18 @@ namespace glissade
   ContactSurfaceOutput::ContactSurfaceOutput(const ContactPair &pair)
     : pair(pair)
   {
-    const Body &slave = pair.slave();
-    const auto &ids   = pair.slave_boundary_ids();
+    const Body                          &slave = pair.slave();
+    const auto                          &ids   = pair.slave_boundary_ids();
     std::map<unsigned int, unsigned int> node_of_vertex;
     for (unsigned int k = 0; k < pair.nodes().size(); ++k)
       node_of_vertex[pair.nodes()[k].vertex] = k;
     for (const auto &cell : slave.triangulation().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && ids.count(cell->face(f)->boundary_id()) > 0)
-          faces.push_back({{node_of_vertex.at(cell->face(f)->vertex_index(0)),
-                            node_of_vertex.at(cell->face(f)->vertex_index(1))}});
+        if (cell->face(f)->at_boundary() &&
+            ids.count(cell->face(f)->boundary_id()) > 0)
+          faces.push_back(
+            {{node_of_vertex.at(cell->face(f)->vertex_index(0)),
+              node_of_vertex.at(cell->face(f)->vertex_index(1))}});
   }
 
 
@@ -120,8 +122,9 @@ namespace glissade
         << "NumberOfComponents=\"3\" format=\"ascii\">\n";
     for (unsigned int k = 0; k < n; ++k)
       out << x[k][0] << ' ' << x[k][1] << " 0\n";
-    out << "</DataArray>\n</Points>\n<Cells>\n"
-        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    out
+      << "</DataArray>\n</Points>\n<Cells>\n"
+      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
     for (const auto &[a, b] : faces)
       out << a << ' ' << b << '\n';
     out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
@@ -141,21 +144,28 @@ namespace glissade
         out << value(k) << '\n';
       out << "</DataArray>\n";
     };
-    scalar("pressure", [&](unsigned int k) { return per_area(k, nodes[k].reaction[1]); });
-    scalar("shear", [&](unsigned int k) { return per_area(k, nodes[k].reaction[0]); });
+    scalar("pressure",
+           [&](unsigned int k) { return per_area(k, nodes[k].reaction[1]); });
+    scalar("shear",
+           [&](unsigned int k) { return per_area(k, nodes[k].reaction[0]); });
     scalar("r_n", [&](unsigned int k) { return nodes[k].reaction[1]; });
     scalar("r_t", [&](unsigned int k) { return nodes[k].reaction[0]; });
     // No gap without a counterpart: 0 there, and status says why.
-    scalar("gap", [&](unsigned int k) { return nodes[k].projected ? nodes[k].gap : 0.; });
+    scalar("gap", [&](unsigned int k) {
+      return nodes[k].projected ? nodes[k].gap : 0.;
+    });
     scalar("slip", [&](unsigned int k) {
       return nodes[k].active ? nodes[k].linearization.slip : 0.;
     });
-    scalar("status", [&](unsigned int k) { return status_of(nodes[k]).second; });
-    out << "<DataArray type=\"Float64\" Name=\"force\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">\n";
+    scalar("status",
+           [&](unsigned int k) { return status_of(nodes[k]).second; });
+    out
+      << "<DataArray type=\"Float64\" Name=\"force\" NumberOfComponents=\"3\" "
+         "format=\"ascii\">\n";
     for (unsigned int k = 0; k < n; ++k)
       {
-        const Tensor<1, 2> f = nodes[k].active ? nodes[k].force() : Tensor<1, 2>();
+        const Tensor<1, 2> f =
+          nodes[k].active ? nodes[k].force() : Tensor<1, 2>();
         out << f[0] << ' ' << f[1] << " 0\n";
       }
     out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"

@@ -1,14 +1,14 @@
 #include <glissade/base/input_error.h>
 #include <glissade/io/directory_lock.h>
 
+#include <fcntl.h>
 #include <sys/file.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 namespace glissade
 {

@@ -55,11 +55,11 @@ namespace glissade
     const std::vector<std::string>                  &items,
     const std::vector<std::unique_ptr<Body>>        &bodies,
     const std::vector<std::unique_ptr<ContactPair>> &pairs,
-    const std::string                                &filename,
-    const std::string                                &source)
+    const std::string                               &filename,
+    const std::string                               &source)
     : filename(filename)
   {
-    columns = {"increment", "time", "newton_iterations"};
+    columns                 = {"increment", "time", "newton_iterations"};
     const std::string entry = source + ": Output/History";
 
     for (const auto &item : items)
@@ -95,7 +95,8 @@ namespace glissade
             if (!text::parse_point_location(args[1], x, y))
               throw InputError(entry, "'" + item + "': expected point(x, y)");
             const Point<2> X(x, y);
-            if (pair->node_at(X).reference_position.distance(X) > 1e-8 * (1. + X.norm()))
+            if (pair->node_at(X).reference_position.distance(X) >
+                1e-8 * (1. + X.norm()))
               throw InputError(entry,
                                "'" + item + "': no slave node of pair '" +
                                  args[0] + "' at that reference position");
@@ -131,8 +132,7 @@ namespace glissade
           {
             double x, y;
             if (!text::parse_point_location(args[1], x, y))
-              throw InputError(entry,
-                               "'" + item + "': expected point(x, y)");
+              throw InputError(entry, "'" + item + "': expected point(x, y)");
             // The vertex and its dofs are found once: searching them at
             // every increment made 320 columns cost 6 times the solve.
             std::array<types::global_dof_index, 2> vertex_dofs;
@@ -147,10 +147,11 @@ namespace glissade
             for (const std::string q : {"ux", "uy"})
               columns.push_back(identifier(args[0]) + "_" + q + "_" +
                                 location_identifier(args[1]));
-            evaluators.emplace_back([body, vertex_dofs](std::vector<double> &row) {
-              row.push_back(body->displacement()(vertex_dofs[0]));
-              row.push_back(body->displacement()(vertex_dofs[1]));
-            });
+            evaluators.emplace_back(
+              [body, vertex_dofs](std::vector<double> &row) {
+                row.push_back(body->displacement()(vertex_dofs[0]));
+                row.push_back(body->displacement()(vertex_dofs[1]));
+              });
           }
         else if (kind == "reaction" && args.size() == 2)
           {
@@ -200,7 +201,8 @@ namespace glissade
                         const double       time,
                         const unsigned int newton_iterations)
   {
-    std::vector<double> row = {double(increment), time,
+    std::vector<double> row = {double(increment),
+                               time,
                                double(newton_iterations)};
     for (const auto &evaluate : evaluators)
       evaluate(row);

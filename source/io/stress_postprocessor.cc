@@ -55,11 +55,11 @@ namespace glissade
           }
         const SymmetricTensor<2, 3> s   = material.cauchy_stress(H);
         const SymmetricTensor<2, 3> dev = deviator(s);
-        computed[p][0] = s[0][0];
-        computed[p][1] = s[1][1];
-        computed[p][2] = s[0][1];
-        computed[p][3] = s[2][2];
-        computed[p][4] = std::sqrt(1.5 * (dev * dev));
+        computed[p][0]                  = s[0][0];
+        computed[p][1]                  = s[1][1];
+        computed[p][2]                  = s[0][1];
+        computed[p][3]                  = s[2][2];
+        computed[p][4]                  = std::sqrt(1.5 * (dev * dev));
       }
   }
 } // namespace glissade

@@ -72,7 +72,8 @@ namespace glissade
 
 
   std::pair<double, std::string>
-  BodyMaterials::young_modulus_of_cell(const dealii::types::material_id id) const
+  BodyMaterials::young_modulus_of_cell(
+    const dealii::types::material_id id) const
   {
     const auto   region = region_materials.find(id);
     const Entry &entry =

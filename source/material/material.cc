@@ -34,8 +34,8 @@ namespace glissade
       return Material(std::make_unique<SaintVenantKirchhoff>(lambda, mu),
                       hypothesis);
     throw InputError("Material/Law",
-                     "unknown law '" + law_name + "' (known: " +
-                       text::joined(law_names(), ", ") + ")");
+                     "unknown law '" + law_name +
+                       "' (known: " + text::joined(law_names(), ", ") + ")");
   }
 
 

@@ -16,16 +16,17 @@ namespace glissade
                        SymmetricTensor<2, 3>       &S,
                        SymmetricTensor<4, 3>       &D) const
   {
-    const SymmetricTensor<2, 3> I = unit_symmetric_tensor<3>();
-    const SymmetricTensor<2, 3> C = I + 2. * E;
+    const SymmetricTensor<2, 3> I     = unit_symmetric_tensor<3>();
+    const SymmetricTensor<2, 3> C     = I + 2. * E;
     const SymmetricTensor<2, 3> C_inv = invert(C);
 
     // det C - 1 = det(I + A) - 1 with A = 2E, written without cancellation:
     // tr A + ((tr A)^2 - tr A^2)/2 + det A; then ln J = log1p(.)/2.
     const SymmetricTensor<2, 3> A   = 2. * E;
     const double                trA = trace(A);
-    const double det_C_minus_1 = trA + 0.5 * (trA * trA - A * A) + determinant(A);
-    const double log_J         = 0.5 * std::log1p(det_C_minus_1);
+    const double                det_C_minus_1 =
+      trA + 0.5 * (trA * trA - A * A) + determinant(A);
+    const double log_J = 0.5 * std::log1p(det_C_minus_1);
 
     // S = mu (I - C^-1) + lambda ln J C^-1 = C^-1 (2 mu E + lambda ln J I),
     // the second form again free of cancellation.

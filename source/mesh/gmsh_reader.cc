@@ -48,7 +48,7 @@ namespace glissade
         if (lines[i].size() > 1 && lines[i][0] == '$' &&
             lines[i].rfind("$End", 0) != 0)
           find("$End" + lines[i].substr(1), i + 1);
-      const std::size_t format = find("$MeshFormat", 0);
+      const std::size_t format     = find("$MeshFormat", 0);
       const std::size_t format_end = find("$EndMeshFormat", format);
       const std::string version =
         format + 1 < format_end ?
@@ -64,8 +64,8 @@ namespace glissade
         throw InputError(entry,
                          "'" + file +
                            "': binary MSH files are not read: save as ASCII");
-      const bool version_2 = version.rfind("2.", 0) == 0;
-      std::size_t from = format_end;
+      const bool  version_2 = version.rfind("2.", 0) == 0;
+      std::size_t from      = format_end;
       for (const std::string section : {"Nodes", "Elements"})
         {
           const std::size_t begin = find("$" + section, from);
@@ -78,17 +78,14 @@ namespace glissade
           header >> first >> second;
           const long long declared = version_2 ? first : second;
           const long long present  = static_cast<long long>(end - begin) - 2;
-          if (declared < 0 || (version_2 ? declared != present :
-                                           declared > present))
-            throw InputError(entry,
-                             "'" + file + "' declares " +
-                               std::to_string(declared) + " " +
-                               (section == std::string("Nodes") ?
-                                  "nodes" :
-                                  "elements") +
-                               " but its $" + section + " section has " +
-                               std::to_string(std::max(present, 0ll)) +
-                               " lines");
+          if (declared < 0 ||
+              (version_2 ? declared != present : declared > present))
+            throw InputError(
+              entry,
+              "'" + file + "' declares " + std::to_string(declared) + " " +
+                (section == std::string("Nodes") ? "nodes" : "elements") +
+                " but its $" + section + " section has " +
+                std::to_string(std::max(present, 0ll)) + " lines");
         }
       return version_2;
     }
@@ -99,17 +96,28 @@ namespace glissade
     {
       switch (type)
         {
-          case 1: return 2;   // line
-          case 2: return 3;   // triangle
-          case 3: return 4;   // quadrangle
-          case 4: return 4;   // tetrahedron
-          case 5: return 8;   // hexahedron
-          case 8: return 3;   // second-order line
-          case 9: return 6;   // second-order triangle
-          case 10: return 9;  // second-order quadrangle
-          case 15: return 1;  // point
-          case 16: return 8;  // serendipity quadrangle
-          default: return -1;
+          case 1:
+            return 2; // line
+          case 2:
+            return 3; // triangle
+          case 3:
+            return 4; // quadrangle
+          case 4:
+            return 4; // tetrahedron
+          case 5:
+            return 8; // hexahedron
+          case 8:
+            return 3; // second-order line
+          case 9:
+            return 6; // second-order triangle
+          case 10:
+            return 9; // second-order quadrangle
+          case 15:
+            return 1; // point
+          case 16:
+            return 8; // serendipity quadrangle
+          default:
+            return -1;
         }
     }
 
@@ -122,8 +130,8 @@ namespace glissade
       std::string        field;
       while (in >> field)
         {
-          char     *end = nullptr;
-          const long long v = std::strtoll(field.c_str(), &end, 10);
+          char           *end = nullptr;
+          const long long v   = std::strtoll(field.c_str(), &end, 10);
           if (*end != '\0')
             return false;
           values.push_back(v);
@@ -161,10 +169,10 @@ namespace glissade
       };
       std::vector<long long> v;
       std::set<long long>    nodes;
-      const auto             [node_begin, node_end] = section("Nodes");
-      const auto             [element_begin, element_end] = section("Elements");
-      const auto coordinates = [&](const std::size_t k) {
-        std::istringstream in(lines[k]);
+      const auto [node_begin, node_end]       = section("Nodes");
+      const auto [element_begin, element_end] = section("Elements");
+      const auto coordinates                  = [&](const std::size_t k) {
+        std::istringstream  in(lines[k]);
         std::vector<double> x;
         std::string         field;
         while (in >> field)
@@ -176,27 +184,31 @@ namespace glissade
           }
         return x;
       };
-      const auto check_node_line = [&](const std::size_t k,
+      const auto check_node_line = [&](const std::size_t          k,
                                        const std::vector<double> &x) {
         if (x.size() < 3)
           refuse(k, "a node needs x, y and z");
         if (x[2] != 0.)
-          refuse(k, "a node has z = " + std::to_string(x[2]) +
-                      ": glissade's meshes lie in the plane z = 0");
+          refuse(k,
+                 "a node has z = " + std::to_string(x[2]) +
+                   ": glissade's meshes lie in the plane z = 0");
       };
 
-      const auto nodes_of_type = [&](const std::size_t k, const long long type) {
+      const auto nodes_of_type = [&](const std::size_t k,
+                                     const long long   type) {
         const int n = gmsh_nodes_per_element(type);
         if (n < 0)
-          refuse(k, "element type " + std::to_string(type) +
-                      " is not a Gmsh element glissade knows");
+          refuse(k,
+                 "element type " + std::to_string(type) +
+                   " is not a Gmsh element glissade knows");
         return n;
       };
       const auto check_node_reference = [&](const std::size_t k,
                                             const long long   tag) {
         if (!nodes.count(tag))
-          refuse(k, "the element names node " + std::to_string(tag) +
-                      ", which $Nodes does not declare");
+          refuse(k,
+                 "the element names node " + std::to_string(tag) +
+                   ", which $Nodes does not declare");
       };
 
       if (version_2)
@@ -214,13 +226,16 @@ namespace glissade
           for (std::size_t k = element_begin + 2; k < element_end; ++k)
             {
               if (!read_integers(lines[k], v) || v.size() < 3)
-                refuse(k, "an element line must read 'id type n_tags tags... "
-                          "nodes...'");
+                refuse(k,
+                       "an element line must read 'id type n_tags tags... "
+                       "nodes...'");
               const int n = nodes_of_type(k, v[1]);
               if (v[2] < 0 || static_cast<long long>(v.size()) != 3 + v[2] + n)
-                refuse(k, "the element's number of tags and of nodes do not "
-                          "match its line");
-              for (long long i = 3 + v[2]; i < static_cast<long long>(v.size()); ++i)
+                refuse(k,
+                       "the element's number of tags and of nodes do not "
+                       "match its line");
+              for (long long i = 3 + v[2]; i < static_cast<long long>(v.size());
+                   ++i)
                 check_node_reference(k, v[i]);
             }
           return;
@@ -252,14 +267,15 @@ namespace glissade
         refuse(node_begin + 1, "$Nodes must start with 'blocks nodes min max'");
       {
         const long long n_blocks = v[0], n_nodes = v[1];
-        std::size_t     k        = node_begin + 2;
+        std::size_t     k = node_begin + 2;
         for (long long b = 0; b < n_blocks; ++b)
           {
             if (k >= node_end || !read_integers(lines[k], v) || v.size() != 4 ||
                 v[0] < 0 || v[0] > 3 || v[2] != 0 || v[3] < 0 ||
                 2 * v[3] >= static_cast<long long>(node_end - k))
-              refuse(k, "a node block header must read 'dimension (0-3) tag "
-                        "0 count' with its count of nodes following");
+              refuse(k,
+                     "a node block header must read 'dimension (0-3) tag "
+                     "0 count' with its count of nodes following");
             const long long n = v[3];
             for (long long i = 1; i <= n; ++i)
               {
@@ -271,10 +287,10 @@ namespace glissade
               check_node_line(k + n + i, coordinates(k + n + i));
             k += 1 + 2 * n;
           }
-        if (k != node_end ||
-            static_cast<long long>(nodes.size()) != n_nodes)
-          refuse(k, "the node blocks do not add up to the $Nodes header "
-                    "(a stray or missing line, or a repeated tag)");
+        if (k != node_end || static_cast<long long>(nodes.size()) != n_nodes)
+          refuse(k,
+                 "the node blocks do not add up to the $Nodes header "
+                 "(a stray or missing line, or a repeated tag)");
       }
       // $Elements: "n_blocks n_elements min max", per block "dim tag type
       // n", n lines "tag nodes...".
@@ -284,23 +300,25 @@ namespace glissade
                "$Elements must start with 'blocks elements min max'");
       {
         const long long n_blocks = v[0], n_elements = v[1];
-        long long       counted  = 0;
-        std::size_t     k        = element_begin + 2;
+        long long       counted = 0;
+        std::size_t     k       = element_begin + 2;
         for (long long b = 0; b < n_blocks; ++b)
           {
             if (k >= element_end || !read_integers(lines[k], v) ||
                 v.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0 ||
                 v[3] >= static_cast<long long>(element_end - k))
-              refuse(k, "an element block header must read 'dimension (0-3) "
-                        "tag type count' with its elements following");
+              refuse(k,
+                     "an element block header must read 'dimension (0-3) "
+                     "tag type count' with its elements following");
             const int       n     = nodes_of_type(k, v[2]);
             const long long count = v[3];
             for (long long i = 1; i <= count; ++i)
               {
                 if (!read_integers(lines[k + i], v) ||
                     static_cast<long long>(v.size()) != 1 + n)
-                  refuse(k + i, "an element line must hold its tag and " +
-                                  std::to_string(n) + " nodes");
+                  refuse(k + i,
+                         "an element line must hold its tag and " +
+                           std::to_string(n) + " nodes");
                 for (int j = 1; j <= n; ++j)
                   check_node_reference(k + i, v[j]);
               }
@@ -308,8 +326,9 @@ namespace glissade
             k += 1 + count;
           }
         if (k != element_end || counted != n_elements)
-          refuse(k, "the element blocks do not add up to the $Elements "
-                    "header (a stray or missing line?)");
+          refuse(k,
+                 "the element blocks do not add up to the $Elements "
+                 "header (a stray or missing line?)");
       }
     }
 
@@ -322,33 +341,33 @@ namespace glissade
      * gives one two is refused with the face (2.2) or curve (4.1) named.
      */
     void
-    check_one_name_per_face(const std::vector<std::string> &lines,
-                            const bool                      version_2,
+    check_one_name_per_face(const std::vector<std::string>   &lines,
+                            const bool                        version_2,
                             const std::map<int, std::string> &group_name,
-                            const std::string              &file,
-                            const std::string              &entry)
+                            const std::string                &file,
+                            const std::string                &entry)
     {
       const auto name_of = [&](const int tag) {
         const auto it = group_name.find(tag);
         return it == group_name.end() ? "physical tag " + std::to_string(tag) :
                                         "'" + it->second + "'";
       };
-      const auto refuse = [&](const std::string &what, const int a,
-                              const int b) {
-        throw InputError(entry,
-                         "'" + file + "': " + what +
-                           " belongs to two physical groups, " + name_of(a) +
-                           " and " + name_of(b) +
-                           "; glissade gives each boundary face one name. "
-                           "Keep one group per curve (list several names in "
-                           "the .prm entry instead, e.g. 'Fixed = bottom: y; "
-                           "side: x')");
-      };
+      const auto refuse =
+        [&](const std::string &what, const int a, const int b) {
+          throw InputError(entry,
+                           "'" + file + "': " + what +
+                             " belongs to two physical groups, " + name_of(a) +
+                             " and " + name_of(b) +
+                             "; glissade gives each boundary face one name. "
+                             "Keep one group per curve (list several names in "
+                             "the .prm entry instead, e.g. 'Fixed = bottom: y; "
+                             "side: x')");
+        };
       if (version_2)
         {
           // "id type n_tags physical elementary ... nodes"; type 1: a line.
           std::map<std::pair<long, long>, int> face_group;
-          std::size_t begin = 0;
+          std::size_t                          begin = 0;
           while (begin < lines.size() && lines[begin] != "$Elements")
             ++begin;
           for (std::size_t k = begin + 2;
@@ -371,8 +390,8 @@ namespace glissade
               const auto [it, inserted] =
                 face_group.emplace(key, static_cast<int>(physical));
               if (!inserted && it->second != physical)
-                refuse("the boundary line between nodes " +
-                         std::to_string(a) + " and " + std::to_string(b),
+                refuse("the boundary line between nodes " + std::to_string(a) +
+                         " and " + std::to_string(b),
                        it->second,
                        static_cast<int>(physical));
             }
@@ -487,9 +506,9 @@ namespace glissade
     /** What the elements of a file are, counted before deal.II reads it. */
     struct ElementCensus
     {
-      long long                            surface_elements = 0;
-      long long                            triangles        = 0;
-      long long                            second_order     = 0;
+      long long                           surface_elements = 0;
+      long long                           triangles        = 0;
+      long long                           second_order     = 0;
       std::vector<SecondOrderEdges::Edge> curved_edges;
     };
 
@@ -542,7 +561,7 @@ namespace glissade
       ElementCensus census;
       // The nodes of one element (corners first, Gmsh's order); returns
       // how many to keep.
-      const auto visit = [&](const long long type,
+      const auto visit = [&](const long long               type,
                              const std::vector<long long> &nodes) -> int {
         if (type == 2 || type == 9)
           ++census.triangles;
@@ -583,7 +602,8 @@ namespace glissade
             read_integers(lines[k], v);
             const std::size_t first_node = 3 + v[2];
             const int         keep =
-              visit(v[1], std::vector<long long>(v.begin() + first_node, v.end()));
+              visit(v[1],
+                    std::vector<long long>(v.begin() + first_node, v.end()));
             if (first_order_type(v[1]) != v[1])
               {
                 v[1]     = first_order_type(v[1]);
@@ -665,9 +685,8 @@ namespace glissade
               if (tag < 0 || q0 == std::string::npos || q1 <= q0)
                 continue;
               name = name.substr(q0 + 1, q1 - q0 - 1);
-              if (dimension == 1 &&
-                  static_cast<unsigned int>(tag) <
-                    numbers::internal_face_boundary_id)
+              if (dimension == 1 && static_cast<unsigned int>(tag) <
+                                      numbers::internal_face_boundary_id)
                 labels.boundaries[name] = static_cast<types::boundary_id>(tag);
               if (dimension == 2 &&
                   static_cast<unsigned int>(tag) < numbers::invalid_material_id)

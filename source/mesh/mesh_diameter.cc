@@ -28,12 +28,15 @@ namespace glissade
 
     // Their convex hull (Andrew's monotone chain). A vertex on a hull edge
     // is dropped: no distance from it exceeds both of the edge's ends'.
-    std::sort(points.begin(), points.end(), [](const Point<2> &a, const Point<2> &b) {
-      return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
-    });
-    const auto turn = [](const Point<2> &o, const Point<2> &a, const Point<2> &b) {
-      return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-    };
+    std::sort(points.begin(),
+              points.end(),
+              [](const Point<2> &a, const Point<2> &b) {
+                return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+              });
+    const auto turn =
+      [](const Point<2> &o, const Point<2> &a, const Point<2> &b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+      };
     std::vector<Point<2>> hull(2 * points.size());
     std::size_t           k = 0;
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -44,7 +47,8 @@ namespace glissade
       }
     for (std::size_t i = points.size() - 1, lower = k + 1; i > 0; --i)
       {
-        while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.)
+        while (k >= lower &&
+               turn(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.)
           --k;
         hull[k++] = points[i - 1];
       }

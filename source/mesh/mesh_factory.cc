@@ -27,7 +27,7 @@ namespace glissade
                       Triangulation<2>      &triangulation,
                       const std::string     &where)
   {
-    MeshLabels labels;
+    MeshLabels     labels;
     BoundaryNames &names = labels.boundaries;
     if (description.type == "rectangle")
       names = create_rectangle(description.corner_1,
@@ -84,10 +84,12 @@ namespace glissade
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
-            faces.emplace_back(cell->face(f)->vertex(0), cell->face(f)->vertex(1));
+            faces.emplace_back(cell->face(f)->vertex(0),
+                               cell->face(f)->vertex(1));
             length += cell->face(f)->measure();
             for (const unsigned int v : {0u, 1u})
-              vertices[cell->face(f)->vertex_index(v)] = cell->face(f)->vertex(v);
+              vertices[cell->face(f)->vertex_index(v)] =
+                cell->face(f)->vertex(v);
           }
     if (faces.empty())
       return;
@@ -101,10 +103,10 @@ namespace glissade
       grid[key(p[0], p[1])].push_back(p);
     for (const auto &[a, b] : faces)
       {
-        const Tensor<1, 2> d     = b - a;
-        const double       d2    = d.norm_square();
-        const auto         low   = key(std::min(a[0], b[0]), std::min(a[1], b[1]));
-        const auto         high  = key(std::max(a[0], b[0]), std::max(a[1], b[1]));
+        const Tensor<1, 2> d  = b - a;
+        const double       d2 = d.norm_square();
+        const auto low        = key(std::min(a[0], b[0]), std::min(a[1], b[1]));
+        const auto high       = key(std::max(a[0], b[0]), std::max(a[1], b[1]));
         for (long i = low.first; i <= high.first; ++i)
           for (long j = low.second; j <= high.second; ++j)
             {
@@ -115,14 +117,14 @@ namespace glissade
                 {
                   const double s = (p - a) * d / d2;
                   const double off =
-                    std::abs(d[0] * (p - a)[1] - d[1] * (p - a)[0]) / std::sqrt(d2);
+                    std::abs(d[0] * (p - a)[1] - d[1] * (p - a)[0]) /
+                    std::sqrt(d2);
                   if (s > 1e-8 && s < 1. - 1e-8 && off < 1e-10 * std::sqrt(d2))
                     {
                       std::ostringstream message;
                       message << "the node at (" << p[0] << ", " << p[1]
-                              << ") lies inside the edge from (" << a[0]
-                              << ", " << a[1] << ") to (" << b[0] << ", "
-                              << b[1]
+                              << ") lies inside the edge from (" << a[0] << ", "
+                              << a[1] << ") to (" << b[0] << ", " << b[1]
                               << ") without being one of its ends (a "
                                  "hanging node): the mesh must be conforming, "
                                  "or that edge would open";
@@ -155,13 +157,12 @@ namespace glissade
         const double scale = std::pow(cell->diameter(), 2);
         for (const auto &[along_xi, along_eta] : corners)
           {
-            const double det = along_xi[0] * along_eta[1] -
-                               along_xi[1] * along_eta[0];
+            const double det =
+              along_xi[0] * along_eta[1] - along_xi[1] * along_eta[0];
             if (!(det > 1e-12 * scale))
               {
                 std::ostringstream message;
-                message << "cell " << cell->active_cell_index()
-                        << " (vertices";
+                message << "cell " << cell->active_cell_index() << " (vertices";
                 for (const unsigned int i : {0u, 1u, 3u, 2u})
                   message << " (" << v(i)[0] << ", " << v(i)[1] << ")";
                 message << ") is "
@@ -185,11 +186,8 @@ namespace glissade
   {
     // colorize = true numbers the sides 0 (x = x0), 1 (x = x1), 2 (y = y0)
     // and 3 (y = y1).
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              description.subdivisions,
-                                              lower_left,
-                                              upper_right,
-                                              true);
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation, description.subdivisions, lower_left, upper_right, true);
     return {{"left", 0}, {"right", 1}, {"bottom", 2}, {"top", 3}};
   }
 
@@ -218,9 +216,9 @@ namespace glissade
           {
             const double r =
               r_in + (r_out - r_in) * double(j) / double(n_through);
-            vertices.push_back(description.center +
-                               Tensor<1, 2>({r * std::cos(theta),
-                                             r * std::sin(theta)}));
+            vertices.push_back(
+              description.center +
+              Tensor<1, 2>({r * std::cos(theta), r * std::sin(theta)}));
           }
       }
 
@@ -262,10 +260,8 @@ namespace glissade
                 const Tensor<1, 2> e0({std::cos(theta_0), std::sin(theta_0)});
                 const Tensor<1, 2> e1({std::cos(theta_1), std::sin(theta_1)});
                 const Tensor<1, 2> direction = d / d.norm();
-                face->set_boundary_id((direction - e0).norm() <
-                                          (direction - e1).norm() ?
-                                        2 :
-                                        3);
+                face->set_boundary_id(
+                  (direction - e0).norm() < (direction - e1).norm() ? 2 : 3);
               }
           }
 

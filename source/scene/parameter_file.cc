@@ -66,15 +66,14 @@ namespace glissade
     expand(const std::string &filename, std::vector<std::string> &stack)
     {
       namespace fs = std::filesystem;
-      std::error_code error;
+      std::error_code   error;
       const std::string canonical =
         fs::weakly_canonical(filename, error).string();
       for (const auto &open : stack)
         if (open == canonical)
           {
             stack.push_back(canonical);
-            throw InputError(filename,
-                             "includes itself: " + chain_of(stack));
+            throw InputError(filename, "includes itself: " + chain_of(stack));
           }
       if (stack.size() >= deepest_include)
         throw InputError(filename,

@@ -106,21 +106,24 @@ namespace glissade
       for (const auto &e : expressions)
         {
           for (std::size_t i = 0; i < e.size(); ++i)
-            if (e[i] == '=' && (i == 0 || std::string("<>!=").find(e[i - 1]) ==
-                                            std::string::npos) &&
+            if (e[i] == '=' &&
+                (i == 0 ||
+                 std::string("<>!=").find(e[i - 1]) == std::string::npos) &&
                 (i + 1 == e.size() || e[i + 1] != '='))
               throw InputError(where,
-                               "'" + e + "' assigns with '=': an expression "
-                                         "gives a value (compare with '==')");
+                               "'" + e +
+                                 "' assigns with '=': an expression "
+                                 "gives a value (compare with '==')");
           if (e.find("rand") != std::string::npos)
             throw InputError(where,
-                             "'" + e + "' uses rand(): boundary data must be "
-                                       "the same in every run");
+                             "'" + e +
+                               "' uses rand(): boundary data must be "
+                               "the same in every run");
         }
       // deal.II's parser prints muparser's diagnosis to std::cerr before it
       // throws; the user gets it once, in the InputError below.
-      std::ostringstream   diagnosis;
-      std::streambuf      *standard_error = std::cerr.rdbuf(diagnosis.rdbuf());
+      std::ostringstream diagnosis;
+      std::streambuf    *standard_error = std::cerr.rdbuf(diagnosis.rdbuf());
       struct Restore
       {
         std::streambuf *buffer;
@@ -157,8 +160,8 @@ namespace glissade
       const auto parts = text::split_top_level(text_value, ',');
       if (parts.size() != 2)
         throw InputError(where,
-                         "expected two coordinates 'x, y', got '" +
-                           text_value + "'");
+                         "expected two coordinates 'x, y', got '" + text_value +
+                           "'");
       // Every character must belong to the number ("0.5abc" and "0.5*t"
       // were read as 0.5), and the number must be finite and small enough
       // that squared distances do not overflow.
@@ -170,8 +173,8 @@ namespace glissade
           x[i]                   = std::strtod(part.c_str(), &end);
           if (part.empty() || *end != '\0')
             throw InputError(where,
-                             "cannot read coordinates '" + text_value +
-                               "': '" + part + "' is not a number");
+                             "cannot read coordinates '" + text_value + "': '" +
+                               part + "' is not a number");
           if (!std::isfinite(x[i]) || std::abs(x[i]) > 1e100)
             throw InputError(where,
                              "coordinates '" + text_value +
@@ -207,8 +210,10 @@ namespace glissade
                                          "") +
                            ", not '" + c + "'");
       item.all_derivatives = (c == "all");
-      item.x_component = item.all_derivatives || (c.find('x') != std::string::npos);
-      item.y_component = item.all_derivatives || (c.find('y') != std::string::npos);
+      item.x_component =
+        item.all_derivatives || (c.find('x') != std::string::npos);
+      item.y_component =
+        item.all_derivatives || (c.find('y') != std::string::npos);
     }
 
     /** Splits "a: b: c; d: e" into items and fields, checking the count. */
@@ -226,8 +231,8 @@ namespace glissade
           const auto fields = text::split_top_level(item, ':');
           if (fields.size() != n_fields)
             throw InputError(where,
-                             "cannot read '" + item + "': expected '" +
-                               syntax + "'");
+                             "cannot read '" + item + "': expected '" + syntax +
+                               "'");
           items.push_back(fields);
         }
       return items;
@@ -240,8 +245,10 @@ namespace glissade
      * naming `where`/entry, with `hint` after the complaint.
      */
     double
-    number_or_inherited(TrackedParameters &prm, const std::string &entry,
-                        const double inherited, const std::string &where,
+    number_or_inherited(TrackedParameters &prm,
+                        const std::string &entry,
+                        const double       inherited,
+                        const std::string &where,
                         const std::string &hint = "")
     {
       const std::string value = text::trim(prm.get(entry));
@@ -268,8 +275,8 @@ namespace glissade
                   const std::string              &source)
     {
       ContactDescription c;
-      c.name  = name;
-      c.entry = source + ": Contact " + name;
+      c.name            = name;
+      c.entry           = source + ": Contact " + name;
       c.slave_body      = prm.get("Slave body");
       c.slave_boundary  = prm.get("Slave boundary");
       c.master_body     = prm.get("Master body");
@@ -278,14 +285,13 @@ namespace glissade
       c.force_transfer  = prm.get("Force transfer");
       {
         const std::string rule = prm.get("Faceted vertex rule");
-        c.vertex_rule =
-          rule == "closest point" ?
-            ContactDescription::VertexRule::closest_point :
-          rule == "vertex normal" ?
-            ContactDescription::VertexRule::vertex_normal :
-            ContactDescription::VertexRule::kept_segment;
+        c.vertex_rule          = rule == "closest point" ?
+                                   ContactDescription::VertexRule::closest_point :
+                                 rule == "vertex normal" ?
+                                   ContactDescription::VertexRule::vertex_normal :
+                                   ContactDescription::VertexRule::kept_segment;
       }
-      c.alert_distance  = prm.get_double("Alert distance");
+      c.alert_distance = prm.get_double("Alert distance");
       if (prm.get("Frame update") == "increment")
         throw InputError(
           c.entry + "/Frame update",
@@ -294,18 +300,21 @@ namespace glissade
           "frame is updated at every Newton iteration and converges "
           "quadratically in the true frame (doc/contact.md); delete this "
           "line");
-      c.friction        = prm.get_double("Friction coefficient");
+      c.friction = prm.get_double("Friction coefficient");
       // A pair's own value of a Contact solver entry (old scenes)
       // replaces the section's.
       const auto solver_entry = [&](const std::string &entry,
                                     const double       section_value) {
-        return number_or_inherited(prm, entry, section_value, c.entry,
+        return number_or_inherited(prm,
+                                   entry,
+                                   section_value,
+                                   c.entry,
                                    " (this entry is kept for old scenes: set "
-                                   "Contact solver/" + entry +
-                                     " instead, once for all pairs)");
+                                   "Contact solver/" +
+                                     entry + " instead, once for all pairs)");
       };
-      c.beta      = solver_entry("Beta", solver.beta);
-      c.tolerance = solver_entry("Tolerance", solver.tolerance);
+      c.beta              = solver_entry("Beta", solver.beta);
+      c.tolerance         = solver_entry("Tolerance", solver.tolerance);
       const double sweeps = solver_entry("Maximum sweeps", solver.max_sweeps);
       if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
         throw InputError(c.entry + "/Maximum sweeps",
@@ -322,9 +331,9 @@ namespace glissade
                            "sharp to converge in double precision; such "
                            "a contact sticks for any load, so use 100");
       prm.enter_subsection("Obstacle");
-      c.obstacle       = prm.get("Type");
-      c.obstacle_point = parse_coordinates(prm.get("Point"),
-                                           c.entry + "/Obstacle/Point");
+      c.obstacle = prm.get("Type");
+      c.obstacle_point =
+        parse_coordinates(prm.get("Point"), c.entry + "/Obstacle/Point");
       const Point<2> normal =
         parse_coordinates(prm.get("Normal"), c.entry + "/Obstacle/Normal");
       c.obstacle_normal = normal;
@@ -371,13 +380,13 @@ namespace glissade
     {
       MeshDescription mesh;
       prm.enter_subsection("Mesh");
-      mesh.type         = prm.get("Type");
-      mesh.corner_1     = parse_coordinates(prm.get("Corner 1"),
-                                        where + "/Mesh/Corner 1");
-      mesh.corner_2     = parse_coordinates(prm.get("Corner 2"),
-                                        where + "/Mesh/Corner 2");
-      mesh.center       = parse_coordinates(prm.get("Center"),
-                                      where + "/Mesh/Center");
+      mesh.type = prm.get("Type");
+      mesh.corner_1 =
+        parse_coordinates(prm.get("Corner 1"), where + "/Mesh/Corner 1");
+      mesh.corner_2 =
+        parse_coordinates(prm.get("Corner 2"), where + "/Mesh/Corner 2");
+      mesh.center =
+        parse_coordinates(prm.get("Center"), where + "/Mesh/Center");
       mesh.side         = prm.get_double("Side");
       mesh.inner_radius = prm.get_double("Inner radius");
       mesh.outer_radius = prm.get_double("Outer radius");
@@ -398,9 +407,9 @@ namespace glissade
           !(mesh.outer_radius > mesh.inner_radius && mesh.inner_radius > 0))
         throw InputError(where + "/Mesh/Outer radius",
                          "rings need 0 < Inner radius < Outer radius");
-      if (mesh.type == "half ring" && !(mesh.end_angle > mesh.start_angle &&
-                                        mesh.end_angle - mesh.start_angle <
-                                          360.))
+      if (mesh.type == "half ring" &&
+          !(mesh.end_angle > mesh.start_angle &&
+            mesh.end_angle - mesh.start_angle < 360.))
         throw InputError(where + "/Mesh/End angle",
                          "must be larger than Start angle, by less than 360");
       if (mesh.type != "half ring" &&
@@ -468,17 +477,19 @@ namespace glissade
       // Each region: its own entries, the body's where it sets none.
       for (const std::string &name : regions)
         {
-          const std::string subsection = "Material " + name;
+          const std::string         subsection = "Material " + name;
           MaterialRegionDescription region;
           region.name = name;
           prm.enter_subsection(subsection);
           region.law           = text::trim(prm.get("Law"));
-          region.young_modulus =
-            number_or_inherited(prm, "Young modulus", material.young_modulus,
-                                where + "/" + subsection);
-          region.poisson_ratio =
-            number_or_inherited(prm, "Poisson ratio", material.poisson_ratio,
-                                where + "/" + subsection);
+          region.young_modulus = number_or_inherited(prm,
+                                                     "Young modulus",
+                                                     material.young_modulus,
+                                                     where + "/" + subsection);
+          region.poisson_ratio = number_or_inherited(prm,
+                                                     "Poisson ratio",
+                                                     material.poisson_ratio,
+                                                     where + "/" + subsection);
           prm.leave_subsection();
           if (region.law.empty())
             region.law = material.law;
@@ -501,9 +512,8 @@ namespace glissade
       prm.enter_subsection("Boundary conditions");
       const std::string where = where_body + "/Boundary conditions/";
 
-      for (const auto &f :
-           split_items(prm.get("Fixed"), 2, where + "Fixed",
-                       "location: components"))
+      for (const auto &f : split_items(
+             prm.get("Fixed"), 2, where + "Fixed", "location: components"))
         {
           DirichletDescription item;
           item.kind     = DirichletDescription::Kind::fixed;
@@ -513,10 +523,10 @@ namespace glissade
           body.dirichlet.push_back(item);
         }
 
-      for (const auto &f :
-           split_items(prm.get("Prescribed displacement"), 3,
-                       where + "Prescribed displacement",
-                       "location: components: expressions"))
+      for (const auto &f : split_items(prm.get("Prescribed displacement"),
+                                       3,
+                                       where + "Prescribed displacement",
+                                       "location: components: expressions"))
         {
           DirichletDescription item;
           item.kind     = DirichletDescription::Kind::displacement;
@@ -528,16 +538,17 @@ namespace glissade
             (item.x_component ? 1 : 0) + (item.y_component ? 1 : 0);
           if (item.expressions.size() != n_expected)
             throw InputError(item.entry,
-                             "'" + f[2] + "' must give one expression per "
-                             "component");
+                             "'" + f[2] +
+                               "' must give one expression per "
+                               "component");
           check_expressions(item.expressions, item.entry);
           body.dirichlet.push_back(item);
         }
 
-      for (const auto &f :
-           split_items(prm.get("Prescribed rotation"), 3,
-                       where + "Prescribed rotation",
-                       "location: cx, cy: angle"))
+      for (const auto &f : split_items(prm.get("Prescribed rotation"),
+                                       3,
+                                       where + "Prescribed rotation",
+                                       "location: cx, cy: angle"))
         {
           DirichletDescription item;
           item.kind             = DirichletDescription::Kind::rotation;
@@ -560,12 +571,14 @@ namespace glissade
             // Cartesian components.
             const auto both_x = [](const DirichletDescription &d) {
               return d.kind == DirichletDescription::Kind::rotation ||
-                     d.direction != DirichletDescription::Direction::cartesian ||
+                     d.direction !=
+                       DirichletDescription::Direction::cartesian ||
                      d.x_component;
             };
             const auto both_y = [](const DirichletDescription &d) {
               return d.kind == DirichletDescription::Kind::rotation ||
-                     d.direction != DirichletDescription::Direction::cartesian ||
+                     d.direction !=
+                       DirichletDescription::Direction::cartesian ||
                      d.y_component;
             };
             if (text::trim(a.location) == text::trim(b.location) &&
@@ -579,10 +592,10 @@ namespace glissade
                                  "Dirichlet datum");
           }
 
-      const auto add_neumann = [&](const std::string              &entry,
+      const auto add_neumann = [&](const std::string             &entry,
                                    const NeumannDescription::Kind kind,
-                                   const unsigned int n_expressions,
-                                   const std::string &syntax) {
+                                   const unsigned int             n_expressions,
+                                   const std::string             &syntax) {
         for (const auto &f :
              split_items(prm.get(entry), 2, where + entry, syntax))
           {
@@ -595,7 +608,7 @@ namespace glissade
               throw InputError(item.entry,
                                "'" + f[1] + "': expected '" + syntax + "'");
             check_expressions(item.expressions, item.entry);
-            double x, y;
+            double     x, y;
             const bool is_point =
               text::parse_point_location(item.location, x, y);
             if (kind == NeumannDescription::Kind::point_load && !is_point)
@@ -627,7 +640,6 @@ namespace glissade
                   "boundary: p");
       prm.leave_subsection();
     }
-
 
 
 
@@ -712,7 +724,8 @@ namespace glissade
       scene.contact_solver.max_sweeps = prm.get_integer("Maximum sweeps");
       prm.leave_subsection();
       if (!(scene.contact_solver.beta > 0. && scene.contact_solver.beta < 2.))
-        throw InputError(source + ": Contact solver/Beta", "must lie in (0, 2)");
+        throw InputError(source + ": Contact solver/Beta",
+                         "must lie in (0, 2)");
       if (!(scene.contact_solver.tolerance > 0.))
         throw InputError(source + ": Contact solver/Tolerance",
                          "must be > 0: the local solver's residual is never "
@@ -721,8 +734,8 @@ namespace glissade
     for (const auto &name : contact_names)
       check_part([&]() {
         prm.enter_subsection("Contact " + name);
-        scene.contacts.push_back(parse_contact(
-          prm, name, body_names, scene.contact_solver, source));
+        scene.contacts.push_back(
+          parse_contact(prm, name, body_names, scene.contact_solver, source));
         prm.leave_subsection();
       });
     for (const auto &name : body_names)
@@ -746,7 +759,8 @@ namespace glissade
         // run would end on an inverted element far from the cause.
         bool in_contact = false;
         for (const auto &c : scene.contacts)
-          in_contact = in_contact || c.slave_body == name || c.master_body == name;
+          in_contact =
+            in_contact || c.slave_body == name || c.master_body == name;
         if (body.dirichlet.empty() && !in_contact)
           check_part([&]() {
             throw InputError(where + "/Boundary conditions",
@@ -770,8 +784,9 @@ namespace glissade
       catch (const std::exception &)
         {
           throw InputError(source + ": Load program/Stage end times",
-                           "'" + t + "' is not a double-precision number "
-                                     "(out of range?)");
+                           "'" + t +
+                             "' is not a double-precision number "
+                             "(out of range?)");
         }
     scene.load_program.stage_increments.clear();
     for (const auto &n :
@@ -780,8 +795,9 @@ namespace glissade
         const long value = std::strtol(n.c_str(), nullptr, 10);
         if (value < 1 || value > 100000000)
           throw InputError(source + ": Load program/Stage increments",
-                           "'" + n + "' is not a number of increments "
-                                     "between 1 and 1e8");
+                           "'" + n +
+                             "' is not a number of increments "
+                             "between 1 and 1e8");
         scene.load_program.stage_increments.push_back(value);
       }
     scene.load_program.max_cut_back_depth =
@@ -801,7 +817,7 @@ namespace glissade
     });
 
     prm.enter_subsection("Newton");
-    scene.newton.max_iterations = prm.get_integer("Maximum iterations");
+    scene.newton.max_iterations     = prm.get_integer("Maximum iterations");
     scene.newton.residual_tolerance = prm.get_double("Residual tolerance");
     scene.newton.displacement_tolerance =
       prm.get_double("Displacement tolerance");
@@ -817,8 +833,8 @@ namespace glissade
     });
 
     prm.enter_subsection("Output");
-    scene.output.directory    = prm.get("Directory");
-    scene.output.vtu_interval = prm.get_integer("VTU interval");
+    scene.output.directory       = prm.get("Directory");
+    scene.output.vtu_interval    = prm.get_integer("VTU interval");
     scene.output.vtu_compression = prm.get("VTU compression");
     scene.output.initial_state   = prm.get_bool("Initial state");
     scene.output.contact_table_interval =
@@ -826,8 +842,8 @@ namespace glissade
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))
       if (!item.empty())
         scene.output.history.push_back(item);
-    scene.output.progress = prm.get_bool("Progress");
-    scene.output.plots    = prm.get_bool("Plots");
+    scene.output.progress    = prm.get_bool("Progress");
+    scene.output.plots       = prm.get_bool("Plots");
     const std::string curves = prm.get("Plot curves");
     prm.leave_subsection();
     check_part([&]() {

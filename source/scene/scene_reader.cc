@@ -58,21 +58,37 @@ namespace glissade
           "the .msh file File, whose named physical lines become boundaries. "
           "Must be set: it is how a body's subsection is known to exist.",
           true);
-        prm.declare_entry("Corner 1", "0, 0", Patterns::Anything(),
+        prm.declare_entry("Corner 1",
+                          "0, 0",
+                          Patterns::Anything(),
                           "rectangle: lower left corner 'x, y'.");
-        prm.declare_entry("Corner 2", "1, 1", Patterns::Anything(),
+        prm.declare_entry("Corner 2",
+                          "1, 1",
+                          Patterns::Anything(),
                           "rectangle: upper right corner 'x, y'.");
-        prm.declare_entry("Center", "0, 0", Patterns::Anything(),
+        prm.declare_entry("Center",
+                          "0, 0",
+                          Patterns::Anything(),
                           "square, rings: centre 'x, y'.");
-        prm.declare_entry("Side", "1", Patterns::Double(0.),
+        prm.declare_entry("Side",
+                          "1",
+                          Patterns::Double(0.),
                           "square: side length.");
-        prm.declare_entry("Inner radius", "0.5", Patterns::Double(0.),
+        prm.declare_entry("Inner radius",
+                          "0.5",
+                          Patterns::Double(0.),
                           "rings: inner radius.");
-        prm.declare_entry("Outer radius", "1", Patterns::Double(0.),
+        prm.declare_entry("Outer radius",
+                          "1",
+                          Patterns::Double(0.),
                           "rings: outer radius.");
-        prm.declare_entry("Start angle", "0", Patterns::Double(),
+        prm.declare_entry("Start angle",
+                          "0",
+                          Patterns::Double(),
                           "half ring: angle of the 'start' end, in degrees.");
-        prm.declare_entry("End angle", "180", Patterns::Double(),
+        prm.declare_entry("End angle",
+                          "180",
+                          Patterns::Double(),
                           "half ring: angle of the 'end' end, in degrees.");
         prm.declare_entry(
           "Subdivisions",
@@ -80,7 +96,9 @@ namespace glissade
           Patterns::List(Patterns::Integer(1), 2, 2, ","),
           "Elements along and across: (x, y) for rectangles and squares, "
           "(circumference, thickness) for rings.");
-        prm.declare_entry("File", "", Patterns::Anything(),
+        prm.declare_entry("File",
+                          "",
+                          Patterns::Anything(),
                           "gmsh: path of the .msh file (relative paths are "
                           "taken from the .prm file's folder).");
         prm.declare_entry(
@@ -93,30 +111,35 @@ namespace glissade
       prm.leave_subsection();
 
       prm.enter_subsection("Element");
-      prm.declare_entry("Space",
-                        "q1",
-                        Patterns::Selection(
-                          ElementSpaceRegistry::names_as_pattern()),
-                        "The element space by name: " +
-                          ElementSpaceRegistry::documentation());
+      prm.declare_entry(
+        "Space",
+        "q1",
+        Patterns::Selection(ElementSpaceRegistry::names_as_pattern()),
+        "The element space by name: " + ElementSpaceRegistry::documentation());
       prm.leave_subsection();
 
       prm.enter_subsection("Material");
       {
         prm.declare_entry("Law",
                           "neo-Hookean",
-                          Patterns::Selection(text::joined(
-                            Material::law_names(), "|")),
+                          Patterns::Selection(
+                            text::joined(Material::law_names(), "|")),
                           "Hyperelastic law (total Lagrangian).");
-        prm.declare_entry("Young modulus", "1", Patterns::Double(),
+        prm.declare_entry("Young modulus",
+                          "1",
+                          Patterns::Double(),
                           "E in Pa, > 0.");
-        prm.declare_entry("Poisson ratio", "0.3", Patterns::Double(),
+        prm.declare_entry("Poisson ratio",
+                          "0.3",
+                          Patterns::Double(),
                           "nu, in (-1, 0.5).");
         prm.declare_entry("Hypothesis",
                           "plane strain",
                           Patterns::Selection("plane strain|plane stress"),
                           "Planar hypothesis.");
-        prm.declare_entry("Thickness", "1", Patterns::Double(),
+        prm.declare_entry("Thickness",
+                          "1",
+                          Patterns::Double(),
                           "Out-of-plane thickness (m), > 0: forces are per "
                           "this thickness.");
         prm.declare_entry(
@@ -202,25 +225,34 @@ namespace glissade
     void
     declare_contact(ParameterHandler &prm)
     {
-      prm.declare_entry("Slave body", "", Patterns::Anything(),
+      prm.declare_entry("Slave body",
+                        "",
+                        Patterns::Anything(),
                         "The body whose boundary nodes are the slave nodes.");
-      prm.declare_entry("Slave boundary", "", Patterns::Anything(),
-                        "The declared contact area on the slave body: a boundary "
-                        "name, or several separated by commas "
-                        "('bottom, left, right'), whose nodes form one set.");
-      prm.declare_entry("Master body", "rigid", Patterns::Anything(),
+      prm.declare_entry(
+        "Slave boundary",
+        "",
+        Patterns::Anything(),
+        "The declared contact area on the slave body: a boundary "
+        "name, or several separated by commas "
+        "('bottom, left, right'), whose nodes form one set.");
+      prm.declare_entry("Master body",
+                        "rigid",
+                        Patterns::Anything(),
                         "The body that carries the master surface, or "
                         "'rigid' for an analytic obstacle (subsection "
                         "Obstacle).");
-      prm.declare_entry("Master boundary", "", Patterns::Anything(),
+      prm.declare_entry("Master boundary",
+                        "",
+                        Patterns::Anything(),
                         "The declared contact area on the master body.");
-      prm.declare_entry(
-        "Surface",
-        "faceted",
-        Patterns::Selection(
-          SurfaceRegistry::names_as_pattern(SurfaceRegistry::Kind::deformable)),
-        "Representation of the master surface: " +
-          SurfaceRegistry::documentation(SurfaceRegistry::Kind::deformable));
+      prm.declare_entry("Surface",
+                        "faceted",
+                        Patterns::Selection(SurfaceRegistry::names_as_pattern(
+                          SurfaceRegistry::Kind::deformable)),
+                        "Representation of the master surface: " +
+                          SurfaceRegistry::documentation(
+                            SurfaceRegistry::Kind::deformable));
       prm.declare_entry(
         "Force transfer",
         "segment",
@@ -244,7 +276,9 @@ namespace glissade
         "segment leaving it: the only rule objective under a rigid turn, "
         "but a node that must slide off a vertex with friction does not "
         "converge. Other surfaces ignore this entry.");
-      prm.declare_entry("Alert distance", "0", Patterns::Double(0.),
+      prm.declare_entry("Alert distance",
+                        "0",
+                        Patterns::Double(0.),
                         "Slave nodes farther than this from the master at the "
                         "start of an increment start it inactive; they join "
                         "the condensed problem only if an iteration would "
@@ -257,7 +291,9 @@ namespace glissade
         "Newton iteration, with the contact's own terms in the tangent. "
         "'increment' (the frame frozen over an increment) was removed and "
         "is refused with a message.");
-      prm.declare_entry("Friction coefficient", "0", Patterns::Double(0.),
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(0.),
                         "Coulomb's mu (0: frictionless).");
       // The local solver's settings belong to the scene (section Contact
       // solver): the active nodes of all pairs form one local problem.
@@ -266,25 +302,33 @@ namespace glissade
            {std::pair<const char *, const char *>{"Beta", "Beta"},
             {"Tolerance", "Tolerance"},
             {"Maximum sweeps", "Maximum sweeps"}})
-        prm.declare_entry(entry, "", Patterns::Anything(),
+        prm.declare_entry(entry,
+                          "",
+                          Patterns::Anything(),
                           std::string("Kept for old scenes: empty, or this "
                                       "pair's value of Contact solver/") +
                             owner +
                             ", which replaces the section's (every pair "
                             "that gives one must give the same).");
       prm.enter_subsection("Obstacle");
-      prm.declare_entry(
-        "Type",
-        "line",
-        Patterns::Selection(
-          SurfaceRegistry::names_as_pattern(SurfaceRegistry::Kind::rigid)),
-        SurfaceRegistry::documentation(SurfaceRegistry::Kind::rigid));
-      prm.declare_entry("Point", "0, 0", Patterns::Anything(),
+      prm.declare_entry("Type",
+                        "line",
+                        Patterns::Selection(SurfaceRegistry::names_as_pattern(
+                          SurfaceRegistry::Kind::rigid)),
+                        SurfaceRegistry::documentation(
+                          SurfaceRegistry::Kind::rigid));
+      prm.declare_entry("Point",
+                        "0, 0",
+                        Patterns::Anything(),
                         "line: a point on it; disk, hole: the centre.");
-      prm.declare_entry("Normal", "0, 1", Patterns::Anything(),
+      prm.declare_entry("Normal",
+                        "0, 1",
+                        Patterns::Anything(),
                         "line: the normal pointing out of the obstacle.");
       prm.declare_entry("Radius", "1", Patterns::Double(0.), "disk, hole.");
-      prm.declare_entry("Motion", "0, 0", Patterns::Anything(),
+      prm.declare_entry("Motion",
+                        "0, 0",
+                        Patterns::Anything(),
                         "Translation of the obstacle as expressions of t.");
       prm.leave_subsection();
     }
@@ -345,7 +389,8 @@ namespace glissade
       for (unsigned int i = 0; i < names.size(); ++i)
         for (unsigned int j = 0; j < i; ++j)
           if (names[i] == names[j])
-            throw InputError(entry, what + " '" + names[i] + "' is named twice");
+            throw InputError(entry,
+                             what + " '" + names[i] + "' is named twice");
     }
 
 
@@ -372,22 +417,23 @@ namespace glissade
     const std::vector<std::string>                        &contact_names,
     const std::map<std::string, std::vector<std::string>> &regions)
   {
-    prm.declare_entry("Study",
-                      "simulation",
-                      Patterns::Selection(
-                        "simulation|geometric|case1|case2|case3|friction|trade"),
-                      "simulation: run the scene below. geometric: the "
-                      "geometric study of the paper's section 3.3 (see "
-                      "prm/geometric_study.prm); case1, case2: the beam on a "
-                      "half ring and the square between two half rings "
-                      "(sections 4.1, 4.2; prm/case1_study.prm, "
-                      "prm/case2_study.prm); case3: the concentric rings "
-                      "of section 4.3 in several variants (see "
-                      "prm/case3_default.prm); friction: a scene for every "
-                      "master and friction coefficient "
-                      "(prm/case3_friction.prm); trade: time and dofs "
-                      "against accuracy (prm/trade_study.prm). A study's "
-                      "own entries replace these.");
+    prm.declare_entry(
+      "Study",
+      "simulation",
+      Patterns::Selection(
+        "simulation|geometric|case1|case2|case3|friction|trade"),
+      "simulation: run the scene below. geometric: the "
+      "geometric study of the paper's section 3.3 (see "
+      "prm/geometric_study.prm); case1, case2: the beam on a "
+      "half ring and the square between two half rings "
+      "(sections 4.1, 4.2; prm/case1_study.prm, "
+      "prm/case2_study.prm); case3: the concentric rings "
+      "of section 4.3 in several variants (see "
+      "prm/case3_default.prm); friction: a scene for every "
+      "master and friction coefficient "
+      "(prm/case3_friction.prm); trade: time and dofs "
+      "against accuracy (prm/trade_study.prm). A study's "
+      "own entries replace these.");
     prm.enter_subsection("Scene");
     prm.declare_entry("Bodies",
                       "body",
@@ -437,37 +483,55 @@ namespace glissade
     prm.leave_subsection();
 
     prm.enter_subsection("Newton");
-    prm.declare_entry("Maximum iterations", "25", Patterns::Integer(1),
+    prm.declare_entry("Maximum iterations",
+                      "25",
+                      Patterns::Integer(1),
                       "Newton iterations per increment before a cut-back.");
-    prm.declare_entry("Residual tolerance", "1e-9", Patterns::Double(0.),
+    prm.declare_entry("Residual tolerance",
+                      "1e-9",
+                      Patterns::Double(0.),
                       "Converged when |R| <= tol * max(|F_int|, |F_ext|) on "
                       "the free dofs...");
-    prm.declare_entry("Displacement tolerance", "1e-9", Patterns::Double(0.),
+    prm.declare_entry("Displacement tolerance",
+                      "1e-9",
+                      Patterns::Double(0.),
                       "...and |du| <= tol * |u| (tol * 1e-12 * the largest "
                       "body's diameter while u = 0).");
     prm.leave_subsection();
 
     prm.enter_subsection("Contact solver");
-    prm.declare_entry("Beta", "1", Patterns::Double(0.),
+    prm.declare_entry("Beta",
+                      "1",
+                      Patterns::Double(0.),
                       "Bi-potential parameter in (0, 2): rho_k = beta / "
                       "W_kk(nn) on a frictionless node, beta / the largest "
                       "eigenvalue of its 2x2 block W_kk with friction. The "
                       "active nodes of all contact pairs form one local "
                       "problem, solved with these settings.");
-    prm.declare_entry("Tolerance", "1e-10", Patterns::Double(0.),
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
                       "Relative tolerance of the local solver.");
-    prm.declare_entry("Maximum sweeps", "10000", Patterns::Integer(1),
+    prm.declare_entry("Maximum sweeps",
+                      "10000",
+                      Patterns::Integer(1),
                       "Gauss-Seidel sweeps of the local solver.");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    prm.declare_entry("Directory", "output", Patterns::Anything(),
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::Anything(),
                       "Where VTU/PVD, history.csv and summary.txt go "
                       "(relative paths: from the working directory).");
-    prm.declare_entry("VTU interval", "1", Patterns::Integer(0),
+    prm.declare_entry("VTU interval",
+                      "1",
+                      Patterns::Integer(0),
                       "Write a VTU every this many increments (0: only the "
                       "initial and final states).");
-    prm.declare_entry("Initial state", "true", Patterns::Bool(),
+    prm.declare_entry("Initial state",
+                      "true",
+                      Patterns::Bool(),
                       "Write the VTU files and contact tables of increment "
                       "0 (the reference configuration, no contact force); "
                       "false: only the increments that the intervals ask "
@@ -479,7 +543,9 @@ namespace glissade
                       "(zlib level 1), small (level 9, deal.II's default: "
                       "0.6 % smaller, written 5.6 times slower on the 160 x "
                       "16 rings), none (3.4 times larger).");
-    prm.declare_entry("Contact table interval", "0", Patterns::Integer(0),
+    prm.declare_entry("Contact table interval",
+                      "0",
+                      Patterns::Integer(0),
                       "Write contact-<pair>-<increment>.csv (every slave "
                       "node's gap, reaction, status) every this many "
                       "increments; 0: with the VTU files.");
@@ -492,9 +558,13 @@ namespace glissade
       "contact_force(pair) (total force on the slave and active nodes), "
       "contact_node(pair, point(x, y)) (r_n, r_t, |f|, gap of the slave node "
       "at that reference position).");
-    prm.declare_entry("Progress", "true", Patterns::Bool(),
+    prm.declare_entry("Progress",
+                      "true",
+                      Patterns::Bool(),
                       "Print one line per increment.");
-    prm.declare_entry("Plots", "false", Patterns::Bool(),
+    prm.declare_entry("Plots",
+                      "false",
+                      Patterns::Bool(),
                       "At the end of the run (or at a stop), draw PNGs "
                       "from the written files: history.png (every history "
                       "column against t, and the Newton iterations), and "
@@ -504,31 +574,33 @@ namespace glissade
                       "state, coloured by von Mises). "
                       "Needs Debian's /usr/bin/python3 with matplotlib; "
                       "without it the run says so and goes on.");
-    prm.declare_entry("Plot curves",
-                      "",
-                      Patterns::Anything(),
-                      "With Plots: curves.png, one panel per 'x column: y "
-                      "column' item (';'-separated), each a column of "
-                      "history.csv (or time), e.g. a force-displacement "
-                      "curve 'pad_uy_0_10: pad_Ry_top'. Checked, but drawn only with "
-                      "Plots = true.");
+    prm.declare_entry(
+      "Plot curves",
+      "",
+      Patterns::Anything(),
+      "With Plots: curves.png, one panel per 'x column: y "
+      "column' item (';'-separated), each a column of "
+      "history.csv (or time), e.g. a force-displacement "
+      "curve 'pad_uy_0_10: pad_Ry_top'. Checked, but drawn only with "
+      "Plots = true.");
     prm.leave_subsection();
 
     prm.enter_subsection("Checkpoint");
-    prm.declare_entry("Interval", "0", Patterns::Integer(0),
+    prm.declare_entry("Interval",
+                      "0",
+                      Patterns::Integer(0),
                       "Write <Output directory>/checkpoint.bin every this "
                       "many converged increments (0: never). 'glissade "
                       "scene.prm --restart' continues from it to the same "
                       "output as an uninterrupted run.");
-    prm.declare_entry("Stop after increment", "0", Patterns::Integer(0),
+    prm.declare_entry("Stop after increment",
+                      "0",
+                      Patterns::Integer(0),
                       "Write a checkpoint after this increment and stop "
                       "cleanly (0: run to the end): a long study in "
                       "batches of a queue's time limit.");
     prm.leave_subsection();
   }
-
-
-
 
 
 

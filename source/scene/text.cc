@@ -52,8 +52,7 @@ namespace glissade
       const std::string l = trim(location);
       if (l.rfind("point(", 0) != 0 || l.back() != ')')
         return false;
-      const auto coordinates =
-        split_top_level(l.substr(6, l.size() - 7), ',');
+      const auto coordinates = split_top_level(l.substr(6, l.size() - 7), ',');
       if (coordinates.size() != 2)
         return false;
       char *end = nullptr;

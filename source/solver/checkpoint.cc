@@ -2,18 +2,18 @@
 // starts from, written with Boost serialization, so that a run stopped
 // half-way continues to the same output files as an uninterrupted one.
 
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
-#include <boost/serialization/string.hpp>
-#include <boost/serialization/utility.hpp>
-#include <boost/serialization/vector.hpp>
-
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <fstream>
 
@@ -45,12 +45,16 @@ namespace glissade
     // Written: the totals so far (restored times plus this process's
     // TimerOutput sections); read: they become the restored times.
     RunStatistics totals = Archive::is_saving::value ? statistics() : stats;
-    archive &totals.increments &totals.newton_iterations &totals.cut_backs
-      &totals.assembly_seconds &totals.factorization_seconds
-        &totals.solve_seconds &totals.detection_seconds
-          &totals.surface_build_seconds &totals.compliance_seconds
-            &totals.local_solve_seconds &totals.output_seconds
-              &totals.checkpoint_seconds &totals.wall_seconds;
+    // (boost's archive operator, one line per group; clang-format would
+    // read 'archive &x' as a declaration and break the chain mid-name)
+    // clang-format off
+    archive & totals.increments & totals.newton_iterations & totals.cut_backs;
+    archive & totals.assembly_seconds & totals.factorization_seconds
+            & totals.solve_seconds & totals.detection_seconds
+            & totals.surface_build_seconds & totals.compliance_seconds
+            & totals.local_solve_seconds & totals.output_seconds
+            & totals.checkpoint_seconds & totals.wall_seconds;
+    // clang-format on
     if (Archive::is_loading::value)
       stats = totals;
     archive &pvd_records;
@@ -79,7 +83,7 @@ namespace glissade
           throw InputError(checkpoint_file(),
                            "contact pair '" + pair->name() +
                              "' has a different number of slave nodes");
-        archive &pair->nodes();
+        archive & pair->nodes();
       }
   }
 
@@ -92,10 +96,10 @@ namespace glissade
     AtomicFile         file(checkpoint_file());
     file.write_and_commit([&](std::ostream &out) {
       boost::archive::binary_oarchive archive(out);
-      std::string  format      = checkpoint_format;
-      std::string  fingerprint = scene.fingerprint;
-      unsigned int last        = increment;
-      archive     &format &fingerprint &last;
+      std::string                     format      = checkpoint_format;
+      std::string                     fingerprint = scene.fingerprint;
+      unsigned int                    last        = increment;
+      archive &format &fingerprint   &last;
       serialize_state(archive);
     });
   }
@@ -116,7 +120,7 @@ namespace glissade
       {
         boost::archive::binary_iarchive archive(in);
         std::string                     format, fingerprint;
-        archive &format;
+        archive                        &format;
         if (format != checkpoint_format)
           throw InputError(checkpoint_file(),
                            "is not a checkpoint of this version of glissade");

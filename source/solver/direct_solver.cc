@@ -56,7 +56,7 @@ namespace glissade
     // We hand it the rows as the columns of A^T and solve with A^T later.
     const SparsityPattern &sp = matrix.get_sparsity_pattern();
     const long             n  = matrix.m();
-    const bool same_pattern =
+    const bool             same_pattern =
       (&sp == pattern && row_start.size() == static_cast<size_t>(n + 1) &&
        static_cast<size_t>(row_start.back()) == matrix.n_nonzero_elements());
     if (!same_pattern)
@@ -65,7 +65,7 @@ namespace glissade
         column_index.resize(matrix.n_nonzero_elements());
         values.resize(matrix.n_nonzero_elements());
       }
-    long k = 0;
+    long                                 k = 0;
     std::vector<std::pair<long, double>> row;
     for (long i = 0; i < n; ++i)
       {
@@ -84,7 +84,7 @@ namespace glissade
           }
       }
     row_start[n] = k;
-    pattern = &sp;
+    pattern      = &sp;
     if (!same_pattern && symbolic != nullptr)
       umfpack_dl_free_symbolic(&symbolic);
 
@@ -122,15 +122,25 @@ namespace glissade
     Timer timer;
     if (symbolic == nullptr)
       {
-        check(umfpack_dl_symbolic(n, n, row_start.data(), column_index.data(),
-                                  values.data(), &symbolic, control, nullptr),
+        check(umfpack_dl_symbolic(n,
+                                  n,
+                                  row_start.data(),
+                                  column_index.data(),
+                                  values.data(),
+                                  &symbolic,
+                                  control,
+                                  nullptr),
               "symbolic analysis");
         symbolic_seconds += timer.wall_time();
         timer.restart();
       }
     free_numeric();
-    check(umfpack_dl_numeric(row_start.data(), column_index.data(),
-                             values.data(), symbolic, &numeric, control,
+    check(umfpack_dl_numeric(row_start.data(),
+                             column_index.data(),
+                             values.data(),
+                             symbolic,
+                             &numeric,
+                             control,
                              nullptr),
           "factorization");
     numeric_seconds += timer.wall_time();
@@ -160,9 +170,15 @@ namespace glissade
     umfpack_dl_defaults(control);
     control[UMFPACK_IRSTEP] = 0;
     solution.resize(x.size());
-    check(umfpack_dl_solve(UMFPACK_At, row_start.data(), column_index.data(),
-                           values.data(), solution.data(), x.begin(), numeric,
-                           control, nullptr),
+    check(umfpack_dl_solve(UMFPACK_At,
+                           row_start.data(),
+                           column_index.data(),
+                           values.data(),
+                           solution.data(),
+                           x.begin(),
+                           numeric,
+                           control,
+                           nullptr),
           "solve");
     std::copy(solution.begin(), solution.end(), x.begin());
   }

@@ -13,8 +13,14 @@
 extern "C" void
 dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 extern "C" void
-dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a,
-        const int *lda, double *b, const int *ldb, int *info);
+dpotrs_(const char   *uplo,
+        const int    *n,
+        const int    *nrhs,
+        const double *a,
+        const int    *lda,
+        double       *b,
+        const int    *ldb,
+        int          *info);
 
 namespace glissade
 {
@@ -33,10 +39,10 @@ namespace glissade
       cholmod_l_start(&common);
       // Failures are reported through the status, never printed: a matrix
       // that is not positive definite is an expected outcome here.
-      common.print         = 0;
-      common.error_handler = nullptr;
-      common.supernodal    = CHOLMOD_SUPERNODAL;
-      common.nmethods      = 1;
+      common.print              = 0;
+      common.error_handler      = nullptr;
+      common.supernodal         = CHOLMOD_SUPERNODAL;
+      common.nmethods           = 1;
       common.method[0].ordering = CHOLMOD_GIVEN;
       // Postordering the elimination tree could move contact dofs away from
       // the end of the ordering; CAMD's order is postordered already.
@@ -110,8 +116,8 @@ namespace glissade
   bool
   SchurCholesky::factorized() const
   {
-    return cholmod->factor != nullptr && cholmod->factor->minor ==
-                                           cholmod->factor->n;
+    return cholmod->factor != nullptr &&
+           cholmod->factor->minor == cholmod->factor->n;
   }
 
 
@@ -133,15 +139,19 @@ namespace glissade
           constraint_set[i] = 1;
         double control[CAMD_CONTROL], info[CAMD_INFO];
         camd_l_defaults(control);
-        const long status = camd_l_order(n, column_start.data(),
-                                         row_index.data(), permutation.data(),
-                                         control, info, constraint_set.data());
+        const long status = camd_l_order(n,
+                                         column_start.data(),
+                                         row_index.data(),
+                                         permutation.data(),
+                                         control,
+                                         info,
+                                         constraint_set.data());
         if (status != CAMD_OK && status != CAMD_OK_BUT_JUMBLED)
           throw std::runtime_error("CAMD ordering failed with status " +
                                    std::to_string(status));
         cholmod->free_factor();
-        cholmod->factor = cholmod_l_analyze_p(&A, permutation.data(), nullptr,
-                                              0, &cholmod->common);
+        cholmod->factor = cholmod_l_analyze_p(
+          &A, permutation.data(), nullptr, 0, &cholmod->common);
         if (cholmod->factor == nullptr)
           throw std::runtime_error("CHOLMOD analysis failed with status " +
                                    std::to_string(cholmod->common.status));
@@ -231,11 +241,11 @@ namespace glissade
     // supernode s has columns super[s] .. super[s+1]-1, rows Ls[pi[s]..],
     // values column major from px[s] with leading dimension = its rows.
     std::vector<double> trailing(std::size_t(n_last) * n_last, 0.);
-    const long   *super = static_cast<const long *>(L.super);
-    const long   *pi    = static_cast<const long *>(L.pi);
-    const long   *px    = static_cast<const long *>(L.px);
-    const long   *rows  = static_cast<const long *>(L.s);
-    const double *x     = static_cast<const double *>(L.x);
+    const long         *super = static_cast<const long *>(L.super);
+    const long         *pi    = static_cast<const long *>(L.pi);
+    const long         *px    = static_cast<const long *>(L.px);
+    const long         *rows  = static_cast<const long *>(L.s);
+    const double       *x     = static_cast<const double *>(L.x);
     for (std::size_t s = 0; s < L.nsuper; ++s)
       {
         const long k1 = super[s], k2 = super[s + 1];
@@ -269,7 +279,8 @@ namespace glissade
         inverse_block.assign(std::size_t(n_last) * k, 0.);
         for (int c = 0; c < k; ++c)
           inverse_block[wanted[c] + std::size_t(c) * n_last] = 1.;
-        dpotrs_("L", &m, &k, trailing.data(), &m, inverse_block.data(), &m, &info);
+        dpotrs_(
+          "L", &m, &k, trailing.data(), &m, inverse_block.data(), &m, &info);
       }
     if (info != 0)
       throw std::runtime_error("LAPACK dpotri/dpotrs failed with info " +

@@ -51,7 +51,7 @@ namespace glissade
     // Every body is built, and its boundary names checked against its mesh,
     // before the first mistake is reported: all of them in one message.
     InputErrorList mistakes;
-    Timer setup;
+    Timer          setup;
     for (const auto &description : scene.bodies)
       mistakes.collect([&]() {
         all_bodies.push_back(std::make_unique<Body>(description, scene.source));
@@ -64,16 +64,17 @@ namespace glissade
                     << ")" << std::endl;
       });
     mistakes.throw_if_any();
-    contact_problem = std::make_unique<ContactProblem>(scene, all_bodies, timer);
+    contact_problem =
+      std::make_unique<ContactProblem>(scene, all_bodies, timer);
     for (const auto &pair : contact_problem->contact_pairs())
       contact_outputs.emplace_back(*pair);
     pvd_records.resize(all_bodies.size() + contact_outputs.size());
-    history         = std::make_unique<HistoryWriter>(
-      scene.output.history,
-      all_bodies,
-      contact_problem->contact_pairs(),
-      scene.output.directory + "/history.csv",
-      scene.source);
+    history =
+      std::make_unique<HistoryWriter>(scene.output.history,
+                                      all_bodies,
+                                      contact_problem->contact_pairs(),
+                                      scene.output.directory + "/history.csv",
+                                      scene.source);
     // The curves to plot name history columns: known only now.
     const auto &columns = history->column_names();
     for (const auto &[x, y] : scene.output.plot_curves)
@@ -115,8 +116,8 @@ namespace glissade
 
     residual_history.clear();
     failure_cause.clear();
-    double first_residual = 0.;
-    double last_increment = std::numeric_limits<double>::max();
+    double first_residual    = 0.;
+    double last_increment    = std::numeric_limits<double>::max();
     double displacement_norm = 0.;
     double size              = 0.;
     for (auto &b : all_bodies)
@@ -168,8 +169,8 @@ namespace glissade
             failure_cause.clear();
             for (auto &b : all_bodies)
               if (!b->assembly_problem().empty())
-                failure_cause += (failure_cause.empty() ? "" : "; ") +
-                                 b->assembly_problem();
+                failure_cause +=
+                  (failure_cause.empty() ? "" : "; ") + b->assembly_problem();
             if (failure_cause.empty())
               failure_cause = "the residual overflows double precision "
                               "(loads or prescribed displacements too large "
@@ -181,8 +182,7 @@ namespace glissade
         // the first two.
         if (iteration <= 1)
           first_residual = std::max(first_residual, residual);
-        const double scaled =
-          scale > 0. ? residual / scale : residual;
+        const double scaled = scale > 0. ? residual / scale : residual;
         residual_history.push_back(scaled);
 
         // At least one correction per step: at iteration 0 the prescribed
@@ -251,8 +251,8 @@ namespace glissade
             failure_cause =
               "the contact problem: " + contact_problem->last_result().message;
             if (scene.output.progress)
-              std::cout << "    contact: " << contact_problem->last_result().message
-                        << std::endl;
+              std::cout << "    contact: "
+                        << contact_problem->last_result().message << std::endl;
             return false;
           }
         double increment_squared = 0.;
@@ -263,7 +263,7 @@ namespace glissade
             increment_squared += du[b].norm_sqr();
             displacement_norm += all_bodies[b]->displacement().norm_sqr();
           }
-        last_increment    = std::sqrt(increment_squared);
+        last_increment = std::sqrt(increment_squared);
         if (!contact_problem->empty())
           contact_problem->update_state();
         if (std::getenv("GLISSADE_DEBUG"))
@@ -351,8 +351,7 @@ namespace glissade
         if (residual_history.empty())
           message << " none (its first assembly failed)";
         if (!failure_cause.empty())
-          message << ". Cause of the last attempt's failure: "
-                  << failure_cause;
+          message << ". Cause of the last attempt's failure: " << failure_cause;
         throw ConvergenceFailure(message.str());
       }
     current_time = t;
@@ -411,8 +410,8 @@ namespace glissade
                  increment % scene.output.contact_table_interval != 0)
           write_contact_table(increment, current_time);
         std::cerr << "glissade: the last converged state (increment "
-                  << increment << ", t = " << current_time
-                  << ") is in " << scene.output.directory << std::endl;
+                  << increment << ", t = " << current_time << ") is in "
+                  << scene.output.directory << std::endl;
         if (scene.output.plots)
           plot_with_python("plot_scene.py",
                            scene.output.directory,
@@ -489,17 +488,18 @@ namespace glissade
             if (scene.output.progress)
               std::cout << "increment " << std::setw(5) << increment << "/"
                         << n_total << "  t = " << std::setw(10) << t
-                        << "  Newton iterations " << std::setw(2)
-                        << iterations << "  |R|/F = " << std::scientific
+                        << "  Newton iterations " << std::setw(2) << iterations
+                        << "  |R|/F = " << std::scientific
                         << std::setprecision(2) << residual_history.back()
                         << std::defaultfloat << std::setprecision(6)
                         << (contact_problem->empty() ?
                               std::string() :
                               "  active contact nodes " +
                                 std::to_string(contact_problem->n_active()))
-                        << "  " << time_left(wall.wall_time(),
-                                             increment - restart_increment,
-                                             n_total - increment)
+                        << "  "
+                        << time_left(wall.wall_time(),
+                                     increment - restart_increment,
+                                     n_total - increment)
                         << std::endl;
             history->record(increment, t, iterations);
             if (on_increment)
@@ -545,11 +545,13 @@ namespace glissade
                   << increment << " of " << n_total
                   << "; continue with --restart\n";
                 summary_file.commit();
-                throw RunInterrupted(
-                  interruption::signal_name(signal) + " received: stopped "
-                  "after increment " + std::to_string(increment) + " of " +
-                  std::to_string(n_total) + " (t = " + std::to_string(t) +
-                  "), its state in " + checkpoint_file());
+                throw RunInterrupted(interruption::signal_name(signal) +
+                                     " received: stopped "
+                                     "after increment " +
+                                     std::to_string(increment) + " of " +
+                                     std::to_string(n_total) +
+                                     " (t = " + std::to_string(t) +
+                                     "), its state in " + checkpoint_file());
               }
           }
         t_begin = t_end;
@@ -624,8 +626,8 @@ namespace glissade
         << " s, factorization " << s.factorization_seconds << " s";
     if (!contact_problem->empty())
       out << ", contact detection " << s.detection_seconds << " s, compliance "
-          << s.compliance_seconds << " s, local solve "
-          << s.local_solve_seconds << " s";
+          << s.compliance_seconds << " s, local solve " << s.local_solve_seconds
+          << " s";
     out << ")";
     return out.str();
   }
@@ -634,7 +636,7 @@ namespace glissade
   std::string
   Simulation::timing_table() const
   {
-    const RunStatistics s = statistics();
+    const RunStatistics                         s    = statistics();
     std::vector<std::pair<std::string, double>> rows = {
       {timing::assembly, s.assembly_seconds},
       {timing::factorization, s.factorization_seconds},
@@ -662,8 +664,8 @@ namespace glissade
     const double       per   = 1000. / std::max(1u, s.increments);
     table << std::fixed << "  " << std::left << std::setw(36)
           << "part of the run (deal.II TimerOutput)" << std::right
-          << std::setw(11) << "wall (s)" << std::setw(8) << "%"
-          << std::setw(20) << "per increment (ms)" << '\n';
+          << std::setw(11) << "wall (s)" << std::setw(8) << "%" << std::setw(20)
+          << "per increment (ms)" << '\n';
     for (const auto &[name, seconds] : rows)
       table << "  " << std::left << std::setw(36) << name << std::right
             << std::setw(11) << std::setprecision(3) << seconds << std::setw(8)

@@ -5,13 +5,13 @@
 #ifndef glissade_tests_bipotential_hertz_timing_h
 #define glissade_tests_bipotential_hertz_timing_h
 
-#include "bipotential_reference.h"
-#include "bipotential_test_helpers.h"
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include "bipotential_reference.h"
+#include "bipotential_test_helpers.h"
 
 namespace test_helpers
 {
@@ -20,13 +20,13 @@ namespace test_helpers
   test_hertz_and_timing()
   {
     std::printf(
-        "\n== Rigid cylinder (R = 1) on an elastic half-plane (E* = 1): "
-        "Hertz check and timing\n");
+      "\n== Rigid cylinder (R = 1) on an elastic half-plane (E* = 1): "
+      "Hertz check and timing\n");
     std::printf("  Hertz 2D: a^2 = 4 P R / (pi E*), p0 = 2 P / (pi a); "
                 "target a = 0.5 gives d = (a^2/2R)(ln(2L/a) + 1/2)\n");
     std::printf(
-        "       n  case           beta  sweeps  time [s]  ms/sweep  closed  "
-        "P/P_hertz  p0/p0_hertz  complementarity\n");
+      "       n  case           beta  sweeps  time [s]  ms/sweep  closed  "
+      "P/P_hertz  p0/p0_hertz  complementarity\n");
     const double a = 0.5, R = 1., L = 8.;
     const double d        = a * a / (2. * R) * (std::log(2. * L / a) + 0.5);
     const double P_hertz  = M_PI * a * a / (4. * R);
@@ -71,10 +71,10 @@ namespace test_helpers
               }
             const auto start  = std::chrono::steady_clock::now();
             const auto result = BiPotentialSolver(settings).solve(
-                W, u_case, std::vector<double>(n, c.mu), r);
+              W, u_case, std::vector<double>(n, c.mu), r);
             const double seconds = std::chrono::duration<double>(
-                                       std::chrono::steady_clock::now() - start)
-                                       .count();
+                                     std::chrono::steady_clock::now() - start)
+                                     .count();
             if (!c.warm_start && c.mu == 0.)
               r_previous = r;
             double       P      = 0.;
@@ -102,7 +102,7 @@ namespace test_helpers
               // Friction changes the normal solution only through the
               // (here absent) tangential-normal coupling of W.
               check(std::abs(P / P_hertz - 1.) < 0.03 &&
-                        std::abs(p0 / p0_hertz - 1.) < 0.03,
+                      std::abs(p0 / p0_hertz - 1.) < 0.03,
                     "load and peak pressure within 3% of Hertz");
           }
         std::printf("  (W: %.1f MB)\n", W.memory_consumption() / 1048576.);

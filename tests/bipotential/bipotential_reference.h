@@ -26,9 +26,9 @@ namespace reference
     std::vector<double> a;
 
     explicit DenseMatrix(const unsigned int size)
-        : n(size), a(std::size_t(size) * size, 0.)
-    {
-    }
+      : n(size)
+      , a(std::size_t(size) * size, 0.)
+    {}
 
     double &
     operator()(const unsigned int i, const unsigned int j)
@@ -333,7 +333,7 @@ namespace reference
              const unsigned int                        seed,
              const double                              shift = 0.2,
              const glissade::ComplianceMatrix::Storage storage =
-                 glissade::ComplianceMatrix::Storage::dense)
+               glissade::ComplianceMatrix::Storage::dense)
   {
     std::mt19937                           generator(seed);
     std::uniform_real_distribution<double> uniform(-1., 1.);
@@ -384,7 +384,7 @@ namespace reference
       {
         const double y = d * h;
         coefficient[d] =
-            2. / M_PI * (std::log(L) - (F(y + 0.5 * h) - F(y - 0.5 * h)) / h);
+          2. / M_PI * (std::log(L) - (F(y + 0.5 * h) - F(y - 0.5 * h)) / h);
       }
     glissade::ComplianceMatrix W(n_nodes);
     for (unsigned int k = 0; k < n_nodes; ++k)

@@ -47,7 +47,7 @@ namespace test_helpers
     double result = 0.;
     for (std::size_t k = 0; k < a.size(); ++k)
       result = std::max(
-          {result, std::abs(a[k][0] - b[k][0]), std::abs(a[k][1] - b[k][1])});
+        {result, std::abs(a[k][0] - b[k][0]), std::abs(a[k][1] - b[k][1])});
     return result;
   }
 
@@ -82,9 +82,9 @@ namespace test_helpers
   inline const char *
   name(const NodeStatus status)
   {
-    return status == NodeStatus::open    ? "open"
-           : status == NodeStatus::stick ? "stick"
-                                         : "slip";
+    return status == NodeStatus::open  ? "open" :
+           status == NodeStatus::stick ? "stick" :
+                                         "slip";
   }
 
 } // namespace test_helpers

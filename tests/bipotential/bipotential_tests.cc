@@ -5,20 +5,19 @@
 // and Hertz's solution on a half-plane. Prints every figure it checks;
 // exits with the number of failed checks.
 
-#include <map>
-#include <string>
 #include <glissade/contact/bipotential_solver.h>
-
-#include "bipotential_hertz_timing.h"
-#include "bipotential_reference.h"
-#include "bipotential_test_helpers.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <random>
 #include <string>
+
+#include "bipotential_hertz_timing.h"
+#include "bipotential_reference.h"
+#include "bipotential_test_helpers.h"
 
 using namespace glissade;
 using Vector2    = BiPotentialSolver::Vector2;
@@ -35,7 +34,7 @@ namespace
   test_single_node_frictionless()
   {
     std::printf(
-        "\n== Single node, frictionless: r_n = max(0, -g_free / W_nn)\n");
+      "\n== Single node, frictionless: r_n = max(0, -g_free / W_nn)\n");
     const BiPotentialSolver solver = tight_solver();
     for (const double g_free : {-0.3, 0.4, 0.})
       {
@@ -46,13 +45,13 @@ namespace
         const double expected_r_n = std::max(0., -g_free / 2.);
         const double expected_gap = g_free + 2. * expected_r_n;
         std::printf(
-            "  g_free %+.2f: r = (%g, %.15g), gap %.3g, %u sweeps, %s\n",
-            g_free,
-            r[0][0],
-            r[0][1],
-            result.displacement[0][1],
-            result.sweeps,
-            name(result.status[0]));
+          "  g_free %+.2f: r = (%g, %.15g), gap %.3g, %u sweeps, %s\n",
+          g_free,
+          r[0][0],
+          r[0][1],
+          result.displacement[0][1],
+          result.sweeps,
+          name(result.status[0]));
         check(result.converged, "converged");
         check(r[0][0] == 0., "r_t = 0 exactly");
         check(std::abs(r[0][1] - expected_r_n) <= 1e-14,
@@ -65,7 +64,7 @@ namespace
                        (0.1 + 0.25 * expected_r_n)) <= 1e-14,
               "u_t = u_t_free + W_tn r_n");
         check(result.status[0] ==
-                  (g_free < 0. ? NodeStatus::slip : NodeStatus::open),
+                (g_free < 0. ? NodeStatus::slip : NodeStatus::open),
               "status: closed frictionless = slip, else open");
       }
   }
@@ -75,7 +74,7 @@ namespace
   test_coupled_frictionless()
   {
     std::printf(
-        "\n== Coupled random SPD W, frictionless, vs Murty and enumeration\n");
+      "\n== Coupled random SPD W, frictionless, vs Murty and enumeration\n");
     const BiPotentialSolver solver;
     for (const unsigned int n : {2u, 3u, 5u, 8u, 20u, 50u})
       for (unsigned int seed = 1; seed <= 3; ++seed)
@@ -107,7 +106,7 @@ namespace
             }
           // The gaps, reaction signs and products, computed here.
           const std::vector<Vector2> u =
-              reference::displacement(dense, u_free, r);
+            reference::displacement(dense, u_free, r);
           double min_gap = 0., min_r = 0., max_product = 0.;
           for (unsigned int k = 0; k < n; ++k)
             {
@@ -138,18 +137,18 @@ namespace
                   enumeration_difference = 0.;
                   for (unsigned int k = 0; k < n; ++k)
                     enumeration_difference =
-                        std::max(enumeration_difference,
-                                 std::abs(r[k][1] - solutions[0][k]));
+                      std::max(enumeration_difference,
+                               std::abs(r[k][1] - solutions[0][k]));
                 }
               check(solutions.size() == 1 &&
-                        enumeration_difference <= 1e-8 * largest,
+                      enumeration_difference <= 1e-8 * largest,
                     format("unique enumerated solution (%g found), "
                            "|r - r_enum| %.1e",
                            solutions.size(),
                            enumeration_difference));
             }
           const auto residuals =
-              compute_contact_residuals(W, u_free, mu, r, 0.);
+            compute_contact_residuals(W, u_free, mu, r, 0.);
           check(residuals.complementarity <= 1e-10 && residuals.friction == 0.,
                 format("independent residuals: complementarity %.1e, "
                        "friction %.1e",
@@ -167,7 +166,7 @@ namespace
   test_nonsymmetric_frictionless()
   {
     std::printf(
-        "\n== Non-symmetric W (SPD + skew part), frictionless, vs Murty\n");
+      "\n== Non-symmetric W (SPD + skew part), frictionless, vs Murty\n");
     const unsigned int                     n = 20;
     ComplianceMatrix                       W = reference::random_spd(n, 77);
     std::mt19937                           generator(8);
@@ -184,9 +183,9 @@ namespace
       u = {{0., 2. * uniform(generator) * 10.}};
     std::vector<Vector2> r;
     const auto           result =
-        BiPotentialSolver().solve(W, u_free, std::vector<double>(n, 0.), r);
+      BiPotentialSolver().solve(W, u_free, std::vector<double>(n, 0.), r);
     const reference::DenseMatrix M =
-        reference::normal_part(reference::to_dense(W));
+      reference::normal_part(reference::to_dense(W));
     std::vector<double> q(n), z;
     for (unsigned int k = 0; k < n; ++k)
       q[k] = u_free[k][1];
@@ -220,17 +219,17 @@ namespace
     std::printf("  ramp of u_t_free (saturation at mu r_n W_tt = %g):\n",
                 threshold);
     std::printf(
-        "    u_t_free      r_t   closed form   r_n   u_t  status sweeps\n");
+      "    u_t_free      r_t   closed form   r_n   u_t  status sweeps\n");
     std::vector<Vector2> r_warm;
     bool                 ramp_ok = true;
     for (unsigned int step = 0; step <= 12; ++step)
       {
         const double u_t_free = -0.1 + 0.1 * step; // crosses zero, then past
-        const double expected_r_t = std::abs(u_t_free) <= threshold
-                                        ? -u_t_free / w_tt
-                                        : -std::copysign(mu * r_n, u_t_free);
+        const double expected_r_t = std::abs(u_t_free) <= threshold ?
+                                      -u_t_free / w_tt :
+                                      -std::copysign(mu * r_n, u_t_free);
         const auto   result =
-            solver.solve(W, {{{u_t_free, g_free}}}, {mu}, r_warm);
+          solver.solve(W, {{{u_t_free, g_free}}}, {mu}, r_warm);
         std::printf("    %8.3f %8.4f %10.4f %8.4f %6.3f  %-6s %u\n",
                     u_t_free,
                     r_warm[0][0],
@@ -263,7 +262,7 @@ namespace
       const double         r_n_stick = -(1.2 * g_free - 0.3 * u_t_free) / det;
       std::vector<Vector2> r;
       const auto           result =
-          solver.solve(W_coupled, {{{u_t_free, g_free}}}, {0.3}, r);
+        solver.solve(W_coupled, {{{u_t_free, g_free}}}, {0.3}, r);
       std::printf("    stick: r = (%.12f, %.12f), closed form (%.12f, %.12f), "
                   "|r_t|/(mu r_n) = %.3f\n",
                   r[0][0],
@@ -272,8 +271,8 @@ namespace
                   r_n_stick,
                   std::abs(r_t) / (0.3 * r_n_stick));
       check(result.converged && result.status[0] == NodeStatus::stick &&
-                std::abs(r[0][0] - r_t) <= 1e-12 &&
-                std::abs(r[0][1] - r_n_stick) <= 1e-12,
+              std::abs(r[0][0] - r_t) <= 1e-12 &&
+              std::abs(r[0][1] - r_n_stick) <= 1e-12,
             "coupled stick matches Cramer's rule");
     }
     {
@@ -284,7 +283,7 @@ namespace
       const double u_t      = u_t_free - 1.2 * 0.3 * r_n_slip + 0.3 * r_n_slip;
       std::vector<Vector2> r;
       const auto           result =
-          solver.solve(W_coupled, {{{u_t_free, g_free}}}, {0.3}, r);
+        solver.solve(W_coupled, {{{u_t_free, g_free}}}, {0.3}, r);
       std::printf("    slip:  r = (%.12f, %.12f), closed form (%.12f, %.12f), "
                   "u_t %.6f (closed form %.6f), %u sweeps\n",
                   r[0][0],
@@ -295,10 +294,10 @@ namespace
                   u_t,
                   result.sweeps);
       check(result.converged && result.status[0] == NodeStatus::slip &&
-                std::abs(r[0][1] - r_n_slip) <= 1e-12 &&
-                std::abs(r[0][0] + 0.3 * r_n_slip) <= 1e-12 &&
-                std::abs(result.displacement[0][0] - u_t) <= 1e-12 &&
-                std::abs(result.displacement[0][1]) <= 1e-12,
+              std::abs(r[0][1] - r_n_slip) <= 1e-12 &&
+              std::abs(r[0][0] + 0.3 * r_n_slip) <= 1e-12 &&
+              std::abs(result.displacement[0][0] - u_t) <= 1e-12 &&
+              std::abs(result.displacement[0][1]) <= 1e-12,
             "coupled slip: |r_t| = mu r_n, r_t opposite to u_t, g = 0");
     }
   }
@@ -314,7 +313,7 @@ namespace
       for (unsigned int seed = 1; seed <= 4; ++seed)
         {
           const ComplianceMatrix W =
-              reference::random_spd(n, 7 * n + seed, 0.5);
+            reference::random_spd(n, 7 * n + seed, 0.5);
           std::mt19937                           generator(50 + seed);
           std::uniform_real_distribution<double> uniform(-1., 1.);
           std::vector<Vector2>                   u_free(n);
@@ -324,9 +323,9 @@ namespace
           std::vector<Vector2>      r;
           const auto                result = solver.solve(W, u_free, mu, r);
           const auto                solutions =
-              reference::enumerate_coulomb(reference::to_dense(W), u_free, mu);
+            reference::enumerate_coulomb(reference::to_dense(W), u_free, mu);
           const double difference =
-              solutions.size() == 1 ? max_difference(r, solutions[0]) : 1e300;
+            solutions.size() == 1 ? max_difference(r, solutions[0]) : 1e300;
           std::string statuses;
           for (const auto status : result.status)
             statuses += std::string(name(status)) + " ";
@@ -341,7 +340,7 @@ namespace
                       result.residuals.friction,
                       statuses.c_str());
           check(result.converged && solutions.size() == 1 &&
-                    difference <= 1e-8 * (1. + max_abs(r)),
+                  difference <= 1e-8 * (1. + max_abs(r)),
                 "converged to the unique enumerated solution");
         }
   }
@@ -431,16 +430,16 @@ namespace
                   max_abs(r),
                   result.message.c_str());
       check(result.converged && result.sweeps == 1 && max_abs(r) == 0. &&
-                max_difference(result.displacement, u_free) == 0.,
+              max_difference(result.displacement, u_free) == 0.,
             "all open: zero reactions in one sweep, u = u_free");
     }
     {
       std::vector<Vector2> r(n, Vector2{{0.2, 0.5}});
       const auto           result = solver.solve(W, u_free, mu, r);
       std::printf(
-          "  all open, warm start r = (0.2, 0.5): %u sweeps, max |r| %g\n",
-          result.sweeps,
-          max_abs(r));
+        "  all open, warm start r = (0.2, 0.5): %u sweeps, max |r| %g\n",
+        result.sweeps,
+        max_abs(r));
       check(result.converged && max_abs(r) == 0., "stale warm start released");
     }
     {
@@ -454,8 +453,8 @@ namespace
       const auto           result = solver.solve(W_rigid, u_free, mu, r);
       std::printf("  W_77 = 0: %s\n", result.message.c_str());
       check(result.outcome == Outcome::singular_node &&
-                result.singular_nodes == std::vector<unsigned int>{7} &&
-                r[0][1] == 1.,
+              result.singular_nodes == std::vector<unsigned int>{7} &&
+              r[0][1] == 1.,
             "W_nn = 0 reported with the node number, r untouched");
     }
     const double nan     = std::numeric_limits<double>::quiet_NaN();
@@ -503,7 +502,7 @@ namespace
       W_indefinite.set_block(1, 0, {{{{0., 0.}}, {{0., -2.}}}});
       std::vector<Vector2> r = {{{0., 0.1}}, {{0., 0.2}}};
       const auto           result =
-          solver.solve(W_indefinite, {{{0., -1.}}, {{0., -1.}}}, {0., 0.}, r);
+        solver.solve(W_indefinite, {{{0., -1.}}, {{0., -1.}}}, {0., 0.}, r);
       std::printf("  indefinite W: %s; r = (%g, %g), (%g, %g)\n",
                   result.message.c_str(),
                   r[0][0],
@@ -511,8 +510,7 @@ namespace
                   r[1][0],
                   r[1][1]);
       check(result.outcome == Outcome::diverged && r[0][1] == 0.1 &&
-                r[1][1] == 0.2 &&
-                std::isfinite(result.residuals.complementarity),
+              r[1][1] == 0.2 && std::isfinite(result.residuals.complementarity),
             "divergence detected, starting reactions returned, no NaN");
     }
 
@@ -527,21 +525,21 @@ namespace
         settings.rho_choice = choice;
         settings.max_sweeps = 500;
         std::vector<Vector2> r;
-        const auto           result = BiPotentialSolver(settings).solve(
-            W_soft_t, {{{0.1, -1.}}}, {0.5}, r);
+        const auto           result =
+          BiPotentialSolver(settings).solve(W_soft_t, {{{0.1, -1.}}}, {0.5}, r);
         const bool normal =
-            choice == BiPotentialSolver::RhoChoice::normal_compliance;
+          choice == BiPotentialSolver::RhoChoice::normal_compliance;
         std::printf("    %s: %s; r = (%g, %g)\n",
                     normal ? "rho = beta / W_nn" : "rho = beta / lambda_max",
                     result.message.c_str(),
                     r[0][0],
                     r[0][1]);
         check(std::isfinite(r[0][0]) && std::isfinite(r[0][1]) &&
-                  std::isfinite(result.residuals.friction),
+                std::isfinite(result.residuals.friction),
               "no NaN");
         if (!normal)
           check(result.converged && std::abs(r[0][0] + 0.1 / 3.) <= 1e-12 &&
-                    std::abs(r[0][1] - 1.) <= 1e-12,
+                  std::abs(r[0][1] - 1.) <= 1e-12,
                 "largest_diagonal_compliance converges to r = (-u_t/W_tt, 1)");
       }
   }
@@ -555,7 +553,7 @@ namespace
     const auto         first  = reference::random_spd(half, 11);
     const auto         second = reference::random_spd(half, 12);
     ComplianceMatrix   dense(n),
-        sparse(n, ComplianceMatrix::Storage::block_sparse);
+      sparse(n, ComplianceMatrix::Storage::block_sparse);
     for (unsigned int k = 0; k < half; ++k)
       for (unsigned int l = 0; l < half; ++l)
         {
@@ -585,10 +583,10 @@ namespace
                 result_sparse.sweeps,
                 max_difference(r_dense, r_sparse));
     check(sparse.n_stored_blocks() == 2 * half * half &&
-              sparse.max_asymmetry() == 0. && dense.max_asymmetry() == 0.,
+            sparse.max_asymmetry() == 0. && dense.max_asymmetry() == 0.,
           "sparse stores only the two pair blocks; both symmetric");
     check(result_dense.converged && result_sparse.converged &&
-              max_difference(r_dense, r_sparse) <= 1e-12 * max_abs(r_dense),
+            max_difference(r_dense, r_sparse) <= 1e-12 * max_abs(r_dense),
           "same reactions from both storages");
   }
 
@@ -608,7 +606,8 @@ namespace
         ComplianceMatrix W(2);
         for (unsigned int k = 0; k < 2; ++k)
           for (unsigned int l = 0; l < 2; ++l)
-            W.set_block(k, l, {{{{k == l ? 1. : 0., 0.}}, {{0., k == l ? 1. : 1. - e}}}});
+            W.set_block(
+              k, l, {{{{k == l ? 1. : 0., 0.}}, {{0., k == l ? 1. : 1. - e}}}});
         BiPotentialSolver::Settings settings;
         settings.max_sweeps = 1000;
         for (const unsigned int period : {0u, 100u})
@@ -620,15 +619,22 @@ namespace
               W, {{{0., -1.}}, {{0., -1. - 0.5 * e}}}, {0., 0.}, r);
             // Closed form of W r = -g_free on the two closed nodes.
             const double det = 1. - (1. - e) * (1. - e);
-            const double r0 = (1. - (1. - e) * (1. + 0.5 * e)) / det;
-            const double r1 = ((1. + 0.5 * e) - (1. - e)) / det;
-            const double error = std::max(std::abs(r[0][1] - r0), std::abs(r[1][1] - r1));
-            std::printf("  e = %g, polish period %u: %s after %u sweeps%s, |r - exact| = %.3g\n",
-                        e, period, result.converged ? "converged" : "not converged",
-                        result.sweeps, result.polished ? " (polished)" : "", error);
+            const double r0  = (1. - (1. - e) * (1. + 0.5 * e)) / det;
+            const double r1  = ((1. + 0.5 * e) - (1. - e)) / det;
+            const double error =
+              std::max(std::abs(r[0][1] - r0), std::abs(r[1][1] - r1));
+            std::printf(
+              "  e = %g, polish period %u: %s after %u sweeps%s, |r - exact| = %.3g\n",
+              e,
+              period,
+              result.converged ? "converged" : "not converged",
+              result.sweeps,
+              result.polished ? " (polished)" : "",
+              error);
             if (period == 0)
-              check(!result.converged || e > 1e-4,
-                    "plain Gauss-Seidel should not converge in 1000 sweeps at e = 1e-6");
+              check(
+                !result.converged || e > 1e-4,
+                "plain Gauss-Seidel should not converge in 1000 sweeps at e = 1e-6");
             else
               check(result.converged && result.polished &&
                       error <= 1e-9 * std::max(r0, r1),

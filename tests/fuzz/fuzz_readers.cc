@@ -65,12 +65,34 @@ namespace
 
   // Values that have broken readers elsewhere: empty, non-finite, negative,
   // overflowing, malformed lists and expressions, names that may not exist.
-  const std::vector<std::string> hostile_values = {
-    "",        "nan",         "inf",      "-inf",   "-1",       "0",
-    "1e308",   "-1e308",      "1e-320",   "4294967296", "99999999999999999999",
-    "abc",     "1,2,3",       ",",        "point(",  "point(1e308, nan)",
-    "(",       "1/0*t",       "sqrt(-1)", "xy",     "rigid",    "bottom",
-    "left: ",  ": xy",        "0, 0; ;",  "\"",     "\\",       "end"};
+  const std::vector<std::string> hostile_values = {"",
+                                                   "nan",
+                                                   "inf",
+                                                   "-inf",
+                                                   "-1",
+                                                   "0",
+                                                   "1e308",
+                                                   "-1e308",
+                                                   "1e-320",
+                                                   "4294967296",
+                                                   "99999999999999999999",
+                                                   "abc",
+                                                   "1,2,3",
+                                                   ",",
+                                                   "point(",
+                                                   "point(1e308, nan)",
+                                                   "(",
+                                                   "1/0*t",
+                                                   "sqrt(-1)",
+                                                   "xy",
+                                                   "rigid",
+                                                   "bottom",
+                                                   "left: ",
+                                                   ": xy",
+                                                   "0, 0; ;",
+                                                   "\"",
+                                                   "\\",
+                                                   "end"};
 
   /** One to three random edits of a text file. */
   std::string
@@ -190,15 +212,15 @@ namespace
 int
 main(int argc, char **argv)
 {
-  if (argc < 5 || (std::string(argv[1]) != "prm" &&
-                   std::string(argv[1]) != "msh"))
+  if (argc < 5 ||
+      (std::string(argv[1]) != "prm" && std::string(argv[1]) != "msh"))
     {
       std::cerr << "usage: glissade_fuzz prm|msh <iterations> <seed> <files>\n";
       return 2;
     }
-  const bool         mesh       = std::string(argv[1]) == "msh";
-  const unsigned int iterations = std::stoul(argv[2]);
-  std::mt19937       random(std::stoul(argv[3]));
+  const bool               mesh       = std::string(argv[1]) == "msh";
+  const unsigned int       iterations = std::stoul(argv[2]);
+  std::mt19937             random(std::stoul(argv[3]));
   std::vector<std::string> seeds;
   for (int i = 4; i < argc; ++i)
     seeds.push_back(read_text(argv[i]));

@@ -9,11 +9,11 @@
 #include <glissade/fe/gauss_rule.h>
 #include <glissade/fe/hermite_quadrilateral.h>
 
-#include "hermite_test_tools.h"
-
 #include <cmath>
 #include <functional>
 #include <vector>
+
+#include "hermite_test_tools.h"
 
 namespace hermite_tests
 {
@@ -36,8 +36,8 @@ namespace hermite_tests
    */
   inline HermiteMesh
   straight_sided_mesh(
-      const unsigned int                                       n,
-      const std::function<Vector(unsigned int, unsigned int)> &vertex)
+    const unsigned int                                       n,
+    const std::function<Vector(unsigned int, unsigned int)> &vertex)
   {
     HermiteMesh mesh;
     for (unsigned int j = 0; j <= n; ++j)
@@ -50,14 +50,16 @@ namespace hermite_tests
       for (unsigned int i = 0; i < n; ++i)
         {
           const unsigned int                v0    = j * (n + 1) + i;
-          const std::array<unsigned int, 4> nodes = {
-              v0, v0 + 1, v0 + n + 2, v0 + n + 1};
+          const std::array<unsigned int, 4> nodes = {v0,
+                                                     v0 + 1,
+                                                     v0 + n + 2,
+                                                     v0 + n + 1};
           mesh.element_nodes.push_back(nodes);
           mesh.elements.push_back(HermiteQuadrilateral::from_straight_sides(
-              {mesh.node_points[nodes[0]],
-               mesh.node_points[nodes[1]],
-               mesh.node_points[nodes[2]],
-               mesh.node_points[nodes[3]]}));
+            {mesh.node_points[nodes[0]],
+             mesh.node_points[nodes[1]],
+             mesh.node_points[nodes[2]],
+             mesh.node_points[nodes[3]]}));
         }
     return mesh;
   }
@@ -73,21 +75,21 @@ namespace hermite_tests
     const double pi    = std::acos(-1.0);
     const auto   polar = [](const double r, const double theta) {
       return HermiteQuadrilateral::ParametrizationValue{
-          {r * std::cos(theta), r * std::sin(theta)},
-          {std::cos(theta), std::sin(theta)},
-          {-r * std::sin(theta), r * std::cos(theta)}};
+        {r * std::cos(theta), r * std::sin(theta)},
+        {std::cos(theta), std::sin(theta)},
+        {-r * std::sin(theta), r * std::cos(theta)}};
     };
     const auto r_of     = [n](unsigned int i) { return 1.0 + double(i) / n; };
     const auto theta_of = [n, pi](unsigned int j) { return 0.5 * pi * j / n; };
 
     HermiteMesh mesh =
-        straight_sided_mesh(n, [&](unsigned int i, unsigned int j) {
-          return polar(r_of(i), theta_of(j)).point;
-        });
+      straight_sided_mesh(n, [&](unsigned int i, unsigned int j) {
+        return polar(r_of(i), theta_of(j)).point;
+      });
     for (unsigned int j = 0; j < n; ++j)
       for (unsigned int i = 0; i < n; ++i)
         mesh.elements[j * n + i] = HermiteQuadrilateral::from_parametrization(
-            polar, {r_of(i), r_of(i + 1)}, {theta_of(j), theta_of(j + 1)});
+          polar, {r_of(i), r_of(i + 1)}, {theta_of(j), theta_of(j + 1)});
     return mesh;
   }
 
@@ -140,10 +142,10 @@ namespace hermite_tests
   {
   public:
     BandMatrix(const std::size_t size, const std::size_t half_bandwidth)
-        : n(size), bandwidth(half_bandwidth),
-          data(size * (half_bandwidth + 1), 0.0)
-    {
-    }
+      : n(size)
+      , bandwidth(half_bandwidth)
+      , data(size * (half_bandwidth + 1), 0.0)
+    {}
 
     /** Entry (i, j) with j <= i <= j + bandwidth. */
     double &
@@ -211,7 +213,7 @@ namespace hermite_tests
       for (unsigned int a : nodes)
         for (unsigned int b : nodes)
           bandwidth =
-              std::max<std::size_t>(bandwidth, 3 * (a > b ? a - b : b - a) + 2);
+            std::max<std::size_t>(bandwidth, 3 * (a > b ? a - b : b - a) + 2);
 
     BandMatrix          K(n_dofs, bandwidth);
     std::vector<double> rhs(n_dofs, 0.0);
@@ -232,9 +234,9 @@ namespace hermite_tests
                 for (unsigned int j = 0; j < 12; ++j)
                   if (global[i] >= global[j])
                     K(global[i], global[j]) +=
-                        (v.shape_gradients[i][0] * v.shape_gradients[j][0] +
-                         v.shape_gradients[i][1] * v.shape_gradients[j][1]) *
-                        dx;
+                      (v.shape_gradients[i][0] * v.shape_gradients[j][0] +
+                       v.shape_gradients[i][1] * v.shape_gradients[j][1]) *
+                      dx;
               }
           }
       }
@@ -283,7 +285,7 @@ namespace hermite_tests
           for (unsigned int i = 0; i < 12; ++i)
             {
               const double U =
-                  solution[3 * mesh.element_nodes[e][i / 3] + i % 3];
+                solution[3 * mesh.element_nodes[e][i / 3] + i % 3];
               u += U * v.shape_values[i];
               grad_u[0] += U * v.shape_gradients[i][0];
               grad_u[1] += U * v.shape_gradients[i][1];
@@ -292,8 +294,8 @@ namespace hermite_tests
           const double dx = q.weight * v.jacobian_determinant;
           errors.l2 += std::pow(u - exact.value(v.point), 2) * dx;
           errors.h1_seminorm +=
-              (std::pow(grad_u[0] - g[0], 2) + std::pow(grad_u[1] - g[1], 2)) *
-              dx;
+            (std::pow(grad_u[0] - g[0], 2) + std::pow(grad_u[1] - g[1], 2)) *
+            dx;
         }
     errors.l2          = std::sqrt(errors.l2);
     errors.h1_seminorm = std::sqrt(errors.h1_seminorm);
@@ -306,13 +308,13 @@ namespace hermite_tests
    */
   inline void
   poisson_convergence_study(
-      Checker                                        &check,
-      const std::string                              &name,
-      const std::function<HermiteMesh(unsigned int)> &make_mesh,
-      const ExactSolution                            &exact,
-      const unsigned int                              max_n,
-      const std::array<double, 2>                    &l2_rate_window,
-      const std::array<double, 2>                    &h1_rate_window)
+    Checker                                        &check,
+    const std::string                              &name,
+    const std::function<HermiteMesh(unsigned int)> &make_mesh,
+    const ExactSolution                            &exact,
+    const unsigned int                              max_n,
+    const std::array<double, 2>                    &l2_rate_window,
+    const std::array<double, 2>                    &h1_rate_window)
   {
     std::printf("\n  Poisson, %s\n  %6s %8s %12s %7s %12s %7s\n",
                 name.c_str(),

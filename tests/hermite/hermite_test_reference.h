@@ -8,12 +8,12 @@
 
 #include <glissade/fe/hermite_quadrilateral.h>
 
-#include "hermite_test_tools.h"
-
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <vector>
+
+#include "hermite_test_tools.h"
 
 namespace hermite_tests
 {
@@ -105,13 +105,14 @@ namespace hermite_tests
     std::vector<std::array<double, 2>> samples(n_samples);
     for (auto &x : samples)
       x = {random.uniform(), random.uniform()};
-    std::vector<std::vector<double>> normal_matrix(
-        12, std::vector<double>(12, 0.0));
+    std::vector<std::vector<double>> normal_matrix(12,
+                                                   std::vector<double>(12,
+                                                                       0.0));
     for (const auto &x : samples)
       for (unsigned int m = 0; m < 12; ++m)
         for (unsigned int l = 0; l < 12; ++l)
           normal_matrix[m][l] +=
-              monomial(m, x[0], x[1])[0] * monomial(l, x[0], x[1])[0];
+            monomial(m, x[0], x[1])[0] * monomial(l, x[0], x[1])[0];
     double fit_residual = 0, fit_coefficient_error = 0, derivative_error = 0;
     for (unsigned int i = 0; i < 12; ++i)
       {
@@ -119,15 +120,16 @@ namespace hermite_tests
         for (const auto &x : samples)
           {
             const double Ni =
-                HermiteQuadrilateral::reference_values(x[0], x[1])[i];
+              HermiteQuadrilateral::reference_values(x[0], x[1])[i];
             for (unsigned int m = 0; m < 12; ++m)
               right_hand_side[m] += monomial(m, x[0], x[1])[0] * Ni;
           }
         const std::vector<double> fit =
-            solve_dense(normal_matrix, right_hand_side);
+          solve_dense(normal_matrix, right_hand_side);
         for (unsigned int m = 0; m < 12; ++m)
-          fit_coefficient_error = std::max(
-              fit_coefficient_error, std::abs(fit[m] - coefficients[i][m]));
+          fit_coefficient_error =
+            std::max(fit_coefficient_error,
+                     std::abs(fit[m] - coefficients[i][m]));
         for (const auto &x : samples)
           {
             double fitted = 0, kronecker[3] = {0, 0, 0};
@@ -139,9 +141,9 @@ namespace hermite_tests
                   kronecker[k] += coefficients[i][m] * p[k];
               }
             const double Ni =
-                HermiteQuadrilateral::reference_values(x[0], x[1])[i];
+              HermiteQuadrilateral::reference_values(x[0], x[1])[i];
             const Vector dNi =
-                HermiteQuadrilateral::reference_gradients(x[0], x[1])[i];
+              HermiteQuadrilateral::reference_gradients(x[0], x[1])[i];
             fit_residual     = std::max(fit_residual, std::abs(fitted - Ni));
             derivative_error = std::max({derivative_error,
                                          std::abs(kronecker[0] - Ni),
@@ -156,9 +158,9 @@ namespace hermite_tests
                   fit_coefficient_error,
                   1e-12);
     check.at_most(
-        "Kronecker-derived basis vs implemented (value, d/dxi, d/deta)",
-        derivative_error,
-        1e-14);
+      "Kronecker-derived basis vs implemented (value, d/dxi, d/deta)",
+      derivative_error,
+      1e-14);
 
     // The paper's printed formulas (0-based index i = paper index - 1).
     // clang-format off
@@ -191,11 +193,11 @@ namespace hermite_tests
         for (unsigned int i = 0; i < 12; ++i)
           {
             paper_error[0][i] =
-                std::max(paper_error[0][i], std::abs(P[0][i] - N[i]));
+              std::max(paper_error[0][i], std::abs(P[0][i] - N[i]));
             paper_error[1][i] =
-                std::max(paper_error[1][i], std::abs(P[1][i] - dN[i][0]));
+              std::max(paper_error[1][i], std::abs(P[1][i] - dN[i][0]));
             paper_error[2][i] =
-                std::max(paper_error[2][i], std::abs(P[2][i] - dN[i][1]));
+              std::max(paper_error[2][i], std::abs(P[2][i] - dN[i][1]));
           }
       }
     double eq23 = 0, eq24_others = 0, eq25 = 0;
@@ -206,10 +208,12 @@ namespace hermite_tests
         if (i != 7 && i != 10)
           eq24_others = std::max(eq24_others, paper_error[1][i]);
       }
-    check.at_most(
-        "paper eq. 23 (N_1..N_12) as printed vs implemented", eq23, 1e-15);
-    check.at_most(
-        "paper eq. 25 (d/deta) as printed vs implemented", eq25, 1e-15);
+    check.at_most("paper eq. 23 (N_1..N_12) as printed vs implemented",
+                  eq23,
+                  1e-15);
+    check.at_most("paper eq. 25 (d/deta) as printed vs implemented",
+                  eq25,
+                  1e-15);
     check.at_most("paper eq. 24 (d/dxi) as printed, all but N_8 and N_11",
                   eq24_others,
                   1e-15);
@@ -242,21 +246,23 @@ namespace hermite_tests
         for (unsigned int i = 0; i < 12; ++i)
           {
             gradient_fd =
-                std::max({gradient_fd,
-                          std::abs((Np[i] - Nm[i]) / (2 * h) - dN[i][0]),
-                          std::abs((Nq[i] - Nr[i]) / (2 * h) - dN[i][1])});
-            hessian_fd = std::max(
-                {hessian_fd,
-                 std::abs((dNp[i][0] - dNm[i][0]) / (2 * h) - H[i][0]),
-                 std::abs((dNq[i][0] - dNr[i][0]) / (2 * h) - H[i][1]),
-                 std::abs((dNp[i][1] - dNm[i][1]) / (2 * h) - H[i][1]),
-                 std::abs((dNq[i][1] - dNr[i][1]) / (2 * h) - H[i][2])});
+              std::max({gradient_fd,
+                        std::abs((Np[i] - Nm[i]) / (2 * h) - dN[i][0]),
+                        std::abs((Nq[i] - Nr[i]) / (2 * h) - dN[i][1])});
+            hessian_fd =
+              std::max({hessian_fd,
+                        std::abs((dNp[i][0] - dNm[i][0]) / (2 * h) - H[i][0]),
+                        std::abs((dNq[i][0] - dNr[i][0]) / (2 * h) - H[i][1]),
+                        std::abs((dNp[i][1] - dNm[i][1]) / (2 * h) - H[i][1]),
+                        std::abs((dNq[i][1] - dNr[i][1]) / (2 * h) - H[i][2])});
           }
       }
-    check.at_most(
-        "gradients vs central differences (h = 1e-5)", gradient_fd, 1e-9);
-    check.at_most(
-        "Hessians vs central differences of the gradients", hessian_fd, 1e-9);
+    check.at_most("gradients vs central differences (h = 1e-5)",
+                  gradient_fd,
+                  1e-9);
+    check.at_most("Hessians vs central differences of the gradients",
+                  hessian_fd,
+                  1e-9);
 
     double unity = 0;
     for (const auto &x : samples)
@@ -264,8 +270,9 @@ namespace hermite_tests
         const auto N = HermiteQuadrilateral::reference_values(x[0], x[1]);
         unity = std::max(unity, std::abs(N[0] + N[3] + N[6] + N[9] - 1.0));
       }
-    check.at_most(
-        "partition of unity: max |sum_a N_a^value - 1|", unity, 1e-15);
+    check.at_most("partition of unity: max |sum_a N_a^value - 1|",
+                  unity,
+                  1e-15);
   }
 
 } // namespace hermite_tests

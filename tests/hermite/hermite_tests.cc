@@ -7,11 +7,12 @@
 //   g++ -std=c++17 -O2 -Wall -Wextra -I include source/fe/*.cc
 //       tests/hermite_tests.cc -o /tmp/hermite_tests && /tmp/hermite_tests
 
+#include <glissade/fe/gauss_rule.h>
+#include <glissade/fe/hermite_quadrilateral.h>
+
 #include <functional>
 #include <map>
 #include <string>
-#include <glissade/fe/gauss_rule.h>
-#include <glissade/fe/hermite_quadrilateral.h>
 
 #include "hermite_test_poisson.h"
 #include "hermite_test_reference.h"
@@ -39,13 +40,14 @@ namespace
                const double t0,
                const double t1)
   {
-    return HermiteQuadrilateral::from_parametrization(
-        polar, {r0, r1}, {t0, t1});
+    return HermiteQuadrilateral::from_parametrization(polar,
+                                                      {r0, r1},
+                                                      {t0, t1});
   }
 
   // A distorted, counterclockwise straight-sided quadrilateral.
   const std::array<Vector, 4> distorted_vertices = {
-      {{0.1, -0.2}, {1.3, 0.1}, {1.1, 1.4}, {-0.3, 0.9}}};
+    {{0.1, -0.2}, {1.3, 0.1}, {1.1, 1.4}, {-0.3, 0.9}}};
 
   // Physical dofs (value, d/dx, d/dy per node) of u = c0 + c . X.
   ShapeArray
@@ -92,12 +94,12 @@ namespace
     for (unsigned int v = 0; v < 4; ++v)
       {
         const unsigned int node =
-            HermiteQuadrilateral::node_from_dealii_vertex(v);
+          HermiteQuadrilateral::node_from_dealii_vertex(v);
         const Vector x = HermiteQuadrilateral::node_reference_point(node);
         mismatches +=
-            (x[0] != 2 * unit_vertex[v][0] - 1) +
-            (x[1] != 2 * unit_vertex[v][1] - 1) +
-            (HermiteQuadrilateral::dealii_vertex_from_node(node) != v);
+          (x[0] != 2 * unit_vertex[v][0] - 1) +
+          (x[1] != 2 * unit_vertex[v][1] - 1) +
+          (HermiteQuadrilateral::dealii_vertex_from_node(node) != v);
       }
     for (unsigned int f = 0; f < 4; ++f)
       {
@@ -105,17 +107,18 @@ namespace
         const auto nodes = HermiteQuadrilateral::edge_nodes(edge.edge);
         const unsigned int first = edge.reversed ? nodes[1] : nodes[0];
         const unsigned int last  = edge.reversed ? nodes[0] : nodes[1];
-        mismatches += (first != HermiteQuadrilateral::node_from_dealii_vertex(
-                                    face_vertices[f][0])) +
-                      (last != HermiteQuadrilateral::node_from_dealii_vertex(
-                                   face_vertices[f][1]));
+        mismatches +=
+          (first !=
+           HermiteQuadrilateral::node_from_dealii_vertex(face_vertices[f][0])) +
+          (last !=
+           HermiteQuadrilateral::node_from_dealii_vertex(face_vertices[f][1]));
         // The edge's reference points run from its first to its last node.
         for (const double s : {-1.0, 1.0})
           {
             const Vector x =
-                HermiteQuadrilateral::edge_reference_point(edge.edge, s);
-            const Vector n = HermiteQuadrilateral::node_reference_point(
-                nodes[s < 0 ? 0 : 1]);
+              HermiteQuadrilateral::edge_reference_point(edge.edge, s);
+            const Vector n =
+              HermiteQuadrilateral::node_reference_point(nodes[s < 0 ? 0 : 1]);
             mismatches += (x[0] != n[0]) + (x[1] != n[1]);
           }
       }
@@ -132,7 +135,7 @@ namespace
 
     // Straight sides with half edge vectors: exactly the bilinear map.
     const auto straight =
-        HermiteQuadrilateral::from_straight_sides(distorted_vertices);
+      HermiteQuadrilateral::from_straight_sides(distorted_vertices);
     double bilinear_point = 0, bilinear_jacobian = 0;
     for (unsigned int k = 0; k < 50; ++k)
       {
@@ -141,11 +144,15 @@ namespace
                                (1 + x) * (1 - e) / 4,
                                (1 + x) * (1 + e) / 4,
                                (1 - x) * (1 + e) / 4};
-        const double w_x[4] = {
-            -(1 - e) / 4, (1 - e) / 4, (1 + e) / 4, -(1 + e) / 4};
-        const double w_e[4] = {
-            -(1 - x) / 4, -(1 + x) / 4, (1 + x) / 4, (1 - x) / 4};
-        Vector X = {0, 0}, X_xi = {0, 0}, X_eta = {0, 0};
+        const double w_x[4] = {-(1 - e) / 4,
+                               (1 - e) / 4,
+                               (1 + e) / 4,
+                               -(1 + e) / 4};
+        const double w_e[4] = {-(1 - x) / 4,
+                               -(1 + x) / 4,
+                               (1 + x) / 4,
+                               (1 - x) / 4};
+        Vector       X = {0, 0}, X_xi = {0, 0}, X_eta = {0, 0};
         for (unsigned int a = 0; a < 4; ++a)
           for (unsigned int d = 0; d < 2; ++d)
             {
@@ -155,7 +162,7 @@ namespace
             }
         const auto J = straight.jacobian(x, e);
         bilinear_point =
-            std::max(bilinear_point, distance(straight.point(x, e), X));
+          std::max(bilinear_point, distance(straight.point(x, e), X));
         for (unsigned int d = 0; d < 2; ++d)
           bilinear_jacobian = std::max({bilinear_jacobian,
                                         std::abs(J[d][0] - X_xi[d]),
@@ -164,12 +171,13 @@ namespace
     check.at_most("straight sides: |X - bilinear map| at 50 random points",
                   bilinear_point,
                   1e-15);
-    check.at_most(
-        "straight sides: |J - bilinear Jacobian|", bilinear_jacobian, 1e-15);
+    check.at_most("straight sides: |J - bilinear Jacobian|",
+                  bilinear_jacobian,
+                  1e-15);
 
     const auto ring = ring_element(0.5, 2.0, 0.3, 0.5);
     const std::pair<const char *, const HermiteQuadrilateral *> elements[2] = {
-        {"distorted quad", &straight}, {"ring element", &ring}};
+      {"distorted quad", &straight}, {"ring element", &ring}};
     for (const auto &[name, element] : elements)
       {
         // Physical Kronecker: at node a, phi_a^x has gradient (1, 0) etc.
@@ -179,22 +187,22 @@ namespace
             const Vector x = HermiteQuadrilateral::node_reference_point(a);
             const auto   v = element->evaluate(x[0], x[1]);
             physical_kronecker =
-                std::max(physical_kronecker,
-                         distance(v.point, element->node_geometry(a).point));
+              std::max(physical_kronecker,
+                       distance(v.point, element->node_geometry(a).point));
             for (unsigned int i = 0; i < 12; ++i)
               {
                 const double expected[3] = {i == 3 * a ? 1.0 : 0.0,
                                             i == 3 * a + 1 ? 1.0 : 0.0,
                                             i == 3 * a + 2 ? 1.0 : 0.0};
                 physical_kronecker =
-                    std::max({physical_kronecker,
-                              std::abs(v.shape_values[i] - expected[0]),
-                              std::abs(v.shape_gradients[i][0] - expected[1]),
-                              std::abs(v.shape_gradients[i][1] - expected[2])});
+                  std::max({physical_kronecker,
+                            std::abs(v.shape_values[i] - expected[0]),
+                            std::abs(v.shape_gradients[i][0] - expected[1]),
+                            std::abs(v.shape_gradients[i][1] - expected[2])});
               }
           }
         check.at_most(std::string(name) +
-                          ": physical Kronecker (value, d/dx, d/dy)",
+                        ": physical Kronecker (value, d/dx, d/dy)",
                       physical_kronecker,
                       1e-13);
 
@@ -206,7 +214,7 @@ namespace
             const Vector     c    = {random.uniform(), random.uniform()};
             const ShapeArray dofs = linear_field_dofs(*element, c0, c);
             const auto       v =
-                element->evaluate(random.uniform(), random.uniform());
+              element->evaluate(random.uniform(), random.uniform());
             double sum  = 0;
             Vector grad = {0, 0};
             for (unsigned int i = 0; i < 12; ++i)
@@ -216,12 +224,12 @@ namespace
               }
             for (unsigned int a = 0; a < 4; ++a)
               sum += v.shape_values[3 * a];
-            unity       = std::max(unity, std::abs(sum - 1));
-            min_det     = std::min(min_det, v.jacobian_determinant);
-            value_error = std::max(
-                value_error,
-                std::abs(dot(dofs, v.shape_values) -
-                         (c0 + c[0] * v.point[0] + c[1] * v.point[1])));
+            unity   = std::max(unity, std::abs(sum - 1));
+            min_det = std::min(min_det, v.jacobian_determinant);
+            value_error =
+              std::max(value_error,
+                       std::abs(dot(dofs, v.shape_values) -
+                                (c0 + c[0] * v.point[0] + c[1] * v.point[1])));
             gradient_error = std::max(gradient_error, distance(grad, c));
           }
         check.at_most(std::string(name) + ": partition of unity (physical)",
@@ -233,8 +241,10 @@ namespace
         check.at_most(std::string(name) + ": linear field, max gradient error",
                       gradient_error,
                       1e-13);
-        check.between(
-            std::string(name) + ": min det J > 0", min_det, 1e-3, 1e3);
+        check.between(std::string(name) + ": min det J > 0",
+                      min_det,
+                      1e-3,
+                      1e3);
       }
 
     // The ring element's geometry: its arcs interpolate the circle. Print the
@@ -281,11 +291,11 @@ namespace
     // Two straight-sided elements sharing the edge between global nodes 1
     // and 2; element A's edge 1 (s up) is element B's edge 3 (s down).
     const std::array<Vector, 6> P = {
-        {{0, 0}, {1.1, 0.2}, {0.9, 1.2}, {-0.1, 0.8}, {2.0, -0.1}, {2.2, 1.1}}};
+      {{0, 0}, {1.1, 0.2}, {0.9, 1.2}, {-0.1, 0.8}, {2.0, -0.1}, {2.2, 1.1}}};
     const auto straight_a =
-        HermiteQuadrilateral::from_straight_sides({P[0], P[1], P[2], P[3]});
+      HermiteQuadrilateral::from_straight_sides({P[0], P[1], P[2], P[3]});
     const auto straight_b =
-        HermiteQuadrilateral::from_straight_sides({P[1], P[4], P[5], P[2]});
+      HermiteQuadrilateral::from_straight_sides({P[1], P[4], P[5], P[2]});
     // Two ring elements sharing the radial edge theta = 0.4, with different
     // angular widths; A's edge 2 (from r1 to r0) is B's edge 0 (r0 to r1).
     const auto ring_a = ring_element(1.0, 1.5, 0.3, 0.4);
@@ -299,14 +309,14 @@ namespace
       unsigned int                edge_a, edge_b;
     };
     const Pair pairs[2] = {
-        {"straight pair",
-         &straight_a,
-         &straight_b,
-         {0, 1, 2, 3},
-         {1, 4, 5, 2},
-         1,
-         3},
-        {"ring pair", &ring_a, &ring_b, {0, 1, 2, 3}, {3, 2, 4, 5}, 2, 0}};
+      {"straight pair",
+       &straight_a,
+       &straight_b,
+       {0, 1, 2, 3},
+       {1, 4, 5, 2},
+       1,
+       3},
+      {"ring pair", &ring_a, &ring_b, {0, 1, 2, 3}, {3, 2, 4, 5}, 2, 0}};
     for (const Pair &pair : pairs)
       {
         double trace = 0, weights = 0, edge_fd = 0;
@@ -319,9 +329,9 @@ namespace
               {
                 const double s = -1.0 + 2.0 * k / 20;
                 const auto   pa =
-                    pair.a->edge_point(pair.edge_a, s, da[0], da[1]);
+                  pair.a->edge_point(pair.edge_a, s, da[0], da[1]);
                 const auto pb =
-                    pair.b->edge_point(pair.edge_b, -s, db[0], db[1]);
+                  pair.b->edge_point(pair.edge_b, -s, db[0], db[1]);
                 trace = std::max(trace, distance(pa.position, pb.position));
                 // Weights of the same global dof agree; off-edge ones vanish.
                 std::vector<double> wa(18, 0.0), wb(18, 0.0);
@@ -335,28 +345,28 @@ namespace
                 // The edge tangent and its derivative against differences.
                 const double h = 1e-5;
                 const auto   pp =
-                    pair.a->edge_point(pair.edge_a, s + h, da[0], da[1]);
+                  pair.a->edge_point(pair.edge_a, s + h, da[0], da[1]);
                 const auto pm =
-                    pair.a->edge_point(pair.edge_a, s - h, da[0], da[1]);
+                  pair.a->edge_point(pair.edge_a, s - h, da[0], da[1]);
                 for (unsigned int d = 0; d < 2; ++d)
                   edge_fd = std::max(
-                      {edge_fd,
-                       std::abs((pp.position[d] - pm.position[d]) / (2 * h) -
-                                pa.tangent[d]),
-                       std::abs((pp.tangent[d] - pm.tangent[d]) / (2 * h) -
-                                pa.tangent_derivative[d])});
+                    {edge_fd,
+                     std::abs((pp.position[d] - pm.position[d]) / (2 * h) -
+                              pa.tangent[d]),
+                     std::abs((pp.tangent[d] - pm.tangent[d]) / (2 * h) -
+                              pa.tangent_derivative[d])});
               }
           }
         check.at_most(std::string(pair.name) +
-                          ": max |trace A - trace B| (deformed)",
+                        ": max |trace A - trace B| (deformed)",
                       trace,
                       1e-14);
         check.at_most(std::string(pair.name) +
-                          ": max |weight A - weight B| per dof",
+                        ": max |weight A - weight B| per dof",
                       weights,
                       1e-14);
         check.at_most(std::string(pair.name) +
-                          ": edge tangent, d tangent/ds vs diff.",
+                        ": edge tangent, d tangent/ds vs diff.",
                       edge_fd,
                       1e-8);
       }
@@ -372,9 +382,9 @@ namespace
         const Vector ta = ring_a.edge_point(1, 1.0, da[0], da[1]).tangent;
         const Vector tb = ring_b.edge_point(1, -1.0, db[0], db[1]).tangent;
         ring_kink =
-            std::max(ring_kink,
-                     std::abs(std::atan2(ta[0] * tb[1] - ta[1] * tb[0],
-                                         ta[0] * tb[0] + ta[1] * tb[1])));
+          std::max(ring_kink,
+                   std::abs(std::atan2(ta[0] * tb[1] - ta[1] * tb[0],
+                                       ta[0] * tb[0] + ta[1] * tb[1])));
         // Contrast: the straight pair's bottom boundary (edges 0) keeps its
         // kink at node 1 -- the C1 property needs parallel reference tangents.
         const auto sa   = gather(data, pairs[0].nodes_a),
@@ -382,17 +392,17 @@ namespace
         const Vector ua = straight_a.edge_point(0, 1.0, sa[0], sa[1]).tangent;
         const Vector ub = straight_b.edge_point(0, -1.0, sb[0], sb[1]).tangent;
         straight_kink =
-            std::max(straight_kink,
-                     std::abs(std::atan2(ua[0] * ub[1] - ua[1] * ub[0],
-                                         ua[0] * ub[0] + ua[1] * ub[1])));
+          std::max(straight_kink,
+                   std::abs(std::atan2(ua[0] * ub[1] - ua[1] * ub[0],
+                                       ua[0] * ub[0] + ua[1] * ub[1])));
       }
     check.at_most(
-        "ring pair, outer arc: max angle between deformed tangents (rad)",
-        ring_kink,
-        1e-14);
+      "ring pair, outer arc: max angle between deformed tangents (rad)",
+      ring_kink,
+      1e-14);
     std::printf(
-        "  (contrast) straight pair, bottom edges: max kink angle %.3f rad\n",
-        straight_kink);
+      "  (contrast) straight pair, bottom edges: max kink angle %.3f rad\n",
+      straight_kink);
 
     // Eq. 29: the nodal forces do the same virtual work as F at the point.
     const auto   data   = random_nodal_data(random, 4);
@@ -417,8 +427,9 @@ namespace
     double     weight_sum = 0;
     for (const auto &q : rule)
       weight_sum += q.weight;
-    check.at_most(
-        "3 x 3 rule: |sum of weights - 4|", std::abs(weight_sum - 4), 1e-14);
+    check.at_most("3 x 3 rule: |sum of weights - 4|",
+                  std::abs(weight_sum - 4),
+                  1e-14);
 
     std::printf("  ring element around r = 1.25, theta = 0.4, shrinking:\n"
                 "  %10s %10s %14s %7s\n",
@@ -430,13 +441,15 @@ namespace
     for (unsigned int level = 0; level <= 5; ++level)
       {
         const double dr = 0.5 / (1 << level), dt = 0.4 / (1 << level);
-        const auto   element = ring_element(
-            1.25 - dr / 2, 1.25 + dr / 2, 0.4 - dt / 2, 0.4 + dt / 2);
-        double area = 0;
+        const auto   element = ring_element(1.25 - dr / 2,
+                                          1.25 + dr / 2,
+                                          0.4 - dt / 2,
+                                          0.4 + dt / 2);
+        double       area    = 0;
         for (const auto &q : rule)
           area += q.weight * element.evaluate(q.xi, q.eta).jacobian_determinant;
         const double exact =
-            dt / 2 * (std::pow(1.25 + dr / 2, 2) - std::pow(1.25 - dr / 2, 2));
+          dt / 2 * (std::pow(1.25 + dr / 2, 2) - std::pow(1.25 - dr / 2, 2));
         const double error = std::abs(area - exact) / exact;
         if (level > 0)
           last_rate = rate(previous, error);
@@ -447,20 +460,24 @@ namespace
                     level > 0 ? last_rate : 0.0);
         previous = error;
       }
-    check.between(
-        "ring area: relative error rate (last halving)", last_rate, 3.8, 4.3);
+    check.between("ring area: relative error rate (last halving)",
+                  last_rate,
+                  3.8,
+                  4.3);
 
     // Spurious zero-energy modes: rank of element stiffness matrices.
     const auto ring = ring_element(0.5, 2.0, 0.3, 0.5);
     const auto straight =
-        HermiteQuadrilateral::from_straight_sides(distorted_vertices);
+      HermiteQuadrilateral::from_straight_sides(distorted_vertices);
     for (unsigned int n_points : {2u, 3u})
       for (const auto *element : {&straight, &ring})
         {
-          std::vector<std::vector<double>> laplace(
-              12, std::vector<double>(12, 0.0));
-          std::vector<std::vector<double>> elastic(
-              24, std::vector<double>(24, 0.0));
+          std::vector<std::vector<double>> laplace(12,
+                                                   std::vector<double>(12,
+                                                                       0.0));
+          std::vector<std::vector<double>> elastic(24,
+                                                   std::vector<double>(24,
+                                                                       0.0));
           for (const auto &q : glissade::tensor_gauss_rule(n_points))
             {
               const auto   v  = element->evaluate(q.xi, q.eta);
@@ -482,13 +499,13 @@ namespace
               for (unsigned int i = 0; i < 12; ++i)
                 for (unsigned int j = 0; j < 12; ++j)
                   laplace[i][j] +=
-                      (v.shape_gradients[i][0] * v.shape_gradients[j][0] +
-                       v.shape_gradients[i][1] * v.shape_gradients[j][1]) *
-                      dx;
+                    (v.shape_gradients[i][0] * v.shape_gradients[j][0] +
+                     v.shape_gradients[i][1] * v.shape_gradients[j][1]) *
+                    dx;
             }
           const std::string name =
-              std::to_string(n_points) + "x" + std::to_string(n_points) +
-              " rule, " + (element == &ring ? "ring" : "distorted quad");
+            std::to_string(n_points) + "x" + std::to_string(n_points) +
+            " rule, " + (element == &ring ? "ring" : "distorted quad");
           const unsigned int rank_laplace = numerical_rank(laplace, 1e-12);
           const unsigned int rank_elastic = numerical_rank(elastic, 1e-12);
           if (n_points == 3)
@@ -537,7 +554,7 @@ namespace
     const auto trapezoids = [](unsigned int n) {
       return straight_sided_mesh(n, [n](unsigned int i, unsigned int j) {
         const double shift =
-            (j == 0 || j == n) ? 0.0 : ((i + j) % 2 ? 0.2 : -0.2);
+          (j == 0 || j == n) ? 0.0 : ((i + j) % 2 ? 0.2 : -0.2);
         return Vector{double(i) / n, (j + shift) / n};
       });
     };
@@ -590,8 +607,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Checker check;
-  Random  random;
+  Checker                                            check;
+  Random                                             random;
   const std::map<std::string, std::function<void()>> groups = {
     {"reference_functions", [&] { test_reference_functions(check, random); }},
     {"numbering", [&] { test_numbering(check); }},

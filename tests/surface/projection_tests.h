@@ -4,9 +4,9 @@
 #ifndef glissade_tests_projection_tests_h
 #define glissade_tests_projection_tests_h
 
-#include "surface_test_tools.h"
-
 #include <stdexcept>
+
+#include "surface_test_tools.h"
 
 namespace surface_test_tools
 {
@@ -49,15 +49,15 @@ namespace surface_test_tools
             // possible, reported only); mode 2: anywhere, global search.
             curve->set_global_search(mode == 2);
             unsigned int not_closest = 0, not_orthogonal = 0, iterations = 0;
-            double       excess      = 0.;
+            double       excess = 0.;
             for (unsigned int trial = 0; trial < 300; ++trial)
               {
                 Point x;
                 if (mode == 0)
                   {
                     const double t = random.uniform(0., 2. * pi);
-                    const double r = 1. + 0.25 * std::sin(5. * t) +
-                                     random.uniform(-0.1, 0.1);
+                    const double r =
+                      1. + 0.25 * std::sin(5. * t) + random.uniform(-0.1, 0.1);
                     x = {{r * std::cos(t), r * std::sin(t)}};
                   }
                 else
@@ -228,9 +228,10 @@ namespace surface_test_tools
         for (unsigned int m = 0; m <= 100; ++m)
           {
             const double phi = pi * (0.02 + 0.96 * (m + 0.618) / 101.);
-            const Point  x   = {{1.1 * R * std::cos(phi), 1.1 * R * std::sin(phi)}};
-            const double e   = std::abs(curve->project(x).gap - 0.1 * R);
-            whole[i]         = std::max(whole[i], e);
+            const Point  x   = {
+                 {1.1 * R * std::cos(phi), 1.1 * R * std::sin(phi)}};
+            const double e = std::abs(curve->project(x).gap - 0.1 * R);
+            whole[i]       = std::max(whole[i], e);
             if (phi > pi / 4 && phi < 3 * pi / 4)
               middle[i] = std::max(middle[i], e);
           }
@@ -254,14 +255,14 @@ namespace surface_test_tools
   test_projection_robustness()
   {
     std::printf("\nProjection: awkward cases\n");
-    const unsigned int cap = MasterCurve::max_newton_iterations;
-    const auto sane = [cap](const MasterCurve::Projection &pr) {
+    const unsigned int cap  = MasterCurve::max_newton_iterations;
+    const auto         sane = [cap](const MasterCurve::Projection &pr) {
       return finite(pr) && pr.newton_iterations <= cap;
     };
 
     // A closed B-spline circle, R = 1, 24 nodes.
-    const auto circle = make_curve("bspline", true, circle_points(24, 1.));
-    const auto &nodes = circle->nodes();
+    const auto  circle = make_curve("bspline", true, circle_points(24, 1.));
+    const auto &nodes  = circle->nodes();
     {
       const auto pr = circle->project(nodes[5]);
       check(sane(pr) && pr.valid && pr.segment == 5 && pr.s == 0. &&
@@ -312,9 +313,9 @@ namespace surface_test_tools
     {
       // Spline errors for N = 24 (see the convergence table): position
       // ~2e-5, normal ~2e-4, so the foot of a far point moves by ~2e-4 R.
-      const Point  x  = {{1e6, 3e5}};
-      const auto   pr = circle->project(x);
-      const double r  = std::hypot(x[0], x[1]);
+      const Point  x    = {{1e6, 3e5}};
+      const auto   pr   = circle->project(x);
+      const double r    = std::hypot(x[0], x[1]);
       const double foot = distance(pr.point, Point{{x[0] / r, x[1] / r}});
       check(sane(pr) && pr.valid && foot < 1e-3 &&
               std::abs(pr.gap - (r - 1.)) < 1e-4,
@@ -363,7 +364,10 @@ namespace surface_test_tools
       }
 
     // A faceted square, clockwise: (0,0) (0,1) (1,1) (1,0).
-    const std::vector<Point> square = {{{0., 0.}}, {{0., 1.}}, {{1., 1.}}, {{1., 0.}}};
+    const std::vector<Point> square = {{{0., 0.}},
+                                       {{0., 1.}},
+                                       {{1., 1.}},
+                                       {{1., 0.}}};
     FacetedCurve             box(true);
     box.update(square);
     {
@@ -385,7 +389,8 @@ namespace surface_test_tools
       const auto axis   = box.project(Point{{0.9, 0.9}});
       check(inside.segment == 2 && std::abs(inside.gap + 0.1) < 1e-15 &&
               !inside.on_vertex && axis.segment == 1 &&
-              std::abs(axis.s - 0.9) < 1e-15 && std::abs(axis.gap + 0.1) < 1e-15,
+              std::abs(axis.s - 0.9) < 1e-15 &&
+              std::abs(axis.gap + 0.1) < 1e-15,
             "inside the corner: segment %u gap %.3f; on the bisector (tie): "
             "segment %u (lower index) s = %.3f",
             inside.segment,
@@ -402,10 +407,11 @@ namespace surface_test_tools
         {
           const auto curve = make_curve(kind, closed, doubled);
           bool       ok    = true;
-          for (const Point &x : {doubled[4],
-                                 Point{{1.2 * doubled[4][0], 1.2 * doubled[4][1]}},
-                                 Point{{0.8 * doubled[4][0], 0.8 * doubled[4][1]}},
-                                 Point{{1.1 * doubled[3][0], 1.1 * doubled[3][1]}}})
+          for (const Point &x :
+               {doubled[4],
+                Point{{1.2 * doubled[4][0], 1.2 * doubled[4][1]}},
+                Point{{0.8 * doubled[4][0], 0.8 * doubled[4][1]}},
+                Point{{1.1 * doubled[3][0], 1.1 * doubled[3][1]}}})
             {
               const auto pr = curve->project(x);
               ok &= sane(pr) && pr.valid;
@@ -466,7 +472,8 @@ namespace surface_test_tools
     // (a local minimum): the documented limitation of the default search,
     // lifted by set_global_search(true).
     FacetedCurve hook2(false);
-    hook2.update({{{0., 0.}}, {{10., 0.}}, {{10., 1.}}, {{4., 1.}}, {{4., 0.2}}});
+    hook2.update(
+      {{{0., 0.}}, {{10., 0.}}, {{10., 1.}}, {{4., 1.}}, {{4., 0.2}}});
     const Point x2    = {{6., 0.45}};
     const auto  local = hook2.project(x2);
     hook2.set_global_search(true);

@@ -87,7 +87,7 @@ namespace surface_test_tools
   // Dense Gaussian elimination with partial pivoting: solves M X = B for
   // several right hand sides (the columns of B), in place.
   inline void
-  dense_solve(std::vector<std::vector<double>> M,
+  dense_solve(std::vector<std::vector<double>>  M,
               std::vector<std::vector<double>> &B)
   {
     const unsigned int n = M.size(), m = B[0].size();
@@ -190,7 +190,7 @@ namespace surface_test_tools
         unsigned int a = (i == 0 ? (closed ? n - 1 : 0) : i - 1);
         unsigned int b = (i == n - 1 ? (closed ? 0 : n - 1) : i + 1);
         const double f = (a == i || b == i) ? 1. : 0.5;
-        d[i] = {{f * (p[b][0] - p[a][0]), f * (p[b][1] - p[a][1])}};
+        d[i]           = {{f * (p[b][0] - p[a][0]), f * (p[b][1] - p[a][1])}};
       }
     return d;
   }

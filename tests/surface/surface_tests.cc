@@ -9,6 +9,7 @@
 
 #include <map>
 #include <string>
+
 #include "surface_test_tools.h"
 
 using namespace surface_test_tools;
@@ -35,14 +36,14 @@ namespace
     for (const bool closed : {false, true})
       for (const unsigned int n : {5u, 17u, 200u})
         {
-          const auto p = closed ? closed_points(n, random) :
-                                  open_points(n, random);
+          const auto p =
+            closed ? closed_points(n, random) : open_points(n, random);
           BSplineCurve curve(end_condition(closed));
           curve.update(p);
 
           // Unknowns Q_{-1} .. Q_{m} stored at index i + 1, m data points.
-          const unsigned int m    = closed ? n + 1 : n;
-          const unsigned int size = m + 2;
+          const unsigned int               m    = closed ? n + 1 : n;
+          const unsigned int               size = m + 2;
           std::vector<std::vector<double>> A(size,
                                              std::vector<double>(size, 0.));
           std::vector<std::vector<double>> B(size, std::vector<double>(2, 0.));
@@ -121,8 +122,8 @@ namespace
     for (const bool closed : {false, true})
       for (const unsigned int n : {5u, 17u, 200u})
         {
-          const auto p = closed ? closed_points(n, random) :
-                                  open_points(n, random);
+          const auto p =
+            closed ? closed_points(n, random) : open_points(n, random);
           BSplineCurve curve(end_condition(closed));
           curve.update(p);
           const unsigned int n_seg = curve.n_segments();
@@ -147,11 +148,11 @@ namespace
             {
               if (i + 1 == n_seg && !closed)
                 break;
-              const unsigned int j = (i + 1) % n_seg;
+              const unsigned int j    = (i + 1) % n_seg;
               const double       d[3] = {
-                distance(curve.value(i, 1.), curve.value(j, 0.)),
-                distance(curve.derivative(i, 1.), curve.derivative(j, 0.)),
-                distance(curve.second_derivative(i, 1.),
+                      distance(curve.value(i, 1.), curve.value(j, 0.)),
+                      distance(curve.derivative(i, 1.), curve.derivative(j, 0.)),
+                      distance(curve.second_derivative(i, 1.),
                          curve.second_derivative(j, 0.))};
               for (unsigned int k = 0; k < 3; ++k)
                 {
@@ -202,8 +203,8 @@ namespace
                           n_out);
           std::vector<Point> p;
           for (double ti : t)
-            p.push_back({{origin[0] + ti * direction[0],
-                          origin[1] + ti * direction[1]}});
+            p.push_back(
+              {{origin[0] + ti * direction[0], origin[1] + ti * direction[1]}});
           const auto curve = make_curve(kind, closed, p);
 
           double off_line = 0.;
@@ -237,11 +238,11 @@ namespace
           {
             if (n == 2000 && kind != "bspline")
               continue;
-            const auto p = closed ? closed_points(n, random) :
-                                    open_points(n, random);
-            const auto curve = make_curve(kind, closed, p);
+            const auto p =
+              closed ? closed_points(n, random) : open_points(n, random);
+            const auto curve        = make_curve(kind, closed, p);
             double     reproduction = 0., unity = 0., hat = 0., derivative = 0.;
-            std::size_t          widest = 0;
+            std::size_t              widest = 0;
             MasterCurve::NodeWeights w;
             for (unsigned int trial = 0; trial < 40; ++trial)
               {
@@ -250,7 +251,7 @@ namespace
                            unsigned(random.uniform() * curve->n_segments()));
                 const double s = (trial < 2 ? double(trial) : random.uniform());
                 curve->weights(segment, s, w);
-                widest = std::max(widest, w.size());
+                widest       = std::max(widest, w.size());
                 Point  sum   = {{0., 0.}};
                 double total = 0.;
                 for (const auto &[j, phi] : w)
@@ -261,10 +262,10 @@ namespace
                   }
                 if (kind == "hermite")
                   {
-                    const auto *h = dynamic_cast<const HermiteCurve *>(
-                      curve.get());
-                    const auto tw = h->tangent_weights(segment, s);
-                    const auto &d = h->segment_tangents(segment);
+                    const auto *h =
+                      dynamic_cast<const HermiteCurve *>(curve.get());
+                    const auto  tw = h->tangent_weights(segment, s);
+                    const auto &d  = h->segment_tangents(segment);
                     for (unsigned int k = 0; k < 2; ++k)
                       {
                         sum[0] += tw[k] * d[k][0];
@@ -289,9 +290,10 @@ namespace
                   }
                 if (kind == "hermite")
                   {
-                    const auto *h = dynamic_cast<const HermiteCurve *>(
-                      curve.get());
-                    const auto tw = h->tangent_weights_and_derivatives(segment, s);
+                    const auto *h =
+                      dynamic_cast<const HermiteCurve *>(curve.get());
+                    const auto tw =
+                      h->tangent_weights_and_derivatives(segment, s);
                     const auto &d = h->segment_tangents(segment);
                     for (unsigned int k = 0; k < 2; ++k)
                       {
@@ -299,21 +301,20 @@ namespace
                         slope[1] += tw[2 + k] * d[k][1];
                       }
                   }
-                const Point  dc = curve->derivative(segment, s);
-                derivative = std::max(derivative,
+                const Point dc = curve->derivative(segment, s);
+                derivative     = std::max(derivative,
                                       distance(slope, dc) /
                                         std::max(1., std::hypot(dc[0], dc[1])));
 
                 const auto  u = curve->underlying_segment_weights(segment, s);
-                const auto  ends = curve->segment_nodes(segment);
+                const auto  ends  = curve->segment_nodes(segment);
                 const Point chord = {
                   {(1 - s) * p[ends[0]][0] + s * p[ends[1]][0],
                    (1 - s) * p[ends[0]][1] + s * p[ends[1]][1]}};
-                const Point from_hats = {
-                  {u[0].second * p[u[0].first][0] +
-                     u[1].second * p[u[1].first][0],
-                   u[0].second * p[u[0].first][1] +
-                     u[1].second * p[u[1].first][1]}};
+                const Point from_hats = {{u[0].second * p[u[0].first][0] +
+                                            u[1].second * p[u[1].first][0],
+                                          u[0].second * p[u[0].first][1] +
+                                            u[1].second * p[u[1].first][1]}};
                 hat = std::max(hat, distance(chord, from_hats));
               }
             check(reproduction < 1e-13 && unity < 1e-13 && hat < 1e-15 &&
@@ -346,11 +347,11 @@ namespace
     for (const std::string kind : {"faceted", "bspline", "hermite"})
       for (const bool closed : {false, true})
         {
-          const auto p = closed ? closed_points(17, random) :
-                                  open_points(17, random);
-          const auto curve = make_curve(kind, closed, p);
+          const auto p =
+            closed ? closed_points(17, random) : open_points(17, random);
+          const auto curve       = make_curve(kind, closed, p);
           double     point_error = 0., s_error = 0., gap = 0.;
-          bool       all_recovered = true;
+          bool       all_recovered   = true;
           unsigned   most_iterations = 0;
           for (unsigned int trial = 0; trial < 200; ++trial)
             {
@@ -390,13 +391,13 @@ namespace
   print_timings()
   {
     std::printf("\nTimings (closed B-spline, N = 2000)\n");
-    using clock            = std::chrono::steady_clock;
-    const unsigned int n   = 2000;
-    const auto         p   = circle_points(n, 1.);
+    using clock          = std::chrono::steady_clock;
+    const unsigned int n = 2000;
+    const auto         p = circle_points(n, 1.);
     BSplineCurve       curve(EndCondition::periodic);
     curve.update(p); // first call: also builds the factorisation for N
 
-    std::vector<Point> moved = p;
+    std::vector<Point> moved     = p;
     const unsigned int n_updates = 200;
     auto               start     = clock::now();
     for (unsigned int k = 0; k < n_updates; ++k)
@@ -415,8 +416,8 @@ namespace
         const double r = random.uniform(0.95, 1.05);
         xi             = {{r * std::cos(t), r * std::sin(t)}};
       }
-    start           = clock::now();
-    double checksum = 0.;
+    start                        = clock::now();
+    double              checksum = 0.;
     std::vector<double> gaps;
     for (const auto &xi : x)
       {
@@ -429,7 +430,7 @@ namespace
 
     curve.set_global_search(true);
     double difference = 0.;
-    start = clock::now();
+    start             = clock::now();
     for (const auto &xi : x)
       difference =
         std::max(difference,
@@ -487,5 +488,7 @@ main(int argc, char **argv)
     }
   groups.at(argv[1])();
   std::printf("\n%u checks, %u failed\n", n_checks, n_failures);
-  return n_failures == 0 && n_checks + (std::string(argv[1]) == "timings") > 0 ? 0 : 1;
+  return n_failures == 0 && n_checks + (std::string(argv[1]) == "timings") > 0 ?
+           0 :
+           1;
 }

@@ -10,14 +10,14 @@ namespace glissade
    */
   namespace timing
   {
-    inline constexpr const char *assembly      = "assembly of residual and tangent";
+    inline constexpr const char *assembly = "assembly of residual and tangent";
     inline constexpr const char *factorization = "factorization";
     inline constexpr const char *predictor     = "predictor solve";
-    inline constexpr const char *detection     = "contact detection and projection";
-    inline constexpr const char *surface       = "master surface build";
-    inline constexpr const char *compliance    = "compliance matrix W";
-    inline constexpr const char *local_solve   = "local bi-potential solve";
-    inline constexpr const char *output        = "output (VTU, PVD, CSV)";
-    inline constexpr const char *checkpoints   = "checkpoints";
+    inline constexpr const char *detection = "contact detection and projection";
+    inline constexpr const char *surface   = "master surface build";
+    inline constexpr const char *compliance  = "compliance matrix W";
+    inline constexpr const char *local_solve = "local bi-potential solve";
+    inline constexpr const char *output      = "output (VTU, PVD, CSV)";
+    inline constexpr const char *checkpoints = "checkpoints";
   } // namespace timing
 } // namespace glissade

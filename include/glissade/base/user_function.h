@@ -17,11 +17,11 @@ namespace glissade
    * expression, the time and the point.
    */
   double
-  checked_user_value(double                    value,
-                     const std::string        &entry,
-                     const std::string        &expression,
-                     double                    time,
-                     const dealii::Point<2>   &X);
+  checked_user_value(double                  value,
+                     const std::string      &entry,
+                     const std::string      &expression,
+                     double                  time,
+                     const dealii::Point<2> &X);
 
   /**
    * The user's expressions of x, y and t from one .prm entry (loads,
@@ -35,7 +35,8 @@ namespace glissade
                  const std::string              &entry);
 
     double
-    value(const dealii::Point<2> &X, const unsigned int component) const override;
+    value(const dealii::Point<2> &X,
+          const unsigned int      component) const override;
 
   private:
     mutable dealii::FunctionParser<2> parser;

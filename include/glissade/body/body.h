@@ -115,7 +115,8 @@ namespace glissade
 
     /** Solves K du = rhs; constrained dofs get their prescribed increment. */
     void
-    solve(const dealii::Vector<double> &rhs, dealii::Vector<double> &increment) const;
+    solve(const dealii::Vector<double> &rhs,
+          dealii::Vector<double>       &increment) const;
 
     /**
      * The response to an external force vector f with the supports held:
@@ -123,7 +124,8 @@ namespace glissade
      * prescribed part. The contact compliance columns K^-1 H^T.
      */
     void
-    solve_homogeneous(const dealii::Vector<double> &force, dealii::Vector<double> &x) const;
+    solve_homogeneous(const dealii::Vector<double> &force,
+                      dealii::Vector<double>       &x) const;
 
     /**
      * The dofs that contact may load (declared contact areas). When the
@@ -132,7 +134,8 @@ namespace glissade
      * contact dofs -- comes from the factorisation itself.
      */
     void
-    set_contact_dofs(const std::vector<dealii::types::global_dof_index> &contact_dofs);
+    set_contact_dofs(
+      const std::vector<dealii::types::global_dof_index> &contact_dofs);
 
     /**
      * The compliance between contact dofs, the contact block of the body's
@@ -144,9 +147,10 @@ namespace glissade
      * kept for the current factorisation.
      */
     void
-    compliance_block(const std::vector<dealii::types::global_dof_index> &rows,
-                     const std::vector<dealii::types::global_dof_index> &columns,
-                     std::vector<double>                        &block);
+    compliance_block(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns,
+      std::vector<double>                                &block);
 
     /**
      * Contact forces acting on the body (from the last contact solve); the
@@ -312,33 +316,33 @@ namespace glissade
 
   private:
     void
-    assemble_surface_loads(const typename dealii::DoFHandler<2>::active_cell_iterator
-                                                   &cell,
-                           const std::vector<dealii::types::global_dof_index> &local_dofs,
-                           CellEvaluator           &evaluator,
-                           dealii::FullMatrix<double>      &cell_matrix,
-                           dealii::Vector<double>          &cell_rhs) const;
+    assemble_surface_loads(
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      const std::vector<dealii::types::global_dof_index>         &local_dofs,
+      CellEvaluator                                              &evaluator,
+      dealii::FullMatrix<double>                                 &cell_matrix,
+      dealii::Vector<double> &cell_rhs) const;
 
     const BodyDescription               description;
     std::string                         problem;
     const std::string                   source;
-    dealii::Triangulation<2>                    mesh;
+    dealii::Triangulation<2>            mesh;
     BoundaryNames                       boundary_names;
     std::unique_ptr<ElementSpace>       element_space;
-    dealii::DoFHandler<2>                       dofs;
+    dealii::DoFHandler<2>               dofs;
     std::unique_ptr<BodyMaterials>      materials;
     std::unique_ptr<BoundaryConditions> boundary_conditions;
     double                              reference_size = 1.;
     double                              time           = 0.;
 
     dealii::AffineConstraints<double> element_constraints; // the space's own
-    dealii::AffineConstraints<double> constraints;         // plus Dirichlet data
+    dealii::AffineConstraints<double> constraints; // plus Dirichlet data
     dealii::SparsityPattern           sparsity;
     dealii::SparseMatrix<double>      tangent;
-    DirectSolver              factorization;
+    DirectSolver                      factorization;
 
     /** See free_rigid_motions() and regularization(). */
-    std::vector<RigidMotion>                                free_motions;
+    std::vector<RigidMotion> free_motions;
     std::vector<std::pair<dealii::types::global_dof_index, double>> springs;
 
     /**
@@ -347,26 +351,28 @@ namespace glissade
      * there).
      */
     void
-    choose_spring_dofs(const std::vector<dealii::types::global_dof_index> &contact_dofs);
+    choose_spring_dofs(
+      const std::vector<dealii::types::global_dof_index> &contact_dofs);
 
     /**
      * Per contact dof, the free unknowns it follows (itself, or the entries
      * of its constraint line) with weights, as positions among the
      * factorisation's last unknowns once prepared.
      */
-    std::vector<long>                                       contact_position;
-    std::vector<std::vector<std::pair<long, double>>>       contact_rows;
-    std::vector<std::vector<std::pair<long, double>>>       contact_rows_resolved;
+    std::vector<long>                                 contact_position;
+    std::vector<std::vector<std::pair<long, double>>> contact_rows;
+    std::vector<std::vector<std::pair<long, double>>> contact_rows_resolved;
     /** solve_homogeneous(e_dof) of the current factorisation, by dof. */
-    std::map<dealii::types::global_dof_index, dealii::Vector<double>>       compliance_columns;
+    std::map<dealii::types::global_dof_index, dealii::Vector<double>>
+      compliance_columns;
 
     dealii::Vector<double> solution;
     dealii::Vector<double> stored_solution;
-    dealii::Vector<double> system_rhs;       // F_ext - F_int, constrained
+    dealii::Vector<double> system_rhs;             // F_ext - F_int, constrained
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
     dealii::Vector<double> contact_forces;         // H^T r, all dofs
     dealii::Vector<double> stored_contact_forces;
-    double         internal_force_norm = 0.;
-    double         external_force_norm = 0.;
+    double                 internal_force_norm = 0.;
+    double                 external_force_norm = 0.;
   };
 } // namespace glissade

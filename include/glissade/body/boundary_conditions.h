@@ -25,15 +25,15 @@ namespace glissade
    */
   struct Location
   {
-    bool               is_vertex = false;
+    bool                       is_vertex = false;
     dealii::types::boundary_id boundary  = 0;
-    unsigned int       vertex    = 0;
+    unsigned int               vertex    = 0;
     dealii::Point<2>           point;
     /** A point inside a straight boundary face (point loads only). */
-    bool         on_face     = false;
-    unsigned int cell_index  = 0; // active cell index
-    unsigned int face        = 0;
-    double       fraction    = 0.; // from the face's vertex 0 to vertex 1
+    bool         on_face    = false;
+    unsigned int cell_index = 0; // active cell index
+    unsigned int face       = 0;
+    double       fraction   = 0.; // from the face's vertex 0 to vertex 1
   };
 
   /**
@@ -44,8 +44,8 @@ namespace glissade
   class BoundaryConditions
   {
   public:
-    BoundaryConditions(const BodyDescription  &body,
-                       const BoundaryNames    &boundary_names,
+    BoundaryConditions(const BodyDescription          &body,
+                       const BoundaryNames            &boundary_names,
                        const dealii::Triangulation<2> &triangulation);
 
     /**
@@ -55,12 +55,13 @@ namespace glissade
      * of an increment.
      */
     void
-    make_constraints(const dealii::DoFHandler<2>             &dof_handler,
-                     const ElementSpace              &space,
-                     const double                     time,
-                     const dealii::Vector<double>            &current_displacement,
-                     const dealii::AffineConstraints<double> &element_constraints,
-                     dealii::AffineConstraints<double>       &constraints) const;
+    make_constraints(
+      const dealii::DoFHandler<2>             &dof_handler,
+      const ElementSpace                      &space,
+      const double                             time,
+      const dealii::Vector<double>            &current_displacement,
+      const dealii::AffineConstraints<double> &element_constraints,
+      dealii::AffineConstraints<double>       &constraints) const;
 
     /**
      * How much each Dirichlet relation would be violated by each motion of
@@ -69,21 +70,21 @@ namespace glissade
      * leaves every row zero is one the supports do not hold.
      */
     std::vector<std::vector<double>>
-    support_rows(const dealii::DoFHandler<2>                   &dof_handler,
-                 const ElementSpace                    &space,
-                 const std::array<RigidMotion, 3>      &basis) const;
+    support_rows(const dealii::DoFHandler<2>      &dof_handler,
+                 const ElementSpace               &space,
+                 const std::array<RigidMotion, 3> &basis) const;
 
     /** Point loads at time t, as a vector of nodal forces. */
     void
     add_point_loads(const dealii::DoFHandler<2> &dof_handler,
-                    const ElementSpace  &space,
-                    const double         time,
+                    const ElementSpace          &space,
+                    const double                 time,
                     dealii::Vector<double>      &external_forces) const;
 
     struct SurfaceLoad
     {
-      dealii::types::boundary_id                 boundary;
-      bool                               is_pressure;
+      dealii::types::boundary_id           boundary;
+      bool                                 is_pressure;
       std::shared_ptr<dealii::Function<2>> function; // time set by the caller
     };
 
@@ -100,47 +101,49 @@ namespace glissade
      * (0: computed here), scales the tolerance of "on a vertex".
      */
     static Location
-    resolve(const std::string      &location,
-            const BoundaryNames    &boundary_names,
+    resolve(const std::string              &location,
+            const BoundaryNames            &boundary_names,
             const dealii::Triangulation<2> &triangulation,
-            const std::string      &body_name,
-            const std::string      &entry,
-            const bool              allow_face_point = false,
-            const double            known_diameter   = 0.);
+            const std::string              &body_name,
+            const std::string              &entry,
+            const bool                      allow_face_point = false,
+            const double                    known_diameter   = 0.);
 
     /** The two global value dofs (x, y) at vertex v of a cell. */
     static std::array<dealii::types::global_dof_index, 2>
-    cell_vertex_dofs(const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
-                     const unsigned int                                  v,
-                     const ElementSpace                                 &space);
+    cell_vertex_dofs(
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      const unsigned int                                          v,
+      const ElementSpace                                         &space);
 
     /** The two global value dofs (x, y) at a mesh vertex. */
     static std::array<dealii::types::global_dof_index, 2>
     vertex_dofs(const dealii::DoFHandler<2> &dof_handler,
-                const ElementSpace  &space,
-                const unsigned int   vertex);
+                const ElementSpace          &space,
+                const unsigned int           vertex);
 
   private:
     struct DirichletItem
     {
-      Location                          where;
-      std::array<bool, 2>               components;
-      bool                              all_derivatives;
-      std::shared_ptr<dealii::Function<2>>      displacement; // 2 components
+      Location                             where;
+      std::array<bool, 2>                  components;
+      bool                                 all_derivatives;
+      std::shared_ptr<dealii::Function<2>> displacement; // 2 components
       /** n or t supports: each node and the direction held there. */
-      std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>> directed_vertices;
+      std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>>
+        directed_vertices;
     };
 
     /** The nodes of a location and the (unit) direction d with d . u = 0. */
     static std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>>
     support_directions(const Location                       &where,
                        const DirichletDescription::Direction direction,
-                       const dealii::Triangulation<2>               &tria,
+                       const dealii::Triangulation<2>       &tria,
                        const std::string                    &body_name,
                        const std::string                    &entry);
     struct PointLoad
     {
-      Location                           where;
+      Location                             where;
       std::shared_ptr<dealii::Function<2>> force;
     };
 
@@ -151,10 +154,11 @@ namespace glissade
      */
     std::array<dealii::types::global_dof_index, 2>
     cached_vertex_dofs(const dealii::DoFHandler<2> &dof_handler,
-                       const ElementSpace  &space,
-                       const unsigned int   vertex) const;
+                       const ElementSpace          &space,
+                       const unsigned int           vertex) const;
 
-    mutable std::map<unsigned int, std::array<dealii::types::global_dof_index, 2>>
+    mutable std::map<unsigned int,
+                     std::array<dealii::types::global_dof_index, 2>>
       vertex_dof_cache;
 
     std::vector<DirichletItem> dirichlet_items;

@@ -19,14 +19,14 @@ namespace glissade
   struct RigidMotion
   {
     dealii::Tensor<1, 2> translation;
-    double       rotation = 0.;
+    double               rotation = 0.;
     dealii::Point<2>     center;
 
     dealii::Tensor<1, 2>
     at(const dealii::Point<2> &X) const
     {
-      return translation +
-             rotation * dealii::Tensor<1, 2>({-(X[1] - center[1]), X[0] - center[0]});
+      return translation + rotation * dealii::Tensor<1, 2>({-(X[1] - center[1]),
+                                                            X[0] - center[0]});
     }
 
     /**
@@ -58,5 +58,6 @@ namespace glissade
    * row. Small problems only (n is three per body).
    */
   std::vector<std::vector<double>>
-  null_space(const std::vector<std::vector<double>> &rows, const unsigned int n);
+  null_space(const std::vector<std::vector<double>> &rows,
+             const unsigned int                      n);
 } // namespace glissade

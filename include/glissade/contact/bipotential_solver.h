@@ -303,10 +303,10 @@ namespace glissade
    */
   BiPotentialSolver::Residuals
   compute_contact_residuals(
-      const ComplianceMatrix                        &W,
-      const std::vector<BiPotentialSolver::Vector2> &u_free,
-      const std::vector<double>                     &mu,
-      const std::vector<BiPotentialSolver::Vector2> &r,
-      double                                         force_to_length_scale,
-      std::vector<BiPotentialSolver::Vector2>       *displacement = nullptr);
+    const ComplianceMatrix                        &W,
+    const std::vector<BiPotentialSolver::Vector2> &u_free,
+    const std::vector<double>                     &mu,
+    const std::vector<BiPotentialSolver::Vector2> &r,
+    double                                         force_to_length_scale,
+    std::vector<BiPotentialSolver::Vector2>       *displacement = nullptr);
 } // namespace glissade

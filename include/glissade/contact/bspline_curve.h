@@ -43,19 +43,26 @@ namespace glissade
 
     explicit BSplineCurve(EndCondition end_condition);
 
-    void update(const std::vector<Point> &nodes) override;
+    void
+    update(const std::vector<Point> &nodes) override;
 
-    unsigned int n_segments() const override;
-    bool         is_closed() const override;
+    unsigned int
+    n_segments() const override;
+    bool
+    is_closed() const override;
 
-    Point value(unsigned int segment, double s) const override;
-    Point derivative(unsigned int segment, double s) const override;
-    Point second_derivative(unsigned int segment, double s) const override;
-    void  evaluate(unsigned int segment,
-                   double       s,
-                   Point       &value,
-                   Point       &first_derivative,
-                   Point       &second_derivative) const override;
+    Point
+    value(unsigned int segment, double s) const override;
+    Point
+    derivative(unsigned int segment, double s) const override;
+    Point
+    second_derivative(unsigned int segment, double s) const override;
+    void
+    evaluate(unsigned int segment,
+             double       s,
+             Point       &value,
+             Point       &first_derivative,
+             Point       &second_derivative) const override;
 
     /**
      * phi_j = sum_k b_k(s) (A^-1)_{q(p-1+k), j}: every node influences every
@@ -63,40 +70,45 @@ namespace glissade
      * so only about 25 nodes on each side survive the 1e-14 cut. See
      * inverse_entry() for how the entries are obtained.
      */
-    void weights_and_derivatives(
-      unsigned int               segment,
-      double                     s,
-      NodeWeightsAndDerivatives &weights) const override;
+    void
+    weights_and_derivatives(unsigned int               segment,
+                            double                     s,
+                            NodeWeightsAndDerivatives &weights) const override;
 
-    void bounding_box(unsigned int segment,
-                      Point       &low,
-                      Point       &high) const override;
+    void
+    bounding_box(unsigned int segment, Point &low, Point &high) const override;
 
     /**
      * Entry (i,j) of the inverse of the N x N interpolation matrix A (with the
      * end condition folded in), so that Q_i = sum_j (A^-1)_ij P_j.
      */
-    double inverse_entry(unsigned int i, unsigned int j) const;
+    double
+    inverse_entry(unsigned int i, unsigned int j) const;
 
     /** Control point Q_i, i in [-1, N], ghosts mapped by the end condition. */
-    Point control_point(int i) const;
+    Point
+    control_point(int i) const;
 
     /** The control points Q_0..Q_{N-1}. */
-    const std::vector<Point> &control_points() const;
+    const std::vector<Point> &
+    control_points() const;
 
   private:
     /** Index of the stored control point that plays the role of Q_i. */
-    unsigned int control_index(int i) const;
+    unsigned int
+    control_index(int i) const;
 
     /** sum_k b_k Q_{segment-1+k}: the curve or a derivative, by basis b. */
     Point
     combine_control_points(const unsigned int segment, const double b[4]) const;
 
     /** Factorisation and Green's function table for N nodes. O(N). */
-    void prepare_for_size(unsigned int n);
+    void
+    prepare_for_size(unsigned int n);
 
     /** Solve T y = rhs with the precomputed Thomas factors (in place). */
-    void thomas_solve(std::vector<Point> &rhs) const;
+    void
+    thomas_solve(std::vector<Point> &rhs) const;
 
     const EndCondition end_condition;
 

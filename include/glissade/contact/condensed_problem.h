@@ -34,7 +34,8 @@ namespace glissade
     PairVector load, row;
   };
 
-  /** The active contact nodes of a Newton iteration, as the condensed problem sees them. */
+  /** The active contact nodes of a Newton iteration, as the condensed problem
+   * sees them. */
   struct ActiveNodes
   {
     using Vector2 = ComplianceMatrix::Vector2;
@@ -141,7 +142,8 @@ namespace glissade
      * problem on them is then convex.
      */
     bool
-    positive_definite_on(const std::vector<std::array<bool, 2>> &directions) const;
+    positive_definite_on(
+      const std::vector<std::array<bool, 2>> &directions) const;
 
     /**
      * `increments` holds du_lib on entry and du on exit; `contact_forces`

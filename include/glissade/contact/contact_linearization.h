@@ -69,10 +69,11 @@ namespace glissade
    */
   ContactLinearization
   linearize_contact(
-    const dealii::Point<2>                                     &x,
-    const std::array<dealii::types::global_dof_index, 2>        &slave_dofs,
-    const dealii::Tensor<1, 2>                                 &slave_motion,
-    const SurfacePoint                                          &point,
-    const std::function<double(dealii::types::global_dof_index)> &master_increment,
-    const std::array<double, 2>                                &reaction);
+    const dealii::Point<2>                               &x,
+    const std::array<dealii::types::global_dof_index, 2> &slave_dofs,
+    const dealii::Tensor<1, 2>                           &slave_motion,
+    const SurfacePoint                                   &point,
+    const std::function<double(dealii::types::global_dof_index)>
+                                &master_increment,
+    const std::array<double, 2> &reaction);
 } // namespace glissade

@@ -10,8 +10,8 @@
 #include <glissade/scene/scene_description.h>
 
 #include <map>
-#include <set>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace glissade
@@ -19,20 +19,20 @@ namespace glissade
   /** A slave node and its contact state. */
   struct ContactNode
   {
-    unsigned int                           vertex;
+    unsigned int                                   vertex;
     std::array<dealii::types::global_dof_index, 2> dofs;
     dealii::Point<2>                               reference_position;
 
     bool active    = false;
     bool projected = false; // has a counterpart on the master
     /** Master segment and s of the last projection (-1: none or rigid). */
-    int          segment = -1;
-    double       s       = 0.;
-    double       gap     = 0.;
+    int                  segment = -1;
+    double               s       = 0.;
+    double               gap     = 0.;
     dealii::Tensor<1, 2> tangent, normal;
     /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
     std::array<double, 2>         reaction = {{0., 0.}};
-    BiPotentialSolver::NodeStatus status   = BiPotentialSolver::NodeStatus::open;
+    BiPotentialSolver::NodeStatus status = BiPotentialSolver::NodeStatus::open;
     /**
      * Segment changes within the current increment. From the second on,
      * the node keeps its segment (along its extension) for the rest of the
@@ -66,8 +66,9 @@ namespace glissade
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       int status_code = static_cast<int>(status);
-      archive &active &projected &segment &s &gap &tangent &normal &reaction[0]
-        &reaction[1] &status_code;
+      archive &active &projected &segment &s &gap &tangent &normal
+          &reaction[0] &
+        reaction[1] & status_code;
       status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
     }
 
@@ -98,7 +99,7 @@ namespace glissade
     ContactPair(const ContactDescription &description,
                 Body                     &slave,
                 Body                     *master,
-                dealii::TimerOutput              &timer);
+                dealii::TimerOutput      &timer);
 
     ~ContactPair();
 
@@ -259,14 +260,14 @@ namespace glissade
     bool
     can_react(const ContactNode &node) const;
 
-    const ContactDescription       description;
-    Body                          &slave_body;
-    Body                          *master_body;
-    dealii::TimerOutput                   &timer;
-    std::unique_ptr<MasterSurface> master_surface;
-    std::vector<ContactNode>       slave_nodes;
-    std::vector<InitialContact>    contacts_at_start;
-    std::set<dealii::types::boundary_id>   slave_ids;
+    const ContactDescription             description;
+    Body                                &slave_body;
+    Body                                *master_body;
+    dealii::TimerOutput                 &timer;
+    std::unique_ptr<MasterSurface>       master_surface;
+    std::vector<ContactNode>             slave_nodes;
+    std::vector<InitialContact>          contacts_at_start;
+    std::set<dealii::types::boundary_id> slave_ids;
     /** The slave boundary's outward normal at each slave vertex (not unit). */
     std::map<unsigned int, dealii::Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */

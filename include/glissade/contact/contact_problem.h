@@ -27,7 +27,7 @@ namespace glissade
     /** `timer` receives the detection, W and local solve sections. */
     ContactProblem(const SceneDescription                   &scene,
                    const std::vector<std::unique_ptr<Body>> &bodies,
-                   dealii::TimerOutput                              &timer);
+                   dealii::TimerOutput                      &timer);
 
     bool
     empty() const
@@ -76,7 +76,8 @@ namespace glissade
      * fall through its support in one iteration. The state is restored.
      */
     unsigned int
-    activate_nodes_crossed_by(const std::vector<dealii::Vector<double>> &free_step);
+    activate_nodes_crossed_by(
+      const std::vector<dealii::Vector<double>> &free_step);
 
     /**
      * The active nodes of every pair as the condensed problem sees them
@@ -106,10 +107,10 @@ namespace glissade
      * local problem could not be solved.
      */
     std::unique_ptr<CondensedProblem>
-    solve_local_problem(const std::vector<ContactNode *>        &active,
-                        const ActiveNodes                       &nodes,
-                        const std::vector<dealii::Vector<double>>       &predictor,
-                        std::vector<BiPotentialSolver::Vector2> &r);
+    solve_local_problem(const std::vector<ContactNode *>          &active,
+                        const ActiveNodes                         &nodes,
+                        const std::vector<dealii::Vector<double>> &predictor,
+                        std::vector<BiPotentialSolver::Vector2>   &r);
 
     /**
      * Why the local problem failed, for a user, where a node's own
@@ -132,12 +133,13 @@ namespace glissade
     body_index(const Body *body) const;
 
     const std::vector<std::unique_ptr<Body>> &bodies;
-    dealii::TimerOutput                              &timer;
+    dealii::TimerOutput                      &timer;
     std::vector<std::unique_ptr<ContactPair>> pairs;
     BiPotentialSolver::Settings               solver_settings;
     BiPotentialSolver::Result                 result;
     std::vector<std::vector<ContactNode>>     stored_nodes;
-    /** The springs of bodies held by contact, as rank-one terms (active_nodes). */
+    /** The springs of bodies held by contact, as rank-one terms (active_nodes).
+     */
     std::vector<DofVector> spring_loads, spring_rows;
   };
 } // namespace glissade

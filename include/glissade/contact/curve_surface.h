@@ -27,7 +27,8 @@ namespace glissade
   class CurveSurface : public MasterSurface
   {
   public:
-    CurveSurface(const Body &master, const std::string &boundary,
+    CurveSurface(const Body        &master,
+                 const std::string &boundary,
                  const std::string &entry);
 
     void
@@ -64,7 +65,8 @@ namespace glissade
 
     /** Entries of c(s) beyond the node weights (none by default). */
     virtual void
-    add_kinematics(unsigned int segment, double s,
+    add_kinematics(unsigned int                segment,
+                   double                      s,
                    std::vector<SurfaceWeight> &kinematics) const;
 
     /** The dofs that receive the reaction (by default the kinematic ones). */
@@ -110,8 +112,11 @@ namespace glissade
      * the increment may go).
      */
     void
-    evaluate(unsigned int segment, double s, MasterCurve::Point &c,
-             MasterCurve::Point &dc, MasterCurve::Point &ddc) const;
+    evaluate(unsigned int        segment,
+             double              s,
+             MasterCurve::Point &c,
+             MasterCurve::Point &dc,
+             MasterCurve::Point &ddc) const;
 
     /** The point at (segment, s) for the slave position x. */
     SurfacePoint
@@ -122,8 +127,10 @@ namespace glissade
      * leaves [-margin, 1 + margin].
      */
     bool
-    project_on_segment(const dealii::Point<2> &x, unsigned int segment,
-                       double &s, double margin) const;
+    project_on_segment(const dealii::Point<2> &x,
+                       unsigned int            segment,
+                       double                 &s,
+                       double                  margin) const;
 
     /** The turn of the bisecting normal at a corner node. */
     void

@@ -20,28 +20,34 @@ namespace glissade
   public:
     explicit FacetedCurve(bool closed);
 
-    void update(const std::vector<Point> &nodes) override;
+    void
+    update(const std::vector<Point> &nodes) override;
 
-    unsigned int n_segments() const override;
-    bool         is_closed() const override;
+    unsigned int
+    n_segments() const override;
+    bool
+    is_closed() const override;
 
-    Point value(unsigned int segment, double s) const override;
-    Point derivative(unsigned int segment, double s) const override;
-    Point second_derivative(unsigned int segment, double s) const override;
-    void  evaluate(unsigned int segment,
-                   double       s,
-                   Point       &value,
-                   Point       &first_derivative,
-                   Point       &second_derivative) const override;
+    Point
+    value(unsigned int segment, double s) const override;
+    Point
+    derivative(unsigned int segment, double s) const override;
+    Point
+    second_derivative(unsigned int segment, double s) const override;
+    void
+    evaluate(unsigned int segment,
+             double       s,
+             Point       &value,
+             Point       &first_derivative,
+             Point       &second_derivative) const override;
 
-    void bounding_box(unsigned int segment,
-                      Point       &low,
-                      Point       &high) const override;
+    void
+    bounding_box(unsigned int segment, Point &low, Point &high) const override;
 
-    void weights_and_derivatives(
-      unsigned int               segment,
-      double                     s,
-      NodeWeightsAndDerivatives &weights) const override;
+    void
+    weights_and_derivatives(unsigned int               segment,
+                            double                     s,
+                            NodeWeightsAndDerivatives &weights) const override;
 
   private:
     const bool closed;

@@ -33,11 +33,13 @@ namespace glissade
     explicit HermiteCurve(bool closed);
 
     /** New positions; the tangents are kept. */
-    void update(const std::vector<Point> &nodes) override;
+    void
+    update(const std::vector<Point> &nodes) override;
 
     /** New positions and, per segment, {dx/ds at s=0, dx/ds at s=1}. */
-    void update(const std::vector<Point>                &nodes,
-                const std::vector<std::array<Point, 2>> &segment_tangents);
+    void
+    update(const std::vector<Point>                &nodes,
+           const std::vector<std::array<Point, 2>> &segment_tangents);
 
     /** Per segment: {dx/ds at s = 0, dx/ds at s = 1}. */
     void
@@ -47,38 +49,45 @@ namespace glissade
      * One tangent dx/ds per node, shared by the two segments meeting there
      * (a C1 curve). Needs n_nodes() to be known, i.e. after update().
      */
-    void set_node_tangents(const std::vector<Point> &tangents);
+    void
+    set_node_tangents(const std::vector<Point> &tangents);
 
     /** The tangent data of a segment. */
-    const std::array<Point, 2> &segment_tangents(unsigned int segment) const;
+    const std::array<Point, 2> &
+    segment_tangents(unsigned int segment) const;
 
-    unsigned int n_segments() const override;
-    bool         is_closed() const override;
+    unsigned int
+    n_segments() const override;
+    bool
+    is_closed() const override;
 
-    Point value(unsigned int segment, double s) const override;
-    Point derivative(unsigned int segment, double s) const override;
-    Point second_derivative(unsigned int segment, double s) const override;
-    void  evaluate(unsigned int segment,
-                   double       s,
-                   Point       &value,
-                   Point       &first_derivative,
-                   Point       &second_derivative) const override;
+    Point
+    value(unsigned int segment, double s) const override;
+    Point
+    derivative(unsigned int segment, double s) const override;
+    Point
+    second_derivative(unsigned int segment, double s) const override;
+    void
+    evaluate(unsigned int segment,
+             double       s,
+             Point       &value,
+             Point       &first_derivative,
+             Point       &second_derivative) const override;
 
-    void bounding_box(unsigned int segment,
-                      Point       &low,
-                      Point       &high) const override;
+    void
+    bounding_box(unsigned int segment, Point &low, Point &high) const override;
 
-    void weights_and_derivatives(
-      unsigned int               segment,
-      double                     s,
-      NodeWeightsAndDerivatives &weights) const override;
+    void
+    weights_and_derivatives(unsigned int               segment,
+                            double                     s,
+                            NodeWeightsAndDerivatives &weights) const override;
 
     /**
      * {H10(s), H11(s)}: the coefficients of the tangents d_a, d_b of the
      * segment in c(segment, s).
      */
-    std::array<double, 2> tangent_weights(unsigned int segment,
-                                          double       s) const;
+    std::array<double, 2>
+    tangent_weights(unsigned int segment, double s) const;
 
     /** {H10(s), H11(s), H10'(s), H11'(s)}. */
     std::array<double, 4>
@@ -86,10 +95,12 @@ namespace glissade
 
   private:
     /** Throws unless there is one tangent pair per segment. */
-    void check_tangents() const;
+    void
+    check_tangents() const;
 
     /** sum of the four Hermite functions (or derivatives) times the data. */
-    Point combine(unsigned int segment, const double h[4]) const;
+    Point
+    combine(unsigned int segment, const double h[4]) const;
 
     const bool                        closed;
     std::vector<std::array<Point, 2>> tangents;

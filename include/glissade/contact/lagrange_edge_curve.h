@@ -22,39 +22,48 @@ namespace glissade
     LagrangeEdgeCurve(const unsigned int degree, const bool closed);
 
     /** Keeps the edge nodes of the last call (they must exist). */
-    void update(const std::vector<Point> &vertices) override;
+    void
+    update(const std::vector<Point> &vertices) override;
 
     /** edge_nodes: (p - 1) points per segment, segment after segment. */
-    void update(const std::vector<Point> &vertices,
-                const std::vector<Point> &edge_nodes);
+    void
+    update(const std::vector<Point> &vertices,
+           const std::vector<Point> &edge_nodes);
 
-    unsigned int n_segments() const override;
-    bool         is_closed() const override;
+    unsigned int
+    n_segments() const override;
+    bool
+    is_closed() const override;
 
-    Point value(unsigned int segment, double s) const override;
-    Point derivative(unsigned int segment, double s) const override;
-    Point second_derivative(unsigned int segment, double s) const override;
+    Point
+    value(unsigned int segment, double s) const override;
+    Point
+    derivative(unsigned int segment, double s) const override;
+    Point
+    second_derivative(unsigned int segment, double s) const override;
 
-    void bounding_box(unsigned int segment,
-                      Point       &low,
-                      Point       &high) const override;
+    void
+    bounding_box(unsigned int segment, Point &low, Point &high) const override;
 
-    void weights_and_derivatives(
-      unsigned int               segment,
-      double                     s,
-      NodeWeightsAndDerivatives &weights) const override;
+    void
+    weights_and_derivatives(unsigned int               segment,
+                            double                     s,
+                            NodeWeightsAndDerivatives &weights) const override;
 
   private:
     /** The p + 1 points of a segment, in order of s. */
-    std::vector<Point> segment_points(unsigned int segment) const;
+    std::vector<Point>
+    segment_points(unsigned int segment) const;
 
     /** Lagrange basis on s_j = j/p and its first two derivatives. */
-    void basis(double               s,
-               std::vector<double> &value,
-               std::vector<double> &first,
-               std::vector<double> &second) const;
+    void
+    basis(double               s,
+          std::vector<double> &value,
+          std::vector<double> &first,
+          std::vector<double> &second) const;
 
-    Point combine(unsigned int segment, double s, unsigned int order) const;
+    Point
+    combine(unsigned int segment, double s, unsigned int order) const;
 
     const unsigned int degree;
     const bool         closed;

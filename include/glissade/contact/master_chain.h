@@ -27,9 +27,9 @@ namespace glissade
       unsigned int                                face;
     };
 
-    bool                                                        closed = false;
-    std::vector<unsigned int>                                   vertices;
-    std::vector<dealii::Point<2>>                               reference_points;
+    bool                          closed = false;
+    std::vector<unsigned int>     vertices;
+    std::vector<dealii::Point<2>> reference_points;
     /** The x and y value dofs of each node. */
     std::vector<std::array<dealii::types::global_dof_index, 2>> value_dofs;
     std::vector<Face>                                           faces;
@@ -40,6 +40,8 @@ namespace glissade
      * or has fewer nodes than a curve needs.
      */
     static MasterChain
-    build(const Body &body, const std::string &boundary, const std::string &entry);
+    build(const Body        &body,
+          const std::string &boundary,
+          const std::string &entry);
   };
 } // namespace glissade

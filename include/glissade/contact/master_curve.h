@@ -121,41 +121,52 @@ namespace glissade
     /**
      * Rebuild the curve from the current node positions. O(N).
      */
-    virtual void update(const std::vector<Point> &nodes) = 0;
+    virtual void
+    update(const std::vector<Point> &nodes) = 0;
 
-    virtual unsigned int n_segments() const = 0;
-    virtual bool         is_closed() const  = 0;
+    virtual unsigned int
+    n_segments() const = 0;
+    virtual bool
+    is_closed() const = 0;
 
     /** Number of data nodes given to the last update(). */
-    unsigned int n_nodes() const;
+    unsigned int
+    n_nodes() const;
 
     /** The data nodes given to the last update(). */
-    const std::vector<Point> &nodes() const;
+    const std::vector<Point> &
+    nodes() const;
 
     /** The two data nodes joined by a segment: {i, i+1} (or {N-1, 0}). */
-    std::array<unsigned int, 2> segment_nodes(unsigned int segment) const;
+    std::array<unsigned int, 2>
+    segment_nodes(unsigned int segment) const;
 
     /**
      * Diagonal of the bounding box of the nodes (1 if they all coincide):
      * the length used to make tolerances relative.
      */
-    double length_scale() const;
+    double
+    length_scale() const;
 
     /** Position, first and second derivative with respect to s. */
-    virtual Point value(unsigned int segment, double s) const             = 0;
-    virtual Point derivative(unsigned int segment, double s) const        = 0;
-    virtual Point second_derivative(unsigned int segment, double s) const = 0;
+    virtual Point
+    value(unsigned int segment, double s) const = 0;
+    virtual Point
+    derivative(unsigned int segment, double s) const = 0;
+    virtual Point
+    second_derivative(unsigned int segment, double s) const = 0;
 
     /**
      * All three at once. The default calls the three functions above;
      * derived classes override it because project() calls it in its inner
      * loop.
      */
-    virtual void evaluate(unsigned int segment,
-                          double       s,
-                          Point       &value,
-                          Point       &first_derivative,
-                          Point       &second_derivative) const;
+    virtual void
+    evaluate(unsigned int segment,
+             double       s,
+             Point       &value,
+             Point       &first_derivative,
+             Point       &second_derivative) const;
 
     /** A weight phi_j(s) of node j and its derivative d phi_j / ds. */
     struct WeightAndDerivative
@@ -173,9 +184,8 @@ namespace glissade
      * node index. The vector is cleared first. (Filters
      * weights_and_derivatives().)
      */
-    void weights(unsigned int segment,
-                 double       s,
-                 NodeWeights &node_weights) const;
+    void
+    weights(unsigned int segment, double s, NodeWeights &node_weights) const;
 
     /**
      * The weights phi_j and their derivatives d phi_j / ds, so that also
@@ -204,9 +214,8 @@ namespace glissade
      * the box of its Bezier or B-spline control polygon. project() uses it to
      * skip segments that cannot hold a closer point.
      */
-    virtual void bounding_box(unsigned int segment,
-                              Point       &low,
-                              Point       &high) const = 0;
+    virtual void
+    bounding_box(unsigned int segment, Point &low, Point &high) const = 0;
 
     /**
      * Unit tangent c'/|c'|. Where the parametrisation degenerates (|c'| is
@@ -214,10 +223,12 @@ namespace glissade
      * from the previous to the next distinct node is used instead, and
      * (1,0) if all nodes coincide, so the result is never NaN.
      */
-    Point unit_tangent(unsigned int segment, double s) const;
+    Point
+    unit_tangent(unsigned int segment, double s) const;
 
     /** n = (-t_y, t_x) with t = unit_tangent(). */
-    Point unit_normal(unsigned int segment, double s) const;
+    Point
+    unit_normal(unsigned int segment, double s) const;
 
     /**
      * Closest-point projection of x on the curve.
@@ -277,23 +288,27 @@ namespace glissade
      * The global search costs one sweep over the cached boxes plus the
      * segments that survive it.
      */
-    Projection project(const Point &x) const;
+    Projection
+    project(const Point &x) const;
 
     /**
      * Replace the brute-force nearest node search (an empty function restores
      * it). The search must be rebuilt by the caller when the nodes move.
      */
-    void set_nearest_node_search(const NearestNodeSearch &search);
+    void
+    set_nearest_node_search(const NearestNodeSearch &search);
 
     /** Index of a node closest to x (lowest index on ties for brute force). */
-    unsigned int nearest_node(const Point &x) const;
+    unsigned int
+    nearest_node(const Point &x) const;
 
     /**
      * If true, project() always runs the global check of its step 6 and so
      * returns the global closest point; default false (the paper's local
      * search, plus the global check only at corners and open ends).
      */
-    void set_global_search(bool global);
+    void
+    set_global_search(bool global);
 
   protected:
     /**
@@ -301,8 +316,8 @@ namespace glissade
      * update(). Throws std::invalid_argument if there are fewer than
      * minimum_number nodes.
      */
-    void store_nodes(const std::vector<Point> &nodes,
-                     unsigned int              minimum_number);
+    void
+    store_nodes(const std::vector<Point> &nodes, unsigned int minimum_number);
 
     /**
      * Cache bounding_box() of every segment for the global check of
@@ -311,7 +326,8 @@ namespace glissade
      * stale in size, project() calls bounding_box() directly, which is
      * correct but slower.
      */
-    void cache_bounding_boxes();
+    void
+    cache_bounding_boxes();
 
     /**
      * Drops the entries that are insignificant in both value and
@@ -321,8 +337,10 @@ namespace glissade
     keep_significant(NodeWeightsAndDerivatives &weights);
 
     /** Segment before / after a segment: false if none (open ends). */
-    bool previous_segment(unsigned int segment, unsigned int &previous) const;
-    bool next_segment(unsigned int segment, unsigned int &next) const;
+    bool
+    previous_segment(unsigned int segment, unsigned int &previous) const;
+    bool
+    next_segment(unsigned int segment, unsigned int &next) const;
 
   private:
     /**
@@ -341,12 +359,13 @@ namespace glissade
       bool         orthogonal_to_incoming = false;
     };
 
-    NodeCase classify_node(unsigned int node, const Point &x) const;
+    NodeCase
+    classify_node(unsigned int node, const Point &x) const;
 
     std::vector<Point>                node_positions;
     std::vector<std::array<Point, 2>> segment_boxes;
     double                            scale = 1.;
-    NearestNodeSearch  nearest_node_search;
-    bool               global_search = false;
+    NearestNodeSearch                 nearest_node_search;
+    bool                              global_search = false;
   };
 } // namespace glissade

@@ -38,7 +38,8 @@ namespace glissade
     int    segment = -1;
     double s       = 0.;
 
-    /** c(s), the unit tangent t = c'/|c'| and n = e3 x t (out of the master). */
+    /** c(s), the unit tangent t = c'/|c'| and n = e3 x t (out of the master).
+     */
     dealii::Point<2>     point;
     dealii::Tensor<1, 2> tangent, normal;
 

@@ -23,9 +23,9 @@ namespace glissade
    */
   struct DofRelation
   {
-    dealii::types::global_dof_index                                    dof;
+    dealii::types::global_dof_index                                 dof;
     std::vector<std::pair<dealii::types::global_dof_index, double>> others;
-    double                                                     value;
+    double                                                          value;
   };
 
   /**
@@ -57,7 +57,8 @@ namespace glissade
      * (serendipity interiors). The default does nothing.
      */
     virtual void
-    setup(const dealii::DoFHandler<2> &dof_handler, dealii::AffineConstraints<double> &element_constraints);
+    setup(const dealii::DoFHandler<2>       &dof_handler,
+          dealii::AffineConstraints<double> &element_constraints);
 
     /** The geometry, for output and boundary interpolation. */
     virtual const dealii::Mapping<2> &
@@ -90,11 +91,11 @@ namespace glissade
      * none). The default interpolates g at the support points.
      */
     virtual void
-    boundary_relations(const dealii::DoFHandler<2>       &dof_handler,
-                       const dealii::types::boundary_id   boundary,
-                       const dealii::Function<2>         &g,
-                       const std::array<bool, 2> &components,
-                       const bool                 all_derivatives,
-                       std::vector<DofRelation>  &relations) const;
+    boundary_relations(const dealii::DoFHandler<2>     &dof_handler,
+                       const dealii::types::boundary_id boundary,
+                       const dealii::Function<2>       &g,
+                       const std::array<bool, 2>       &components,
+                       const bool                       all_derivatives,
+                       std::vector<DofRelation>        &relations) const;
   };
 } // namespace glissade

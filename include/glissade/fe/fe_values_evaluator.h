@@ -13,10 +13,10 @@ namespace glissade
   class FEValuesEvaluator : public CellEvaluator
   {
   public:
-    FEValuesEvaluator(const dealii::Mapping<2>         &mapping,
-                      const dealii::FiniteElement<2>   &fe,
-                      const dealii::Quadrature<2>      &cell_quadrature,
-                      const dealii::Quadrature<1>      &face_quadrature);
+    FEValuesEvaluator(const dealii::Mapping<2>       &mapping,
+                      const dealii::FiniteElement<2> &fe,
+                      const dealii::Quadrature<2>    &cell_quadrature,
+                      const dealii::Quadrature<1>    &face_quadrature);
 
     void
     reinit(const CellIterator &cell) override;

@@ -201,10 +201,10 @@ namespace glissade
      */
     static HermiteQuadrilateral
     from_parametrization(
-        const std::function<ParametrizationValue(double, double)>
-                     &parametrization,
-        const Vector &p_range,
-        const Vector &q_range);
+      const std::function<ParametrizationValue(double, double)>
+                   &parametrization,
+      const Vector &p_range,
+      const Vector &q_range);
 
     const NodeGeometry &
     node_geometry(unsigned int node) const;

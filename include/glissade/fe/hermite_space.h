@@ -72,12 +72,12 @@ namespace glissade
     create_evaluator(const unsigned int points_per_direction) const override;
 
     void
-    boundary_relations(const dealii::DoFHandler<2>       &dof_handler,
-                       const dealii::types::boundary_id   boundary,
-                       const dealii::Function<2>         &g,
-                       const std::array<bool, 2> &components,
-                       const bool                 all_derivatives,
-                       std::vector<DofRelation>  &relations) const override;
+    boundary_relations(const dealii::DoFHandler<2>     &dof_handler,
+                       const dealii::types::boundary_id boundary,
+                       const dealii::Function<2>       &g,
+                       const std::array<bool, 2>       &components,
+                       const bool                       all_derivatives,
+                       std::vector<DofRelation> &relations) const override;
 
     /** The element of a cell (its geometry), by active cell index. */
     const HermiteQuadrilateral &
@@ -97,9 +97,9 @@ namespace glissade
     }
 
   private:
-    dealii::FESystem<2>                                       numbering;
-    dealii::MappingQ<2>                                       output_mapping;
-    std::vector<HermiteQuadrilateral>                 elements;
+    dealii::FESystem<2>                                numbering;
+    dealii::MappingQ<2>                                output_mapping;
+    std::vector<HermiteQuadrilateral>                  elements;
     std::vector<std::pair<unsigned int, unsigned int>> local_dofs;
   };
 } // namespace glissade

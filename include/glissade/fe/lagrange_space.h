@@ -38,8 +38,8 @@ namespace glissade
     create_evaluator(const unsigned int points_per_direction) const override;
 
   private:
-    const unsigned int degree;
-    dealii::FESystem<2>        fe;
-    dealii::MappingQ<2>        geometry;
+    const unsigned int  degree;
+    dealii::FESystem<2> fe;
+    dealii::MappingQ<2> geometry;
   };
 } // namespace glissade

@@ -64,10 +64,11 @@ namespace glissade
     }
 
   private:
-    const unsigned int degree;
-    dealii::FESystem<2>        fe;
+    const unsigned int                                        degree;
+    dealii::FESystem<2>                                       fe;
     std::vector<std::vector<std::pair<unsigned int, double>>> relations;
-    dealii::Vector<double>                                        euler_vector;
-    std::unique_ptr<dealii::MappingFEField<2, 2, dealii::Vector<double>>> geometry;
+    dealii::Vector<double>                                    euler_vector;
+    std::unique_ptr<dealii::MappingFEField<2, 2, dealii::Vector<double>>>
+      geometry;
   };
 } // namespace glissade

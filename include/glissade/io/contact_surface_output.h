@@ -33,10 +33,10 @@ namespace glissade
      * PVD file from them.
      */
     void
-    write(const std::string                                &directory,
-          const unsigned int                                increment,
-          const double                                      t,
-          std::vector<std::pair<double, std::string>>      &records) const;
+    write(const std::string                           &directory,
+          const unsigned int                           increment,
+          const double                                 t,
+          std::vector<std::pair<double, std::string>> &records) const;
 
   private:
     const ContactPair &pair;

@@ -23,8 +23,8 @@ namespace glissade
     HistoryWriter(const std::vector<std::string>                  &items,
                   const std::vector<std::unique_ptr<Body>>        &bodies,
                   const std::vector<std::unique_ptr<ContactPair>> &pairs,
-                  const std::string                                &filename,
-                  const std::string                                &source);
+                  const std::string                               &filename,
+                  const std::string                               &source);
 
     void
     record(const unsigned int increment,
@@ -70,9 +70,9 @@ namespace glissade
     }
 
   private:
-    std::string                                     filename;
-    std::vector<std::string>                        columns;
+    std::string                                             filename;
+    std::vector<std::string>                                columns;
     std::vector<std::function<void(std::vector<double> &)>> evaluators;
-    std::vector<std::vector<double>>                rows;
+    std::vector<std::vector<double>>                        rows;
   };
 } // namespace glissade

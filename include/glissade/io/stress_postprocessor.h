@@ -20,11 +20,12 @@ namespace glissade
   {
   public:
     StressPostprocessor(const BodyMaterials &materials,
-                        const unsigned int components_per_displacement);
+                        const unsigned int   components_per_displacement);
 
     void
-    evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<2> &inputs,
-                          std::vector<dealii::Vector<double>> &computed) const override;
+    evaluate_vector_field(
+      const dealii::DataPostprocessorInputs::Vector<2> &inputs,
+      std::vector<dealii::Vector<double>> &computed) const override;
 
     std::vector<std::string>
     get_names() const override;
@@ -34,6 +35,6 @@ namespace glissade
 
   private:
     const BodyMaterials &materials;
-    const unsigned int per_dim;
+    const unsigned int   per_dim;
   };
 } // namespace glissade

@@ -55,7 +55,7 @@ namespace glissade
       std::string subsection; // "Material" or "Material <region>"
     };
 
-    Entry                                     body_material;
+    Entry                                       body_material;
     std::map<dealii::types::material_id, Entry> region_materials;
   };
 } // namespace glissade

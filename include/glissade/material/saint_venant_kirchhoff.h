@@ -27,8 +27,8 @@ namespace glissade
     }
 
   private:
-    const double          lambda;
-    const double          mu;
+    const double                  lambda;
+    const double                  mu;
     dealii::SymmetricTensor<4, 3> elasticity;
   };
 } // namespace glissade

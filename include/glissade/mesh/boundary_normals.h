@@ -17,6 +17,6 @@ namespace glissade
    */
   std::map<unsigned int, dealii::Tensor<1, 2>>
   boundary_vertex_normals(
-    const dealii::Triangulation<2>                         &triangulation,
+    const dealii::Triangulation<2>                        &triangulation,
     const std::function<bool(dealii::types::boundary_id)> &on_boundary);
 } // namespace glissade

@@ -25,30 +25,30 @@ namespace glissade
   public:
     /** `where` names the .prm subsection, for messages. */
     static MeshLabels
-    create(const MeshDescription &description,
-           dealii::Triangulation<2>      &triangulation,
-           const std::string     &where);
+    create(const MeshDescription    &description,
+           dealii::Triangulation<2> &triangulation,
+           const std::string        &where);
 
   private:
     static BoundaryNames
-    create_rectangle(const dealii::Point<2>        &lower_left,
-                     const dealii::Point<2>        &upper_right,
-                     const MeshDescription &description,
-                     dealii::Triangulation<2>      &triangulation);
+    create_rectangle(const dealii::Point<2>   &lower_left,
+                     const dealii::Point<2>   &upper_right,
+                     const MeshDescription    &description,
+                     dealii::Triangulation<2> &triangulation);
 
     static BoundaryNames
-    create_ring(const MeshDescription &description,
-                const bool             closed,
-                dealii::Triangulation<2>      &triangulation);
+    create_ring(const MeshDescription    &description,
+                const bool                closed,
+                dealii::Triangulation<2> &triangulation);
 
     /** Refuses a mesh with a hanging node (a vertex inside another edge). */
     static void
     check_mesh_is_conforming(const dealii::Triangulation<2> &triangulation,
-                             const std::string      &where);
+                             const std::string              &where);
 
     /** Refuses a cell with a zero or negative Jacobian at a corner. */
     static void
     check_cells_are_not_folded(const dealii::Triangulation<2> &triangulation,
-                               const std::string      &where);
+                               const std::string              &where);
   };
 } // namespace glissade

@@ -15,9 +15,9 @@ namespace glissade
   struct MeshDescription
   {
     std::string               type;
-    dealii::Point<2>                  corner_1;
-    dealii::Point<2>                  corner_2;
-    dealii::Point<2>                  center;
+    dealii::Point<2>          corner_1;
+    dealii::Point<2>          corner_2;
+    dealii::Point<2>          center;
     double                    side         = 1.;
     double                    inner_radius = 0.5;
     double                    outer_radius = 1.;
@@ -41,12 +41,12 @@ namespace glissade
       displacement,
       rotation
     };
-    Kind                     kind = Kind::fixed;
-    std::string              location;
-    bool                     x_component = true;
-    bool                     y_component = true;
+    Kind        kind = Kind::fixed;
+    std::string location;
+    bool        x_component = true;
+    bool        y_component = true;
     /** "all": also every derivative dof (Hermite), as in the paper's fig 11. */
-    bool                     all_derivatives = false;
+    bool all_derivatives = false;
     /**
      * "n" or "t" (Fixed only): the displacement normal (or tangential) to
      * the boundary is zero at each node, in the reference configuration's
@@ -61,9 +61,9 @@ namespace glissade
     };
     Direction                direction = Direction::cartesian;
     std::vector<std::string> expressions; // displacement: one per component
-    dealii::Point<2>                 rotation_center;
+    dealii::Point<2>         rotation_center;
     std::string              angle_expression; // rotation, radians
-    std::string              entry; // the .prm entry it came from
+    std::string              entry;            // the .prm entry it came from
   };
 
   /** One Neumann item: a point load, a dead traction or a follower pressure. */
@@ -119,8 +119,8 @@ namespace glissade
    */
   struct LoadProgram
   {
-    std::vector<double>       stage_end_times = {1.};
-    std::vector<unsigned int> stage_increments = {1};
+    std::vector<double>       stage_end_times    = {1.};
+    std::vector<unsigned int> stage_increments   = {1};
     unsigned int              max_cut_back_depth = 6;
   };
 
@@ -144,9 +144,9 @@ namespace glissade
 
   struct OutputSettings
   {
-    std::string directory     = "output";
-    unsigned int vtu_interval = 1; // 0: initial and final states only
-    bool         initial_state = true; // the VTU and tables of increment 0
+    std::string  directory       = "output";
+    unsigned int vtu_interval    = 1;      // 0: initial and final states only
+    bool         initial_state   = true;   // the VTU and tables of increment 0
     std::string  vtu_compression = "fast"; // fast, small, none
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
@@ -187,21 +187,21 @@ namespace glissade
       closest_point,
       vertex_normal
     };
-    VertexRule  vertex_rule    = VertexRule::kept_segment;
-    double      alert_distance = 0.;
-    double      friction       = 0.;
+    VertexRule vertex_rule    = VertexRule::kept_segment;
+    double     alert_distance = 0.;
+    double     friction       = 0.;
     // The local solver's settings in effect for this pair: the scene's
     // Contact solver section, or the pair's own entries of an old scene.
-    double      beta           = 1.;
-    double      tolerance      = 1e-10;
-    unsigned int max_sweeps    = 10000;
+    double       beta       = 1.;
+    double       tolerance  = 1e-10;
+    unsigned int max_sweeps = 10000;
     // Rigid obstacle.
     std::string              obstacle = "line"; // line | disk | hole
-    dealii::Point<2>                 obstacle_point;  // line: a point; disk/hole: centre
-    dealii::Tensor<1, 2>             obstacle_normal; // line: normal pointing out of it
+    dealii::Point<2>         obstacle_point; // line: a point; disk/hole: centre
+    dealii::Tensor<1, 2>     obstacle_normal; // line: normal pointing out of it
     double                   obstacle_radius = 1.;
     std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
-    std::string              entry; // "Contact <name>"
+    std::string              entry;                        // "Contact <name>"
   };
 
   /** Everything a .prm file describes. */
@@ -210,11 +210,11 @@ namespace glissade
     std::string                     source; // file name, for messages
     std::vector<BodyDescription>    bodies;
     std::vector<ContactDescription> contacts;
-    LoadProgram                  load_program;
-    NewtonSettings               newton;
-    ContactSolverSettings        contact_solver;
-    OutputSettings               output;
-    CheckpointSettings           checkpoint;
+    LoadProgram                     load_program;
+    NewtonSettings                  newton;
+    ContactSolverSettings           contact_solver;
+    OutputSettings                  output;
+    CheckpointSettings              checkpoint;
     /** Hash of every value but the Checkpoint section (see SceneReader). */
     std::string fingerprint;
   };

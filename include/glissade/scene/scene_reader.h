@@ -31,7 +31,7 @@ namespace glissade
      * file (the command line's --set), e.g. "Body beam/Mesh/Subdivisions=60,4".
      */
     static SceneDescription
-    read_file(const std::string                    &filename,
+    read_file(const std::string              &filename,
               const std::vector<std::string> &overrides = {});
 
     /** The same from text in memory (tests); name is used in messages. */
@@ -60,16 +60,16 @@ namespace glissade
      */
     static double
     get_double(const dealii::ParameterHandler &prm,
-               const std::string      &entry,
-               const std::string      &filename);
+               const std::string              &entry,
+               const std::string              &filename);
 
     static long int
     get_integer(const dealii::ParameterHandler &prm,
-                const std::string      &entry,
-                const std::string      &filename);
+                const std::string              &entry,
+                const std::string              &filename);
 
     static void
-    parse_study(dealii::ParameterHandler               &prm,
+    parse_study(dealii::ParameterHandler       &prm,
                 const std::string              &filename,
                 const std::vector<std::string> &overrides);
 
@@ -81,13 +81,13 @@ namespace glissade
     /** `regions`: each body's material regions (Material/Regions). */
     static void
     declare_parameters(
-      dealii::ParameterHandler                                      &prm,
+      dealii::ParameterHandler                              &prm,
       const std::vector<std::string>                        &body_names,
       const std::vector<std::string>                        &contact_names,
       const std::map<std::string, std::vector<std::string>> &regions = {});
 
     static SceneDescription
-    parse_parameters(dealii::ParameterHandler               &prm,
+    parse_parameters(dealii::ParameterHandler       &prm,
                      const std::vector<std::string> &body_names,
                      const std::vector<std::string> &contact_names,
                      const std::string              &source);

@@ -28,7 +28,7 @@ namespace glissade
   class DirectSolver
   {
   public:
-    DirectSolver() = default;
+    DirectSolver()                     = default;
     DirectSolver(const DirectSolver &) = delete;
     DirectSolver &
     operator=(const DirectSolver &) = delete;
@@ -71,7 +71,8 @@ namespace glissade
       return schur;
     }
 
-    /** Seconds spent in the analysis and numeric phases so far (both methods). */
+    /** Seconds spent in the analysis and numeric phases so far (both methods).
+     */
     double symbolic_seconds = 0.;
     double numeric_seconds  = 0.;
     /** Factorisations by each method (LU counts the Cholesky fall-backs). */
@@ -85,11 +86,11 @@ namespace glissade
     factorize_lu();
 
     const dealii::SparsityPattern *pattern = nullptr;
-    std::vector<long>      row_start, column_index;
-    std::vector<double>    values;
-    void                  *symbolic = nullptr;
-    void                  *numeric  = nullptr;
-    mutable std::vector<double> solution;
+    std::vector<long>              row_start, column_index;
+    std::vector<double>            values;
+    void                          *symbolic = nullptr;
+    void                          *numeric  = nullptr;
+    mutable std::vector<double>    solution;
 
     bool          symmetric     = false;
     bool          cholesky_used = false;

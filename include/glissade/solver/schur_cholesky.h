@@ -102,11 +102,11 @@ namespace glissade
     std::unique_ptr<Cholmod> cholmod;
     std::vector<long>        last_unknowns;
     std::vector<long>        position;
-    long                     n_last = 0;
+    long                     n_last   = 0;
     bool                     analysed = false;
     /** Formed columns of C, column major, n_last rows. */
-    std::vector<double>      inverse_block;
+    std::vector<double> inverse_block;
     /** Column of inverse_block holding C's column j, or -1. */
-    std::vector<long>        column_of;
+    std::vector<long> column_of;
   };
 } // namespace glissade

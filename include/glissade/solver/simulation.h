@@ -21,9 +21,9 @@ namespace glissade
    */
   struct RunStatistics
   {
-    unsigned int increments        = 0;
-    unsigned int newton_iterations = 0;
-    unsigned int cut_backs         = 0;
+    unsigned int increments            = 0;
+    unsigned int newton_iterations     = 0;
+    unsigned int cut_backs             = 0;
     double       assembly_seconds      = 0.;
     double       factorization_seconds = 0.;
     double       solve_seconds         = 0.;
@@ -134,14 +134,13 @@ namespace glissade
     timing_table() const;
 
   private:
-    /** One Newton solve from the stored state (at t_start) to t; false if it failed. */
+    /** One Newton solve from the stored state (at t_start) to t; false if it
+     * failed. */
     bool
     newton(const double t_start, const double t);
 
     bool
-    advance(const double       t_start,
-            const double       t_end,
-            const unsigned int depth);
+    advance(const double t_start, const double t_end, const unsigned int depth);
 
     void
     write_output(const unsigned int increment, const double t);
@@ -179,20 +178,20 @@ namespace glissade
     serialize_state(Archive &archive);
 
     /** Why the last Newton attempt failed, in words (empty if it did not). */
-    std::string                        failure_cause;
-    const SceneDescription             scene;
+    std::string            failure_cause;
+    const SceneDescription scene;
     /** Every timed part of the run (never printed by itself). */
-    dealii::TimerOutput                        timer;
+    dealii::TimerOutput                timer;
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
     /** (time, VTU file) of each body, then of each pair's contact surface. */
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
-    std::vector<ContactSurfaceOutput>  contact_outputs;
-    std::vector<double>                residual_history;
+    std::vector<ContactSurfaceOutput>                        contact_outputs;
+    std::vector<double>                                      residual_history;
     /** Counters; times restored from a checkpoint (0 in a fresh run). */
-    RunStatistics                      stats;
-    unsigned int                       iterations_of_step = 0;
-    double                             current_time       = 0.;
+    RunStatistics stats;
+    unsigned int  iterations_of_step = 0;
+    double        current_time       = 0.;
   };
 } // namespace glissade
