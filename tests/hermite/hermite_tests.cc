@@ -14,6 +14,7 @@
 #include <map>
 #include <string>
 
+#include "../test_groups.h"
 #include "hermite_test_poisson.h"
 #include "hermite_test_reference.h"
 #include "hermite_test_tools.h"
@@ -607,9 +608,11 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Checker                                            check;
-  Random                                             random;
-  const std::map<std::string, std::function<void()>> groups = {
+  // Each group is a ctest test ("elements_hermite_<group>",
+  // tests/test_groups.h).
+  Checker                      check;
+  Random                       random;
+  const glissade_tests::Groups tests = {
     {"reference_functions", [&] { test_reference_functions(check, random); }},
     {"numbering", [&] { test_numbering(check); }},
     {"geometry_linear_fields",
@@ -617,15 +620,11 @@ main(int argc, char **argv)
     {"edges_c1", [&] { test_edges(check, random); }},
     {"integration", [&] { test_integration(check); }},
     {"poisson_convergence", [&] { test_poisson(check); }}};
-  if (argc != 2 || groups.find(argv[1]) == groups.end())
-    {
-      std::printf("usage: hermite_tests <group>; groups:");
-      for (const auto &g : groups)
-        std::printf(" %s", g.first.c_str());
-      std::printf("\n");
-      return 2;
-    }
-  groups.at(argv[1])();
+  std::function<void()> group;
+  int                   exit_code = 0;
+  if (!glissade_tests::choose_group(argc, argv, tests, {}, group, exit_code))
+    return exit_code;
+  group();
   std::printf("\n%u Hermite element check(s) failed.\n", check.n_failures);
   return check.n_failures == 0 ? 0 : 1;
 }

@@ -7,9 +7,11 @@
 // Built by tests/CMakeLists.txt as surface_tests (one ctest test per group:
 // ctest -R surface); run one group with build/tests/surface_tests <group>.
 
+#include <functional>
 #include <map>
 #include <string>
 
+#include "../test_groups.h"
 #include "surface_test_tools.h"
 
 using namespace surface_test_tools;
@@ -463,12 +465,13 @@ namespace
 } // namespace
 
 
-// Each group is a ctest test of its own ("surface_<group>"); the timings
-// are printed by the benchmark target, not by a test.
+// Each group of `tests` is a ctest test of its own ("surface_<group>",
+// tests/test_groups.h); the timings are printed by the benchmark target, not
+// by a test.
 int
 main(int argc, char **argv)
 {
-  const std::map<std::string, void (*)()> groups = {
+  const glissade_tests::Groups tests = {
     {"bspline_paper_system", test_against_paper_system},
     {"interpolation_continuity", test_interpolation_and_continuity},
     {"straight_line", test_straight_line},
@@ -476,17 +479,13 @@ main(int argc, char **argv)
     {"projection_on_curve", test_projection_of_curve_points},
     {"projection_is_closest", test_projection_is_closest},
     {"projection_circle_convergence", test_circle_convergence},
-    {"projection_robustness", test_projection_robustness},
-    {"timings", print_timings}};
-  if (argc != 2 || groups.find(argv[1]) == groups.end())
-    {
-      std::printf("usage: surface_tests <group>; groups:");
-      for (const auto &g : groups)
-        std::printf(" %s", g.first.c_str());
-      std::printf("\n");
-      return 2;
-    }
-  groups.at(argv[1])();
+    {"projection_robustness", test_projection_robustness}};
+  std::function<void()> group;
+  int                   exit_code = 0;
+  if (!glissade_tests::choose_group(
+        argc, argv, tests, {{"timings", print_timings}}, group, exit_code))
+    return exit_code;
+  group();
   std::printf("\n%u checks, %u failed\n", n_checks, n_failures);
   return n_failures == 0 && n_checks + (std::string(argv[1]) == "timings") > 0 ?
            0 :
