@@ -22,7 +22,8 @@ namespace glissade
         : CurveSurface(*context.master,
                        context.description.master_boundary,
                        context.description.entry + "/Master boundary")
-        , segment_transfer(context.description.force_transfer == "segment")
+        , segment_transfer(context.description.force_transfer ==
+                           ContactDescription::ForceTransfer::segment)
       {
         curve = std::make_unique<BSplineCurve>(
           chain.closed ? BSplineCurve::EndCondition::periodic :

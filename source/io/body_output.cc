@@ -43,9 +43,9 @@ namespace glissade
   } // namespace
 
   std::string
-  Body::write_vtu(const std::string &directory,
-                  const unsigned int index,
-                  const std::string &compression) const
+  Body::write_vtu(const std::string                &directory,
+                  const unsigned int                index,
+                  const OutputSettings::Compression compression) const
   {
     const unsigned int  per_dim = element_space->components_per_displacement();
     StressPostprocessor stress(*materials, per_dim);
@@ -80,10 +80,12 @@ namespace glissade
     // deal.II's default is zlib's level 9, which made writing the VTU files
     // a third of the rings' run; level 1 writes them 5.6 times faster for
     // files 0.6 % larger (doc/performance.md).
-    flags.compression_level =
-      compression == "small" ? DataOutBase::VtkFlags::best_compression :
-      compression == "none"  ? DataOutBase::VtkFlags::no_compression :
-                               DataOutBase::VtkFlags::best_speed;
+    using Compression       = OutputSettings::Compression;
+    flags.compression_level = compression == Compression::small ?
+                                DataOutBase::VtkFlags::best_compression :
+                              compression == Compression::none ?
+                                DataOutBase::VtkFlags::no_compression :
+                                DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
     data_out.build_patches(element_space->mapping(),
                            degree,

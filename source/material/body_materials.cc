@@ -7,18 +7,6 @@ namespace glissade
 {
   using namespace dealii;
 
-  namespace
-  {
-    PlaneHypothesis
-    hypothesis_from_name(const std::string &name)
-    {
-      return name == "plane stress" ? PlaneHypothesis::plane_stress :
-                                      PlaneHypothesis::plane_strain;
-    }
-  } // namespace
-
-
-
   BodyMaterials::BodyMaterials(const MaterialDescription &description,
                                const RegionNames         &regions,
                                const std::string         &mesh_file,
@@ -26,8 +14,7 @@ namespace glissade
     : body_material{Material::create(description.law,
                                      description.young_modulus,
                                      description.poisson_ratio,
-                                     hypothesis_from_name(
-                                       description.hypothesis)),
+                                     description.hypothesis),
                     description.young_modulus,
                     "Material"}
   {
@@ -48,14 +35,13 @@ namespace glissade
                 (known.empty() ? std::string(" (it has none)") :
                                  " (its Physical Surfaces: " + known + ")"));
           }
-        region_materials.emplace(
-          id->second,
-          Entry{Material::create(region.law,
-                                 region.young_modulus,
-                                 region.poisson_ratio,
-                                 hypothesis_from_name(description.hypothesis)),
-                region.young_modulus,
-                "Material " + region.name});
+        region_materials.emplace(id->second,
+                                 Entry{Material::create(region.law,
+                                                        region.young_modulus,
+                                                        region.poisson_ratio,
+                                                        description.hypothesis),
+                                       region.young_modulus,
+                                       "Material " + region.name});
       }
   }
 

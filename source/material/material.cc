@@ -5,10 +5,41 @@
 #include <glissade/material/saint_venant_kirchhoff.h>
 
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace glissade
 {
   using namespace dealii;
+
+  namespace
+  {
+    /** A law from the Lame constants (lambda, mu). */
+    using LawFactory =
+      std::function<std::unique_ptr<HyperelasticLaw>(double, double)>;
+
+    /**
+     * The hyperelastic laws by the name Material/Law gives (its pattern
+     * is made from these names): a new law is a class and one line here.
+     */
+    const std::vector<std::pair<std::string, LawFactory>> &
+    laws()
+    {
+      static const std::vector<std::pair<std::string, LawFactory>> table = {
+        {"neo-Hookean",
+         [](const double lambda, const double mu) {
+           return std::make_unique<NeoHookean>(lambda, mu);
+         }},
+        {"Saint Venant-Kirchhoff", [](const double lambda, const double mu) {
+           return std::make_unique<SaintVenantKirchhoff>(lambda, mu);
+         }}};
+      return table;
+    }
+  } // namespace
+
 
   Material::Material(std::unique_ptr<HyperelasticLaw> law,
                      const PlaneHypothesis            hypothesis)
@@ -28,11 +59,9 @@ namespace glissade
     const double nu     = poisson_ratio;
     const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
     const double mu     = E / (2. * (1. + nu));
-    if (law_name == "neo-Hookean")
-      return Material(std::make_unique<NeoHookean>(lambda, mu), hypothesis);
-    if (law_name == "Saint Venant-Kirchhoff")
-      return Material(std::make_unique<SaintVenantKirchhoff>(lambda, mu),
-                      hypothesis);
+    for (const auto &[name, create_law] : laws())
+      if (name == law_name)
+        return Material(create_law(lambda, mu), hypothesis);
     throw InputError("Material/Law",
                      "unknown law '" + law_name +
                        "' (known: " + text::joined(law_names(), ", ") + ")");
@@ -43,8 +72,12 @@ namespace glissade
   const std::vector<std::string> &
   Material::law_names()
   {
-    static const std::vector<std::string> names = {"neo-Hookean",
-                                                   "Saint Venant-Kirchhoff"};
+    static const std::vector<std::string> names = [] {
+      std::vector<std::string> names;
+      for (const auto &law : laws())
+        names.push_back(law.first);
+      return names;
+    }();
     return names;
   }
 

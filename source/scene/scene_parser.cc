@@ -282,7 +282,9 @@ namespace glissade
       c.master_body     = prm.get("Master body");
       c.master_boundary = prm.get("Master boundary");
       c.surface         = prm.get("Surface");
-      c.force_transfer  = prm.get("Force transfer");
+      c.force_transfer  = prm.get("Force transfer") == "spline" ?
+                            ContactDescription::ForceTransfer::spline :
+                            ContactDescription::ForceTransfer::segment;
       {
         const std::string rule = prm.get("Faceted vertex rule");
         c.vertex_rule          = rule == "closest point" ?
@@ -455,7 +457,9 @@ namespace glissade
       material.law           = prm.get("Law");
       material.young_modulus = prm.get_double("Young modulus");
       material.poisson_ratio = prm.get_double("Poisson ratio");
-      material.hypothesis    = prm.get("Hypothesis");
+      material.hypothesis    = prm.get("Hypothesis") == "plane stress" ?
+                                 PlaneHypothesis::plane_stress :
+                                 PlaneHypothesis::plane_strain;
       material.thickness     = prm.get_double("Thickness");
       const std::vector<std::string> regions =
         Utilities::split_string_list(prm.get("Regions"), ',');
@@ -833,10 +837,16 @@ namespace glissade
     });
 
     prm.enter_subsection("Output");
-    scene.output.directory       = prm.get("Directory");
-    scene.output.vtu_interval    = prm.get_integer("VTU interval");
-    scene.output.vtu_compression = prm.get("VTU compression");
-    scene.output.initial_state   = prm.get_bool("Initial state");
+    scene.output.directory    = prm.get("Directory");
+    scene.output.vtu_interval = prm.get_integer("VTU interval");
+    {
+      using Compression            = OutputSettings::Compression;
+      const std::string level      = prm.get("VTU compression");
+      scene.output.vtu_compression = level == "small" ? Compression::small :
+                                     level == "none"  ? Compression::none :
+                                                        Compression::fast;
+    }
+    scene.output.initial_state = prm.get_bool("Initial state");
     scene.output.contact_table_interval =
       prm.get_integer("Contact table interval");
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))

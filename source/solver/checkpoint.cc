@@ -57,9 +57,7 @@ namespace glissade
     // clang-format on
     if (Archive::is_loading::value)
       stats = totals;
-    archive &pvd_records;
-    // (a checkpoint from before the contact surfaces had PVD files)
-    pvd_records.resize(all_bodies.size() + contact_outputs.size());
+    output->serialize(archive);
     history->serialize_rows(archive);
     for (auto &b : all_bodies)
       {

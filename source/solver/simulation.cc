@@ -10,6 +10,7 @@
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
+#include <glissade/solver/newton_criterion.h>
 #include <glissade/solver/simulation.h>
 
 #include <algorithm>
@@ -28,19 +29,6 @@ namespace glissade
 
   using progress_text::duration;
   using progress_text::time_left;
-
-  namespace
-  {
-    /** plot_scene.py's arguments for Output/Plot curves: "x:y" each. */
-    std::vector<std::string>
-    curve_arguments(const OutputSettings &output)
-    {
-      std::vector<std::string> arguments;
-      for (const auto &[x, y] : output.plot_curves)
-        arguments.push_back(x + ":" + y);
-      return arguments;
-    }
-  } // namespace
 
 
 
@@ -66,9 +54,10 @@ namespace glissade
     mistakes.throw_if_any();
     contact_problem =
       std::make_unique<ContactProblem>(scene, all_bodies, timer);
-    for (const auto &pair : contact_problem->contact_pairs())
-      contact_outputs.emplace_back(*pair);
-    pvd_records.resize(all_bodies.size() + contact_outputs.size());
+    output = std::make_unique<SceneOutput>(scene.output,
+                                           all_bodies,
+                                           *contact_problem,
+                                           timer);
     history =
       std::make_unique<HistoryWriter>(scene.output.history,
                                       all_bodies,
@@ -116,12 +105,13 @@ namespace glissade
 
     residual_history.clear();
     failure_cause.clear();
-    double first_residual    = 0.;
-    double last_increment    = std::numeric_limits<double>::max();
-    double displacement_norm = 0.;
-    double size              = 0.;
+    double size = 0.;
     for (auto &b : all_bodies)
       size = std::max(size, b->size());
+    NewtonCriterion criterion(settings.residual_tolerance,
+                              settings.displacement_tolerance,
+                              size,
+                              n_dofs());
 
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
@@ -177,26 +167,13 @@ namespace glissade
                               "for the bodies' stiffness?)";
             return false;
           }
-        // The reference of divergence: a step driven by prescribed
-        // displacements starts from a zero residual, so take the larger of
-        // the first two.
-        if (iteration <= 1)
-          first_residual = std::max(first_residual, residual);
+        criterion.add_residual(iteration, residual, scale);
         const double scaled = scale > 0. ? residual / scale : residual;
         residual_history.push_back(scaled);
 
-        // At least one correction per step: at iteration 0 the prescribed
-        // displacements of the new time are not applied yet.
-        // The displacement test is relative to |u|; when nothing moves (a
-        // scene at rest, contact closed with no load) |u| is itself round-off,
-        // so the correction is also accepted once it is at the round-off of
-        // the nodes' positions (size * sqrt(n) * 100 eps).
-        const bool converged =
-          iteration > 0 && residual <= settings.residual_tolerance * scale &&
-          last_increment <=
-            std::max(settings.displacement_tolerance * displacement_norm,
-                     100. * std::numeric_limits<double>::epsilon() * size *
-                       std::sqrt(double(n_dofs())));
+        // At least one correction per step (NewtonCriterion): at iteration
+        // 0 the prescribed displacements of the new time are not applied.
+        const bool converged = criterion.converged();
         // A converged state with a slave node behind the master that was
         // not active (beyond the alert distance at the start of the
         // increment) is not a solution: iterate on with that node.
@@ -216,7 +193,7 @@ namespace glissade
                     << std::endl;
         if (iteration == settings.max_iterations)
           break;
-        if (iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300))
+        if (criterion.diverges())
           {
             failure_cause = "Newton diverges: the residual grew by more than "
                             "1e8 over its first value";
@@ -255,15 +232,16 @@ namespace glissade
                         << contact_problem->last_result().message << std::endl;
             return false;
           }
-        double increment_squared = 0.;
-        displacement_norm        = 0.;
+        double increment_squared = 0., displacement_squared = 0.;
         for (unsigned int b = 0; b < all_bodies.size(); ++b)
           {
             all_bodies[b]->update(du[b]);
             increment_squared += du[b].norm_sqr();
-            displacement_norm += all_bodies[b]->displacement().norm_sqr();
+            displacement_squared += all_bodies[b]->displacement().norm_sqr();
           }
-        last_increment = std::sqrt(increment_squared);
+        const double last_increment    = std::sqrt(increment_squared);
+        const double displacement_norm = std::sqrt(displacement_squared);
+        criterion.add_correction(last_increment, displacement_norm);
         if (!contact_problem->empty())
           contact_problem->update_state();
         if (std::getenv("GLISSADE_DEBUG"))
@@ -271,7 +249,6 @@ namespace glissade
             std::cerr << "    body " << b << " |du| " << du[b].l2_norm()
                       << " max " << du[b].linfty_norm() << " |u| "
                       << all_bodies[b]->displacement().l2_norm() << std::endl;
-        displacement_norm = std::sqrt(displacement_norm);
         if (std::getenv("GLISSADE_DEBUG"))
           std::cerr << "  it " << iteration << " |R|/F " << scaled << " |du| "
                     << last_increment << " |u| " << displacement_norm
@@ -361,61 +338,15 @@ namespace glissade
 
 
   void
-  Simulation::write_output(const unsigned int increment, const double t)
-  {
-    TimerOutput::Scope scope(timer, timing::output);
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      {
-        const std::string vtu =
-          all_bodies[b]->write_vtu(scene.output.directory,
-                                   increment,
-                                   scene.output.vtu_compression);
-        pvd_records[b].emplace_back(t, vtu);
-        write_pvd_index(scene.output.directory + "/" + all_bodies[b]->name() +
-                          ".pvd",
-                        pvd_records[b]);
-      }
-    if (scene.output.contact_table_interval == 0)
-      write_contact_table(increment, t);
-  }
-
-
-
-  void
-  Simulation::write_contact_table(const unsigned int increment, const double t)
-  {
-    for (unsigned int p = 0; p < contact_outputs.size(); ++p)
-      contact_outputs[p].write(scene.output.directory,
-                               increment,
-                               t,
-                               pvd_records[all_bodies.size() + p]);
-  }
-
-
-
-  void
   Simulation::write_last_converged_state(const unsigned int increment)
   {
-    // Its VTU and contact tables are written already if the increment was
-    // an output increment; otherwise write them now, so that a failed run
-    // shows where it stood.
-    const bool vtu_written = (increment == 0 && scene.output.initial_state) ||
-                             (increment > 0 && scene.output.vtu_interval > 0 &&
-                              increment % scene.output.vtu_interval == 0);
     try
       {
-        if (!vtu_written)
-          write_output(increment, current_time);
-        else if (scene.output.contact_table_interval > 0 &&
-                 increment % scene.output.contact_table_interval != 0)
-          write_contact_table(increment, current_time);
+        output->write_last_converged_state(increment, current_time);
         std::cerr << "glissade: the last converged state (increment "
                   << increment << ", t = " << current_time << ") is in "
                   << scene.output.directory << std::endl;
-        if (scene.output.plots)
-          plot_with_python("plot_scene.py",
-                           scene.output.directory,
-                           curve_arguments(scene.output));
+        output->draw_pictures();
       }
     catch (const std::exception &e)
       {
@@ -423,6 +354,16 @@ namespace glissade
                      "written: "
                   << e.what() << std::endl;
       }
+  }
+
+
+
+  void
+  Simulation::write_summary_file(const std::string &ending) const
+  {
+    AtomicFile file(scene.output.directory + "/summary.txt");
+    file.stream() << summary() << '\n' << timing_table() << ending;
+    file.commit();
   }
 
 
@@ -452,8 +393,7 @@ namespace glissade
     else
       {
         history->record(0, 0., 0);
-        if (scene.output.initial_state)
-          write_output(0, 0.);
+        output->write_initial_state();
       }
     const double wall_before = stats.wall_seconds;
 
@@ -505,12 +445,7 @@ namespace glissade
             if (on_increment)
               on_increment(increment, t);
             const bool last = (increment == n_total);
-            if (scene.output.contact_table_interval > 0 &&
-                (last || increment % scene.output.contact_table_interval == 0))
-              write_contact_table(increment, t);
-            if (last || (scene.output.vtu_interval > 0 &&
-                         increment % scene.output.vtu_interval == 0))
-              write_output(increment, t);
+            output->write_increment(increment, t, last);
 
             const bool stop = (increment == scene.checkpoint.stop_after);
             if (stop || (scene.checkpoint.interval > 0 &&
@@ -533,18 +468,11 @@ namespace glissade
                 if (!(scene.checkpoint.interval > 0 &&
                       increment % scene.checkpoint.interval == 0))
                   write_checkpoint(increment);
-                if (!(last || (scene.output.vtu_interval > 0 &&
-                               increment % scene.output.vtu_interval == 0)))
-                  write_output(increment, t);
-                AtomicFile summary_file(scene.output.directory +
-                                        "/summary.txt");
-                summary_file.stream()
-                  << summary() << '\n'
-                  << timing_table() << "stopped by "
-                  << interruption::signal_name(signal) << " after increment "
-                  << increment << " of " << n_total
-                  << "; continue with --restart\n";
-                summary_file.commit();
+                output->write_interrupted_state(increment, t, last);
+                write_summary_file(
+                  "stopped by " + interruption::signal_name(signal) +
+                  " after increment " + std::to_string(increment) + " of " +
+                  std::to_string(n_total) + "; continue with --restart\n");
                 throw RunInterrupted(interruption::signal_name(signal) +
                                      " received: stopped "
                                      "after increment " +
@@ -558,17 +486,13 @@ namespace glissade
       }
     stats.wall_seconds = wall_before + wall.wall_time();
 
-    AtomicFile summary_file(scene.output.directory + "/summary.txt");
-    summary_file.stream() << summary() << '\n' << timing_table();
-    if (!completed)
-      summary_file.stream()
-        << "stopped after increment " << increment << " of " << n_total
-        << " (Checkpoint/Stop after increment); continue with --restart\n";
-    summary_file.commit();
-    if (scene.output.plots)
-      plot_with_python("plot_scene.py",
-                       scene.output.directory,
-                       curve_arguments(scene.output));
+    write_summary_file(
+      completed ? std::string() :
+                  "stopped after increment " + std::to_string(increment) +
+                    " of " + std::to_string(n_total) +
+                    " (Checkpoint/Stop after increment); continue with "
+                    "--restart\n");
+    output->draw_pictures();
     return completed;
   }
 
@@ -617,67 +541,14 @@ namespace glissade
   std::string
   Simulation::summary() const
   {
-    const RunStatistics s = statistics();
-    std::ostringstream  out;
-    out << std::setprecision(3) << "glissade: " << s.increments
-        << " increments, " << s.newton_iterations << " Newton iterations, "
-        << s.cut_backs << " cut-backs, " << n_dofs() << " dofs, "
-        << s.wall_seconds << " s wall (assembly " << s.assembly_seconds
-        << " s, factorization " << s.factorization_seconds << " s";
-    if (!contact_problem->empty())
-      out << ", contact detection " << s.detection_seconds << " s, compliance "
-          << s.compliance_seconds << " s, local solve " << s.local_solve_seconds
-          << " s";
-    out << ")";
-    return out.str();
+    return run_summary(statistics(), n_dofs(), !contact_problem->empty());
   }
+
 
 
   std::string
   Simulation::timing_table() const
   {
-    const RunStatistics                         s    = statistics();
-    std::vector<std::pair<std::string, double>> rows = {
-      {timing::assembly, s.assembly_seconds},
-      {timing::factorization, s.factorization_seconds},
-      {timing::predictor, s.solve_seconds}};
-    if (!contact_problem->empty())
-      {
-        // The detection section contains the surface build: shown apart.
-        rows.emplace_back(timing::detection,
-                          s.detection_seconds - s.surface_build_seconds);
-        rows.emplace_back(timing::surface, s.surface_build_seconds);
-        rows.emplace_back(timing::compliance, s.compliance_seconds);
-        rows.emplace_back(timing::local_solve, s.local_solve_seconds);
-      }
-    rows.emplace_back(timing::output, s.output_seconds);
-    if (s.checkpoint_seconds > 0.)
-      rows.emplace_back(timing::checkpoints, s.checkpoint_seconds);
-    double accounted = 0.;
-    for (const auto &row : rows)
-      accounted += row.second;
-    rows.emplace_back("other (corrector, bookkeeping)",
-                      std::max(0., s.wall_seconds - accounted));
-
-    std::ostringstream table;
-    const double       total = std::max(s.wall_seconds, 1e-300);
-    const double       per   = 1000. / std::max(1u, s.increments);
-    table << std::fixed << "  " << std::left << std::setw(36)
-          << "part of the run (deal.II TimerOutput)" << std::right
-          << std::setw(11) << "wall (s)" << std::setw(8) << "%" << std::setw(20)
-          << "per increment (ms)" << '\n';
-    for (const auto &[name, seconds] : rows)
-      table << "  " << std::left << std::setw(36) << name << std::right
-            << std::setw(11) << std::setprecision(3) << seconds << std::setw(8)
-            << std::setprecision(1) << 100. * seconds / total << std::setw(20)
-            << std::setprecision(2) << seconds * per << '\n';
-    table << "  " << std::left << std::setw(36) << "total" << std::right
-          << std::setw(11) << std::setprecision(3) << s.wall_seconds
-          << std::setw(8) << "100.0" << std::setw(20) << std::setprecision(2)
-          << s.wall_seconds * per << '\n';
-    table << "  factorisations: " << s.n_cholesky << " Cholesky, " << s.n_lu
-          << " LU (a tangent that is not positive definite, or not "
-             "symmetric)\n";
-    return table.str();
+    return glissade::timing_table(statistics(), !contact_problem->empty());
   }
 } // namespace glissade

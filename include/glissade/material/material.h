@@ -4,6 +4,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <glissade/material/hyperelastic_law.h>
+#include <glissade/material/plane_hypothesis.h>
 
 #include <memory>
 #include <string>
@@ -11,13 +12,6 @@
 
 namespace glissade
 {
-  /** The planar hypothesis of a 2D body. */
-  enum class PlaneHypothesis
-  {
-    plane_strain,
-    plane_stress
-  };
-
   /** What the 2D solver needs at one quadrature point. */
   struct MaterialPointResponse
   {

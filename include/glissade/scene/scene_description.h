@@ -2,6 +2,8 @@
 
 #include <deal.II/base/point.h>
 
+#include <glissade/material/plane_hypothesis.h>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,11 +95,11 @@ namespace glissade
 
   struct MaterialDescription
   {
-    std::string law           = "neo-Hookean";
-    double      young_modulus = 1.;
-    double      poisson_ratio = 0.3;
-    std::string hypothesis    = "plane strain";
-    double      thickness     = 1.;
+    std::string     law           = "neo-Hookean";
+    double          young_modulus = 1.;
+    double          poisson_ratio = 0.3;
+    PlaneHypothesis hypothesis    = PlaneHypothesis::plane_strain;
+    double          thickness     = 1.;
     /** Regions with a material of their own; other cells take the above. */
     std::vector<MaterialRegionDescription> regions;
   };
@@ -144,10 +146,17 @@ namespace glissade
 
   struct OutputSettings
   {
-    std::string  directory       = "output";
-    unsigned int vtu_interval    = 1;      // 0: initial and final states only
-    bool         initial_state   = true;   // the VTU and tables of increment 0
-    std::string  vtu_compression = "fast"; // fast, small, none
+    std::string  directory     = "output";
+    unsigned int vtu_interval  = 1;    // 0: initial and final states only
+    bool         initial_state = true; // the VTU and tables of increment 0
+    /** VTU compression: zlib's fastest, its best, or none. */
+    enum class Compression
+    {
+      fast,
+      small,
+      none
+    };
+    Compression  vtu_compression        = Compression::fast;
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
     bool                     progress = true;
@@ -174,8 +183,15 @@ namespace glissade
     std::string slave_boundary;
     std::string master_body; // "rigid" for an analytic obstacle
     std::string master_boundary;
-    std::string surface        = "faceted"; // faceted | bspline | hermite
-    std::string force_transfer = "segment"; // B-spline: segment | spline
+    std::string surface = "faceted"; // faceted | bspline | hermite
+    /** B-spline master: the force goes to the two nodes of the segment
+     *  or, through the spline's weights, to its four control points. */
+    enum class ForceTransfer
+    {
+      segment,
+      spline
+    };
+    ForceTransfer force_transfer = ForceTransfer::segment;
     /**
      * How a faceted master resolves the normal a vertex lacks (contact.md,
      * "The faceted master at a vertex"): the segment kept over the

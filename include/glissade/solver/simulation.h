@@ -2,8 +2,9 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/contact_problem.h>
-#include <glissade/io/contact_surface_output.h>
 #include <glissade/io/history_writer.h>
+#include <glissade/io/run_report.h>
+#include <glissade/io/scene_output.h>
 #include <glissade/scene/scene_description.h>
 
 #include <functional>
@@ -13,32 +14,6 @@
 
 namespace glissade
 {
-  /**
-   * Counters and timings of a run, for the summary line, the timing table
-   * and benchmarks. The times are the sections of the run's deal.II
-   * TimerOutput (base/timing_sections.h); detection includes the surface
-   * build.
-   */
-  struct RunStatistics
-  {
-    unsigned int increments            = 0;
-    unsigned int newton_iterations     = 0;
-    unsigned int cut_backs             = 0;
-    double       assembly_seconds      = 0.;
-    double       factorization_seconds = 0.;
-    double       solve_seconds         = 0.;
-    double       detection_seconds     = 0.;
-    double       surface_build_seconds = 0.;
-    double       compliance_seconds    = 0.;
-    double       local_solve_seconds   = 0.;
-    double       output_seconds        = 0.;
-    double       checkpoint_seconds    = 0.;
-    double       wall_seconds          = 0.;
-    /** Factorisations of the bodies' tangents by each method (LU: the
-     * tangent was not positive definite, or not symmetric). */
-    unsigned int n_cholesky = 0, n_lu = 0;
-  };
-
   /**
    * Runs a scene: the load program, increment by increment, each solved by
    * Newton-Raphson on the total Lagrangian equilibrium of every body.
@@ -142,23 +117,17 @@ namespace glissade
     bool
     advance(const double t_start, const double t_end, const unsigned int depth);
 
-    void
-    write_output(const unsigned int increment, const double t);
-
     /**
      * Before a stop (an increment that failed, an input error found while
-     * iterating): the VTU and contact tables of the last converged state,
-     * unless they were written at that increment already.
+     * iterating): the VTU and contact tables of the last converged state
+     * (SceneOutput), where they are, and the pictures.
      */
     void
     write_last_converged_state(const unsigned int increment);
 
-    /**
-     * contact-<pair>-<increment>.csv and .vtu, and contact-<pair>.pvd:
-     * every slave node's state (ContactSurfaceOutput).
-     */
+    /** summary.txt: the summary line, the timing table, and `ending`. */
     void
-    write_contact_table(const unsigned int increment, const double t);
+    write_summary_file(const std::string &ending) const;
 
     /** <Output directory>/checkpoint.bin */
     std::string
@@ -185,10 +154,9 @@ namespace glissade
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
     std::unique_ptr<HistoryWriter>     history;
-    /** (time, VTU file) of each body, then of each pair's contact surface. */
-    std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
-    std::vector<ContactSurfaceOutput>                        contact_outputs;
-    std::vector<double>                                      residual_history;
+    /** The VTU, PVD and contact files written as the run goes. */
+    std::unique_ptr<SceneOutput> output;
+    std::vector<double>          residual_history;
     /** Counters; times restored from a checkpoint (0 in a fresh run). */
     RunStatistics stats;
     unsigned int  iterations_of_step = 0;

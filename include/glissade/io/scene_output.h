@@ -1,0 +1,98 @@
+#pragma once
+
+#include <glissade/body/body.h>
+#include <glissade/contact/contact_problem.h>
+#include <glissade/io/contact_surface_output.h>
+#include <glissade/scene/scene_description.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace dealii
+{
+  class TimerOutput;
+}
+
+namespace glissade
+{
+  /**
+   * What a run writes as it goes, by its scene's Output section: each
+   * body's VTU at the increments asked for (`VTU interval`, the initial
+   * state, the last increment) with its PVD index, each contact pair's
+   * tables and VTU/PVD (`Contact table interval`), and, at the end, the
+   * PNGs (`Plots`). The Simulation says when an increment has converged
+   * or when the run stops; this class decides what is due and writes it.
+   * The PVD indices are part of a checkpoint (serialize()), so that a
+   * restarted run appends to them.
+   */
+  class SceneOutput
+  {
+  public:
+    SceneOutput(const OutputSettings                     &settings,
+                const std::vector<std::unique_ptr<Body>> &bodies,
+                ContactProblem                           &contact,
+                dealii::TimerOutput                      &timer);
+
+    /** The state before the first increment (if `Initial state` asks). */
+    void
+    write_initial_state();
+
+    /** After the converged increment `increment` (at time t); `last`: the
+     *  load program's last. */
+    void
+    write_increment(const unsigned int increment,
+                    const double       t,
+                    const bool         last);
+
+    /**
+     * A run that fails in the increment after `increment`: the VTU and
+     * tables of `increment`, the last converged state, unless they were
+     * written already, so that the output shows where the run stood.
+     */
+    void
+    write_last_converged_state(const unsigned int increment, const double t);
+
+    /** A run stopped by a signal after `increment`: its VTU (and the
+     *  tables that go with it), unless written already. */
+    void
+    write_interrupted_state(const unsigned int increment,
+                            const double       t,
+                            const bool         last);
+
+    /** The PNGs of the run (scripts/plot_scene.py), if `Plots` asks. */
+    void
+    draw_pictures() const;
+
+    /** The PVD indices written so far (checkpoint and restart). */
+    template <class Archive>
+    void
+    serialize(Archive &archive)
+    {
+      archive &pvd_records;
+      // (a checkpoint from before the contact surfaces had PVD files)
+      pvd_records.resize(bodies.size() + contact_outputs.size());
+    }
+
+  private:
+    /** Whether increment's VTU files are written by write_increment(). */
+    bool
+    vtu_due(const unsigned int increment, const bool last) const;
+
+    /** Every body's VTU and PVD; the contact tables if they go with them. */
+    void
+    write_vtu(const unsigned int increment, const double t);
+
+    void
+    write_contact_tables(const unsigned int increment, const double t);
+
+    /** A copy: the scene a Simulation was made from may be a temporary. */
+    const OutputSettings                      settings;
+    const std::vector<std::unique_ptr<Body>> &bodies;
+    dealii::TimerOutput                      &timer;
+    std::vector<ContactSurfaceOutput>         contact_outputs;
+    /** (time, file) of every VTU written, per body then per contact pair. */
+    std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
+  };
+} // namespace glissade
