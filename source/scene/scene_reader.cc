@@ -1,15 +1,18 @@
-#include <deal.II/base/function_parser.h>
+// Reading a scene: the passes over the .prm file (the names first, then
+// every entry strictly), the command line's overrides, and the scene's own
+// entries (Study, Scene). Each section declares and reads its entries in
+// the file of its subject: body_section.cc (with mesh_section.cc and
+// material_section.cc), contact_section.cc, load_program_section.cc,
+// output_section.cc.
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
-#include <glissade/contact/surface_registry.h>
-#include <glissade/fe/element_space_registry.h>
-#include <glissade/material/material.h>
 #include <glissade/scene/parameter_file.h>
 #include <glissade/scene/scene_reader.h>
+#include <glissade/scene/section_reader.h>
 
-#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <fstream>
@@ -23,316 +26,6 @@ namespace glissade
 
   namespace
   {
-    /** The entries a material region may set; unset ones are the body's. */
-    void
-    declare_region_material(ParameterHandler &prm)
-    {
-      prm.declare_entry("Law",
-                        "",
-                        Patterns::Anything(),
-                        "As Material/Law; empty: the body's.");
-      prm.declare_entry("Young modulus",
-                        "",
-                        Patterns::Anything(),
-                        "As Material/Young modulus; empty: the body's.");
-      prm.declare_entry("Poisson ratio",
-                        "",
-                        Patterns::Anything(),
-                        "As Material/Poisson ratio; empty: the body's.");
-    }
-
-    void
-    declare_body(ParameterHandler &prm, const std::vector<std::string> &regions)
-    {
-      prm.enter_subsection("Mesh");
-      {
-        prm.declare_entry(
-          "Type",
-          "rectangle",
-          Patterns::Selection("rectangle|square|half ring|ring|gmsh"),
-          "The mesh generator. rectangle: from Corner 1 to Corner 2, "
-          "boundaries left, right, bottom, top. square: centred at Center with "
-          "side Side, same boundary names. half ring / ring: centred at "
-          "Center between Inner radius and Outer radius, boundaries inner, "
-          "outer and (half ring) start, end at the Start/End angle. gmsh: "
-          "the .msh file File, whose named physical lines become boundaries. "
-          "Must be set: it is how a body's subsection is known to exist.",
-          true);
-        prm.declare_entry("Corner 1",
-                          "0, 0",
-                          Patterns::Anything(),
-                          "rectangle: lower left corner 'x, y'.");
-        prm.declare_entry("Corner 2",
-                          "1, 1",
-                          Patterns::Anything(),
-                          "rectangle: upper right corner 'x, y'.");
-        prm.declare_entry("Center",
-                          "0, 0",
-                          Patterns::Anything(),
-                          "square, rings: centre 'x, y'.");
-        prm.declare_entry("Side",
-                          "1",
-                          Patterns::Double(0.),
-                          "square: side length.");
-        prm.declare_entry("Inner radius",
-                          "0.5",
-                          Patterns::Double(0.),
-                          "rings: inner radius.");
-        prm.declare_entry("Outer radius",
-                          "1",
-                          Patterns::Double(0.),
-                          "rings: outer radius.");
-        prm.declare_entry("Start angle",
-                          "0",
-                          Patterns::Double(),
-                          "half ring: angle of the 'start' end, in degrees.");
-        prm.declare_entry("End angle",
-                          "180",
-                          Patterns::Double(),
-                          "half ring: angle of the 'end' end, in degrees.");
-        prm.declare_entry(
-          "Subdivisions",
-          "1, 1",
-          Patterns::List(Patterns::Integer(1), 2, 2, ","),
-          "Elements along and across: (x, y) for rectangles and squares, "
-          "(circumference, thickness) for rings.");
-        prm.declare_entry("File",
-                          "",
-                          Patterns::Anything(),
-                          "gmsh: path of the .msh file (relative paths are "
-                          "taken from the .prm file's folder).");
-        prm.declare_entry(
-          "Distortion",
-          "0",
-          Patterns::Double(0., 0.4),
-          "Random displacement of interior vertices, as a fraction of the "
-          "local cell size (deterministic). For patch tests.");
-      }
-      prm.leave_subsection();
-
-      prm.enter_subsection("Element");
-      prm.declare_entry(
-        "Space",
-        "q1",
-        Patterns::Selection(ElementSpaceRegistry::names_as_pattern()),
-        "The element space by name: " + ElementSpaceRegistry::documentation());
-      prm.leave_subsection();
-
-      prm.enter_subsection("Material");
-      {
-        prm.declare_entry("Law",
-                          "neo-Hookean",
-                          Patterns::Selection(
-                            text::joined(Material::law_names(), "|")),
-                          "Hyperelastic law (total Lagrangian).");
-        prm.declare_entry("Young modulus",
-                          "1",
-                          Patterns::Double(),
-                          "E in Pa, > 0.");
-        prm.declare_entry("Poisson ratio",
-                          "0.3",
-                          Patterns::Double(),
-                          "nu, in (-1, 0.5).");
-        prm.declare_entry("Hypothesis",
-                          "plane strain",
-                          Patterns::Selection("plane strain|plane stress"),
-                          "Planar hypothesis.");
-        prm.declare_entry("Thickness",
-                          "1",
-                          Patterns::Double(),
-                          "Out-of-plane thickness (m), > 0: forces are per "
-                          "this thickness.");
-        prm.declare_entry(
-          "Regions",
-          "",
-          Patterns::Anything(),
-          "Gmsh meshes: comma-separated names of Physical Surfaces that "
-          "have a material of their own, each set in a subsection "
-          "'Material <name>' beside this one (Law, Young modulus, Poisson "
-          "ratio; an entry left unset is this subsection's). Cells of other "
-          "Physical Surfaces take this subsection's material. Hypothesis and "
-          "Thickness belong to the body.");
-      }
-      prm.leave_subsection();
-      for (const std::string &region : regions)
-        {
-          prm.enter_subsection("Material " + region);
-          declare_region_material(prm);
-          prm.leave_subsection();
-        }
-
-      prm.enter_subsection("Boundary conditions");
-      {
-        prm.declare_entry(
-          "Fixed",
-          "",
-          Patterns::Anything(),
-          "Zero displacement: 'location: components; ...', location a "
-          "boundary name or point(x, y) (a mesh vertex), components x, y or "
-          "xy, or all: xy and every derivative dof of Hermite elements (the "
-          "paper's fully clamped nodes; by default a fixed Hermite boundary "
-          "fixes values and tangential derivatives); or n (t): zero "
-          "displacement normal (tangential) to the boundary at each node, "
-          "along the reference configuration's normal there (a roller on a "
-          "curved boundary; q1 bodies). Example: 'left: xy; point(0, 0): y; "
-          "outer: n'.");
-        prm.declare_entry(
-          "Prescribed displacement",
-          "",
-          Patterns::Anything(),
-          "'location: components: expressions; ...', one muParser "
-          "expression per component in x, y (reference position) and t. "
-          "Example: 'top: y: -0.01*t'.");
-        prm.declare_entry(
-          "Prescribed rotation",
-          "",
-          Patterns::Anything(),
-          "Rigid rotation of a boundary about a point: 'location: cx, cy: "
-          "angle(t)' with the angle in radians. Example: 'inner: 0, 0: "
-          "pi*max(t-1, 0)'.");
-        prm.declare_entry(
-          "Point loads",
-          "",
-          Patterns::Anything(),
-          "Nodal forces in N, on the whole thickness (added as given): "
-          "'point(x, y): fx, fy; ...' with fx, fy expressions in t.");
-        prm.declare_entry(
-          "Nodal loads",
-          "",
-          Patterns::Anything(),
-          "The same force on every node of a boundary: 'boundary: fx, fy; "
-          "...' with expressions in x, y (the node's reference position) "
-          "and t, e.g. radial forces 'outer: -10*x/sqrt(x^2+y^2)*t, "
-          "-10*y/sqrt(x^2+y^2)*t'.");
-        prm.declare_entry(
-          "Tractions",
-          "",
-          Patterns::Anything(),
-          "Dead tractions, force per unit reference area (integrated along "
-          "the reference boundary times the material's Thickness): "
-          "'boundary: tx, ty; ...' (expressions in x, y, t).");
-        prm.declare_entry(
-          "Pressure",
-          "",
-          Patterns::Anything(),
-          "Follower pressure on the deformed boundary, positive into the "
-          "body, force per unit area (times the Thickness): 'boundary: p; "
-          "...' (expression in x, y, t).");
-      }
-      prm.leave_subsection();
-    }
-
-    void
-    declare_contact(ParameterHandler &prm)
-    {
-      prm.declare_entry("Slave body",
-                        "",
-                        Patterns::Anything(),
-                        "The body whose boundary nodes are the slave nodes.");
-      prm.declare_entry(
-        "Slave boundary",
-        "",
-        Patterns::Anything(),
-        "The declared contact area on the slave body: a boundary "
-        "name, or several separated by commas "
-        "('bottom, left, right'), whose nodes form one set.");
-      prm.declare_entry("Master body",
-                        "rigid",
-                        Patterns::Anything(),
-                        "The body that carries the master surface, or "
-                        "'rigid' for an analytic obstacle (subsection "
-                        "Obstacle).");
-      prm.declare_entry("Master boundary",
-                        "",
-                        Patterns::Anything(),
-                        "The declared contact area on the master body.");
-      prm.declare_entry("Surface",
-                        "faceted",
-                        Patterns::Selection(SurfaceRegistry::names_as_pattern(
-                          SurfaceRegistry::Kind::deformable)),
-                        "Representation of the master surface: " +
-                          SurfaceRegistry::documentation(
-                            SurfaceRegistry::Kind::deformable));
-      prm.declare_entry(
-        "Force transfer",
-        "segment",
-        Patterns::Selection("segment|spline"),
-        "How a B-spline master receives the reaction: segment hands it to "
-        "the two nodes of the underlying straight segment (the paper); "
-        "spline uses the spline's own weights (consistent, symmetric W).");
-      prm.declare_entry(
-        "Faceted vertex rule",
-        "kept segment",
-        Patterns::Selection("kept segment|closest point|vertex normal"),
-        "What a faceted master does at a vertex, where its normal jumps "
-        "(doc/contact.md). kept segment: a node keeps its segment over "
-        "the increment, up to half its length past either end; a new "
-        "choice takes the closest point, and a node exactly on a vertex the "
-        "segment leaving it. closest point: the closest point at every "
-        "iteration, a node in the corner's wedge (behind both facets) "
-        "meeting the vertex with the mean normal of the two facets. vertex "
-        "normal: as closest point, and a node on a vertex (to 1e-9 of the "
-        "segment) meets it with the mean normal too, instead of the "
-        "segment leaving it: the only rule objective under a rigid turn, "
-        "but a node that must slide off a vertex with friction does not "
-        "converge. Other surfaces ignore this entry.");
-      prm.declare_entry("Alert distance",
-                        "0",
-                        Patterns::Double(0.),
-                        "Slave nodes farther than this from the master at the "
-                        "start of an increment start it inactive; they join "
-                        "the condensed problem only if an iteration would "
-                        "take them behind the master.");
-      prm.declare_entry(
-        "Frame update",
-        "iteration",
-        Patterns::Selection("iteration|increment"),
-        "Kept for old scenes: the active nodes are re-projected at every "
-        "Newton iteration, with the contact's own terms in the tangent. "
-        "'increment' (the frame frozen over an increment) was removed and "
-        "is refused with a message.");
-      prm.declare_entry("Friction coefficient",
-                        "0",
-                        Patterns::Double(0.),
-                        "Coulomb's mu (0: frictionless).");
-      // The local solver's settings belong to the scene (section Contact
-      // solver): the active nodes of all pairs form one local problem.
-      // These entries are kept for old scenes.
-      for (const auto &[entry, owner] :
-           {std::pair<const char *, const char *>{"Beta", "Beta"},
-            {"Tolerance", "Tolerance"},
-            {"Maximum sweeps", "Maximum sweeps"}})
-        prm.declare_entry(entry,
-                          "",
-                          Patterns::Anything(),
-                          std::string("Kept for old scenes: empty, or this "
-                                      "pair's value of Contact solver/") +
-                            owner +
-                            ", which replaces the section's (every pair "
-                            "that gives one must give the same).");
-      prm.enter_subsection("Obstacle");
-      prm.declare_entry("Type",
-                        "line",
-                        Patterns::Selection(SurfaceRegistry::names_as_pattern(
-                          SurfaceRegistry::Kind::rigid)),
-                        SurfaceRegistry::documentation(
-                          SurfaceRegistry::Kind::rigid));
-      prm.declare_entry("Point",
-                        "0, 0",
-                        Patterns::Anything(),
-                        "line: a point on it; disk, hole: the centre.");
-      prm.declare_entry("Normal",
-                        "0, 1",
-                        Patterns::Anything(),
-                        "line: the normal pointing out of the obstacle.");
-      prm.declare_entry("Radius", "1", Patterns::Double(0.), "disk, hole.");
-      prm.declare_entry("Motion",
-                        "0, 0",
-                        Patterns::Anything(),
-                        "Translation of the obstacle as expressions of t.");
-      prm.leave_subsection();
-    }
-
     /** Applies one "A/B/Entry=value" override. */
     void
     apply_override(ParameterHandler &prm, const std::string &assignment)
@@ -406,6 +99,50 @@ namespace glissade
       return names;
     }
 
+
+
+    /**
+     * A 64-bit FNV-1a hash of every value of the scene except the
+     * Checkpoint section (a run stopped half-way and its restart differ
+     * only there): a restart refuses a checkpoint of another scene.
+     */
+    std::string
+    fingerprint(ParameterHandler &prm, const std::vector<std::string> &files)
+    {
+      prm.enter_subsection("Checkpoint");
+      const std::string interval = prm.get("Interval");
+      const std::string stop     = prm.get("Stop after increment");
+      prm.set("Interval", "0");
+      prm.set("Stop after increment", "0");
+      prm.leave_subsection();
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      prm.enter_subsection("Checkpoint");
+      prm.set("Interval", interval);
+      prm.set("Stop after increment", stop);
+      prm.leave_subsection();
+      // The content of the files the scene reads (meshes): a restart after a
+      // mesh file changed would otherwise continue a different problem.
+      for (const auto &file : files)
+        {
+          // Only what the mesh reader will accept (it refuses the rest with
+          // a message): a device such as /dev/zero never ends.
+          if (!text::is_regular_file_of_at_most(file, 1ull << 31))
+            continue;
+          std::ifstream in(file, std::ios::binary);
+          text << "\nfile " << file << '\n' << in.rdbuf();
+        }
+
+      std::uint64_t hash = 14695981039346656037ull;
+      for (const char c : text.str())
+        {
+          hash ^= static_cast<unsigned char>(c);
+          hash *= 1099511628211ull;
+        }
+      std::ostringstream hex;
+      hex << std::hex << std::setw(16) << std::setfill('0') << hash;
+      return hex.str();
+    }
   } // namespace
 
 
@@ -450,7 +187,7 @@ namespace glissade
     for (const auto &name : contact_names)
       {
         prm.enter_subsection("Contact " + name);
-        declare_contact(prm);
+        ContactDescription::declare_parameters(prm);
         prm.leave_subsection();
       }
 
@@ -458,148 +195,82 @@ namespace glissade
       {
         prm.enter_subsection("Body " + name);
         const auto body_regions = regions.find(name);
-        declare_body(prm,
-                     body_regions == regions.end() ?
-                       std::vector<std::string>() :
-                       body_regions->second);
+        BodyDescription::declare_parameters(prm,
+                                            body_regions == regions.end() ?
+                                              std::vector<std::string>() :
+                                              body_regions->second);
         prm.leave_subsection();
       }
 
-    prm.enter_subsection("Load program");
-    prm.declare_entry("Stage end times",
-                      "1",
-                      Patterns::List(Patterns::Double(), 1),
-                      "Time t at the end of each stage (increasing). Loads "
-                      "and motions are expressions in t.");
-    prm.declare_entry("Stage increments",
-                      "1",
-                      Patterns::List(Patterns::Integer(1), 1),
-                      "Number of equal increments of each stage.");
-    prm.declare_entry("Maximum cut-back depth",
-                      "6",
-                      Patterns::Integer(0, 30),
-                      "How many times an increment that does not converge "
-                      "may be bisected before the run stops.");
-    prm.leave_subsection();
+    LoadProgram::declare_parameters(prm);
+    NewtonSettings::declare_parameters(prm);
+    ContactSolverSettings::declare_parameters(prm);
+    OutputSettings::declare_parameters(prm);
+    CheckpointSettings::declare_parameters(prm);
+  }
 
-    prm.enter_subsection("Newton");
-    prm.declare_entry("Maximum iterations",
-                      "25",
-                      Patterns::Integer(1),
-                      "Newton iterations per increment before a cut-back.");
-    prm.declare_entry("Residual tolerance",
-                      "1e-9",
-                      Patterns::Double(0.),
-                      "Converged when |R| <= tol * max(|F_int|, |F_ext|) on "
-                      "the free dofs...");
-    prm.declare_entry("Displacement tolerance",
-                      "1e-9",
-                      Patterns::Double(0.),
-                      "...and |du| <= tol * |u| (tol * 1e-12 * the largest "
-                      "body's diameter while u = 0).");
-    prm.leave_subsection();
 
-    prm.enter_subsection("Contact solver");
-    prm.declare_entry("Beta",
-                      "1",
-                      Patterns::Double(0.),
-                      "Bi-potential parameter in (0, 2): rho_k = beta / "
-                      "W_kk(nn) on a frictionless node, beta / the largest "
-                      "eigenvalue of its 2x2 block W_kk with friction. The "
-                      "active nodes of all contact pairs form one local "
-                      "problem, solved with these settings.");
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      Patterns::Double(0.),
-                      "Relative tolerance of the local solver.");
-    prm.declare_entry("Maximum sweeps",
-                      "10000",
-                      Patterns::Integer(1),
-                      "Gauss-Seidel sweeps of the local solver.");
-    prm.leave_subsection();
 
-    prm.enter_subsection("Output");
-    prm.declare_entry("Directory",
-                      "output",
-                      Patterns::Anything(),
-                      "Where VTU/PVD, history.csv and summary.txt go "
-                      "(relative paths: from the working directory).");
-    prm.declare_entry("VTU interval",
-                      "1",
-                      Patterns::Integer(0),
-                      "Write a VTU every this many increments (0: only the "
-                      "initial and final states).");
-    prm.declare_entry("Initial state",
-                      "true",
-                      Patterns::Bool(),
-                      "Write the VTU files and contact tables of increment "
-                      "0 (the reference configuration, no contact force); "
-                      "false: only the increments that the intervals ask "
-                      "for and the final state.");
-    prm.declare_entry("VTU compression",
-                      "fast",
-                      Patterns::Selection("fast|small|none"),
-                      "zlib compression of the bodies' VTU files: fast "
-                      "(zlib level 1), small (level 9, deal.II's default: "
-                      "0.6 % smaller, written 5.6 times slower on the 160 x "
-                      "16 rings), none (3.4 times larger).");
-    prm.declare_entry("Contact table interval",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write contact-<pair>-<increment>.csv (every slave "
-                      "node's gap, reaction, status) every this many "
-                      "increments; 0: with the VTU files.");
-    prm.declare_entry(
-      "History",
-      "",
-      Patterns::Anything(),
-      "Columns of history.csv, ';'-separated: displacement(body, point(x, "
-      "y)), max_displacement(body), reaction(body, boundary), "
-      "contact_force(pair) (total force on the slave and active nodes), "
-      "contact_node(pair, point(x, y)) (r_n, r_t, |f|, gap of the slave node "
-      "at that reference position).");
-    prm.declare_entry("Progress",
-                      "true",
-                      Patterns::Bool(),
-                      "Print one line per increment.");
-    prm.declare_entry("Plots",
-                      "false",
-                      Patterns::Bool(),
-                      "At the end of the run (or at a stop), draw PNGs "
-                      "from the written files: history.png (every history "
-                      "column against t, and the Newton iterations), and "
-                      "contact-<pair>-pressure.png (the pressure along "
-                      "each slave boundary at the written increments) and "
-                      "deformed-mesh.png (the bodies in their last written "
-                      "state, coloured by von Mises). "
-                      "Needs Debian's /usr/bin/python3 with matplotlib; "
-                      "without it the run says so and goes on.");
-    prm.declare_entry(
-      "Plot curves",
-      "",
-      Patterns::Anything(),
-      "With Plots: curves.png, one panel per 'x column: y "
-      "column' item (';'-separated), each a column of "
-      "history.csv (or time), e.g. a force-displacement "
-      "curve 'pad_uy_0_10: pad_Ry_top'. Checked, but drawn only with "
-      "Plots = true.");
-    prm.leave_subsection();
+  SceneDescription
+  SceneReader::parse_parameters(ParameterHandler               &handler,
+                                const std::vector<std::string> &body_names,
+                                const std::vector<std::string> &contact_names,
+                                const std::string              &source)
+  {
+    SceneDescription scene;
+    SectionReader    prm(handler, source);
+    scene.source = source;
 
-    prm.enter_subsection("Checkpoint");
-    prm.declare_entry("Interval",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write <Output directory>/checkpoint.bin every this "
-                      "many converged increments (0: never). 'glissade "
-                      "scene.prm --restart' continues from it to the same "
-                      "output as an uninterrupted run.");
-    prm.declare_entry("Stop after increment",
-                      "0",
-                      Patterns::Integer(0),
-                      "Write a checkpoint after this increment and stop "
-                      "cleanly (0: run to the end): a long study in "
-                      "batches of a queue's time limit.");
-    prm.leave_subsection();
+    // Each part is checked even when an earlier one has a mistake: the user
+    // reads every mistake of the file in one message.
+    prm.check([&]() { scene.contact_solver.parse_parameters(prm); });
+    for (const auto &name : contact_names)
+      prm.check([&]() {
+        ContactDescription contact;
+        contact.name = name;
+        prm.enter_subsection("Contact " + name);
+        contact.parse_parameters(prm, body_names, scene.contact_solver);
+        prm.leave_subsection();
+        scene.contacts.push_back(contact);
+      });
+    for (const auto &name : body_names)
+      {
+        BodyDescription body;
+        body.name = name;
+        prm.enter_subsection("Body " + name);
+        body.parse_parameters(prm);
+        prm.leave_subsection();
+        // A body that nothing holds (no Dirichlet datum, no contact pair)
+        // has a singular tangent: its rigid-body motions are free. The
+        // factorisation would not always say so (round-off pivots), and the
+        // run would end on an inverted element far from the cause.
+        bool in_contact = false;
+        for (const auto &c : scene.contacts)
+          in_contact =
+            in_contact || c.slave_body == name || c.master_body == name;
+        if (body.dirichlet.empty() && !in_contact)
+          prm.check([&]() {
+            throw InputError(source + ": Body " + name + "/Boundary conditions",
+                             "body '" + name +
+                               "' has no support: no Fixed, Prescribed "
+                               "displacement or rotation, and no contact "
+                               "pair, so its rigid-body motions (two "
+                               "translations and a rotation) are free");
+          });
+        scene.bodies.push_back(body);
+      }
+    scene.load_program.parse_parameters(prm);
+    scene.newton.parse_parameters(prm);
+    scene.output.parse_parameters(prm);
+    scene.checkpoint.parse_parameters(prm, scene.load_program);
+
+    prm.throw_if_any();
+    std::vector<std::string> files_read;
+    for (const auto &body : scene.bodies)
+      if (!body.mesh.file.empty())
+        files_read.push_back(body.mesh.file);
+    scene.fingerprint = fingerprint(handler, files_read);
+    return scene;
   }
 
 

@@ -8,8 +8,23 @@
 #include <utility>
 #include <vector>
 
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+/*
+ * What a .prm file describes, as plain data. Each part declares its own
+ * entries and reads them back (declare_parameters and parse_parameters, as
+ * the parameter structs of deal.II's step-44), in the source file of its
+ * section: source/scene/mesh_section.cc, material_section.cc,
+ * body_section.cc, contact_section.cc, load_program_section.cc,
+ * output_section.cc. SceneReader runs the passes over the file.
+ */
 namespace glissade
 {
+  class SectionReader;
+
   /**
    * What a body's mesh is made of, as read from its "Mesh" subsection. Only
    * the entries that the chosen generator uses are looked at.
@@ -28,6 +43,13 @@ namespace glissade
     std::vector<unsigned int> subdivisions;
     std::string               file;
     double                    distortion = 0.;
+
+    /** Body <name>/Mesh (source/scene/mesh_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /** `where`: "<file>: Body <name>", for messages. */
+    void
+    parse_parameters(SectionReader &prm, const std::string &where);
   };
 
   /**
@@ -102,6 +124,16 @@ namespace glissade
     double          thickness     = 1.;
     /** Regions with a material of their own; other cells take the above. */
     std::vector<MaterialRegionDescription> regions;
+
+    /**
+     * Body <name>/Material and a subsection Material <region> for each of
+     * `regions` (source/scene/material_section.cc).
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &regions);
+    void
+    parse_parameters(SectionReader &prm, const std::string &where);
   };
 
   struct BodyDescription
@@ -112,6 +144,17 @@ namespace glissade
     MaterialDescription               material;
     std::vector<DirichletDescription> dirichlet;
     std::vector<NeumannDescription>   neumann;
+
+    /**
+     * The subsection Body <name>: Mesh, Element, Material, Boundary
+     * conditions (source/scene/body_section.cc). `name` is set before
+     * parse_parameters.
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &regions);
+    void
+    parse_parameters(SectionReader &prm);
   };
 
   /**
@@ -124,6 +167,12 @@ namespace glissade
     std::vector<double>       stage_end_times    = {1.};
     std::vector<unsigned int> stage_increments   = {1};
     unsigned int              max_cut_back_depth = 6;
+
+    /** The section Load program (source/scene/load_program_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
   };
 
   /**
@@ -135,6 +184,12 @@ namespace glissade
     double       beta       = 1.;
     double       tolerance  = 1e-10;
     unsigned int max_sweeps = 10000;
+
+    /** The section Contact solver (source/scene/contact_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
   };
 
   struct NewtonSettings
@@ -142,6 +197,12 @@ namespace glissade
     unsigned int max_iterations         = 25;
     double       residual_tolerance     = 1e-9;
     double       displacement_tolerance = 1e-9;
+
+    /** The section Newton (source/scene/load_program_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
   };
 
   struct OutputSettings
@@ -163,6 +224,12 @@ namespace glissade
     bool                     plots    = false; // scripts/plot_scene.py
     /** (x column, y column) of history.csv: curves.png, with Plots. */
     std::vector<std::pair<std::string, std::string>> plot_curves;
+
+    /** The section Output (source/scene/output_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
   };
 
   /** Checkpoints of a long run (Simulation::run). */
@@ -170,6 +237,13 @@ namespace glissade
   {
     unsigned int interval   = 0; // increments between checkpoints; 0: none
     unsigned int stop_after = 0; // stop after this increment; 0: never
+
+    /** The section Checkpoint (source/scene/output_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /** `load_program`: Stop after increment must lie within it. */
+    void
+    parse_parameters(SectionReader &prm, const LoadProgram &load_program);
   };
 
   /**
@@ -218,6 +292,19 @@ namespace glissade
     double                   obstacle_radius = 1.;
     std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
     std::string              entry;                        // "Contact <name>"
+
+    /** The subsection Contact <name> (source/scene/contact_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /**
+     * `name` is set before; `body_names` are the scene's bodies, `solver`
+     * the section Contact solver, which a pair's own entries of an old
+     * scene replace.
+     */
+    void
+    parse_parameters(SectionReader                  &prm,
+                     const std::vector<std::string> &body_names,
+                     const ContactSolverSettings    &solver);
   };
 
   /** Everything a .prm file describes. */

@@ -1,0 +1,283 @@
+// Contact <name> (a pair and its rigid Obstacle) and Contact solver (the
+// local solver of the condensed problem, one for all pairs).
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
+#include <glissade/contact/surface_registry.h>
+#include <glissade/scene/scene_description.h>
+#include <glissade/scene/section_reader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  void
+  ContactSolverSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    prm.declare_entry("Beta",
+                      "1",
+                      Patterns::Double(0.),
+                      "Bi-potential parameter in (0, 2): rho_k = beta / "
+                      "W_kk(nn) on a frictionless node, beta / the largest "
+                      "eigenvalue of its 2x2 block W_kk with friction. The "
+                      "active nodes of all contact pairs form one local "
+                      "problem, solved with these settings.");
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Relative tolerance of the local solver.");
+    prm.declare_entry("Maximum sweeps",
+                      "10000",
+                      Patterns::Integer(1),
+                      "Gauss-Seidel sweeps of the local solver.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactSolverSettings::parse_parameters(SectionReader &prm)
+  {
+    prm.enter_subsection("Contact solver");
+    beta       = prm.get_double("Beta");
+    tolerance  = prm.get_double("Tolerance");
+    max_sweeps = prm.get_integer("Maximum sweeps");
+    prm.leave_subsection();
+    if (!(beta > 0. && beta < 2.))
+      throw InputError(prm.file() + ": Contact solver/Beta",
+                       "must lie in (0, 2)");
+    if (!(tolerance > 0.))
+      throw InputError(prm.file() + ": Contact solver/Tolerance",
+                       "must be > 0: the local solver's residual is never "
+                       "exactly zero (1e-10 is the default)");
+  }
+
+
+
+  void
+  ContactDescription::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Slave body",
+                      "",
+                      Patterns::Anything(),
+                      "The body whose boundary nodes are the slave nodes.");
+    prm.declare_entry(
+      "Slave boundary",
+      "",
+      Patterns::Anything(),
+      "The declared contact area on the slave body: a boundary "
+      "name, or several separated by commas "
+      "('bottom, left, right'), whose nodes form one set.");
+    prm.declare_entry("Master body",
+                      "rigid",
+                      Patterns::Anything(),
+                      "The body that carries the master surface, or "
+                      "'rigid' for an analytic obstacle (subsection "
+                      "Obstacle).");
+    prm.declare_entry("Master boundary",
+                      "",
+                      Patterns::Anything(),
+                      "The declared contact area on the master body.");
+    prm.declare_entry("Surface",
+                      "faceted",
+                      Patterns::Selection(SurfaceRegistry::names_as_pattern(
+                        SurfaceRegistry::Kind::deformable)),
+                      "Representation of the master surface: " +
+                        SurfaceRegistry::documentation(
+                          SurfaceRegistry::Kind::deformable));
+    prm.declare_entry(
+      "Force transfer",
+      "segment",
+      Patterns::Selection("segment|spline"),
+      "How a B-spline master receives the reaction: segment hands it to "
+      "the two nodes of the underlying straight segment (the paper); "
+      "spline uses the spline's own weights (consistent, symmetric W).");
+    prm.declare_entry(
+      "Faceted vertex rule",
+      "kept segment",
+      Patterns::Selection("kept segment|closest point|vertex normal"),
+      "What a faceted master does at a vertex, where its normal jumps "
+      "(doc/contact.md). kept segment: a node keeps its segment over "
+      "the increment, up to half its length past either end; a new "
+      "choice takes the closest point, and a node exactly on a vertex the "
+      "segment leaving it. closest point: the closest point at every "
+      "iteration, a node in the corner's wedge (behind both facets) "
+      "meeting the vertex with the mean normal of the two facets. vertex "
+      "normal: as closest point, and a node on a vertex (to 1e-9 of the "
+      "segment) meets it with the mean normal too, instead of the "
+      "segment leaving it: the only rule objective under a rigid turn, "
+      "but a node that must slide off a vertex with friction does not "
+      "converge. Other surfaces ignore this entry.");
+    prm.declare_entry("Alert distance",
+                      "0",
+                      Patterns::Double(0.),
+                      "Slave nodes farther than this from the master at the "
+                      "start of an increment start it inactive; they join "
+                      "the condensed problem only if an iteration would "
+                      "take them behind the master.");
+    prm.declare_entry(
+      "Frame update",
+      "iteration",
+      Patterns::Selection("iteration|increment"),
+      "Kept for old scenes: the active nodes are re-projected at every "
+      "Newton iteration, with the contact's own terms in the tangent. "
+      "'increment' (the frame frozen over an increment) was removed and "
+      "is refused with a message.");
+    prm.declare_entry("Friction coefficient",
+                      "0",
+                      Patterns::Double(0.),
+                      "Coulomb's mu (0: frictionless).");
+    // The local solver's settings belong to the scene (section Contact
+    // solver): the active nodes of all pairs form one local problem.
+    // These entries are kept for old scenes.
+    for (const auto &[entry, owner] :
+         {std::pair<const char *, const char *>{"Beta", "Beta"},
+          {"Tolerance", "Tolerance"},
+          {"Maximum sweeps", "Maximum sweeps"}})
+      prm.declare_entry(entry,
+                        "",
+                        Patterns::Anything(),
+                        std::string("Kept for old scenes: empty, or this "
+                                    "pair's value of Contact solver/") +
+                          owner +
+                          ", which replaces the section's (every pair "
+                          "that gives one must give the same).");
+    prm.enter_subsection("Obstacle");
+    prm.declare_entry("Type",
+                      "line",
+                      Patterns::Selection(SurfaceRegistry::names_as_pattern(
+                        SurfaceRegistry::Kind::rigid)),
+                      SurfaceRegistry::documentation(
+                        SurfaceRegistry::Kind::rigid));
+    prm.declare_entry("Point",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "line: a point on it; disk, hole: the centre.");
+    prm.declare_entry("Normal",
+                      "0, 1",
+                      Patterns::Anything(),
+                      "line: the normal pointing out of the obstacle.");
+    prm.declare_entry("Radius", "1", Patterns::Double(0.), "disk, hole.");
+    prm.declare_entry("Motion",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "Translation of the obstacle as expressions of t.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactDescription::parse_parameters(
+    SectionReader                  &prm,
+    const std::vector<std::string> &body_names,
+    const ContactSolverSettings    &solver)
+  {
+    entry = prm.file() + ": Contact " + name;
+    slave_body      = prm.get("Slave body");
+    slave_boundary  = prm.get("Slave boundary");
+    master_body     = prm.get("Master body");
+    master_boundary = prm.get("Master boundary");
+    surface         = prm.get("Surface");
+    force_transfer  = prm.get("Force transfer") == "spline" ?
+                          ContactDescription::ForceTransfer::spline :
+                          ContactDescription::ForceTransfer::segment;
+    {
+      const std::string rule = prm.get("Faceted vertex rule");
+      vertex_rule          = rule == "closest point" ?
+                                 ContactDescription::VertexRule::closest_point :
+                               rule == "vertex normal" ?
+                                 ContactDescription::VertexRule::vertex_normal :
+                                 ContactDescription::VertexRule::kept_segment;
+    }
+    alert_distance = prm.get_double("Alert distance");
+    if (prm.get("Frame update") == "increment")
+      throw InputError(
+        entry + "/Frame update",
+        "'increment' (the contact frame frozen over an increment) was "
+        "removed: the tangent now holds the contact's own terms, so the "
+        "frame is updated at every Newton iteration and converges "
+        "quadratically in the true frame (doc/contact.md); delete this "
+        "line");
+    friction = prm.get_double("Friction coefficient");
+    // A pair's own value of a Contact solver entry (old scenes)
+    // replaces the section's.
+    const auto solver_entry = [&](const std::string &setting,
+                                  const double       section_value) {
+      return prm.number_or_inherited(setting,
+                                 section_value,
+                                 entry,
+                                 " (this entry is kept for old scenes: set "
+                                 "Contact solver/" +
+                                   setting + " instead, once for all pairs)");
+    };
+    beta              = solver_entry("Beta", solver.beta);
+    tolerance         = solver_entry("Tolerance", solver.tolerance);
+    const double sweeps = solver_entry("Maximum sweeps", solver.max_sweeps);
+    if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
+      throw InputError(entry + "/Maximum sweeps",
+                       "must be a whole number of at least 1");
+    max_sweeps = static_cast<unsigned int>(sweeps);
+    if (!(tolerance > 0.))
+      throw InputError(entry + "/Tolerance",
+                       "must be > 0: the local solver's residual is never "
+                       "exactly zero (1e-10 is the default)");
+    if (friction > 100.)
+      throw InputError(entry + "/Friction coefficient",
+                       "is " + std::to_string(friction) +
+                         ": above 100 the local solver's cone is too "
+                         "sharp to converge in double precision; such "
+                         "a contact sticks for any load, so use 100");
+    prm.enter_subsection("Obstacle");
+    obstacle = prm.get("Type");
+    obstacle_point =
+      entry_format::coordinates(prm.get("Point"), entry + "/Obstacle/Point");
+    const Point<2> normal =
+      entry_format::coordinates(prm.get("Normal"), entry + "/Obstacle/Normal");
+    obstacle_normal = normal;
+    obstacle_radius = prm.get_double("Radius");
+    obstacle_motion = text::split_top_level(prm.get("Motion"), ',');
+    prm.leave_subsection();
+    if (!(obstacle_radius <= 1e100))
+      throw InputError(entry + "/Obstacle/Radius",
+                       "must be finite and below 1e100 (squared distances "
+                       "would overflow)");
+
+    const auto known = [&](const std::string &b) {
+      return std::find(body_names.begin(), body_names.end(), b) !=
+             body_names.end();
+    };
+    if (!known(slave_body))
+      throw InputError(entry + "/Slave body",
+                       "there is no body '" + slave_body + "'");
+    if (master_body != "rigid" && !known(master_body))
+      throw InputError(entry + "/Master body",
+                       "there is no body '" + master_body +
+                         "' (or use 'rigid')");
+    if (master_body == slave_body)
+      throw InputError(entry + "/Master body",
+                       "a body cannot be its own master");
+    if (slave_boundary.empty())
+      throw InputError(entry + "/Slave boundary", "must be given");
+    if (master_body != "rigid" && master_boundary.empty())
+      throw InputError(entry + "/Master boundary", "must be given");
+    if (!(beta > 0. && beta < 2.))
+      throw InputError(entry + "/Beta", "must lie in (0, 2)");
+    if (obstacle_motion.size() != 2)
+      throw InputError(entry + "/Obstacle/Motion",
+                       "expected two expressions 'x(t), y(t)'");
+    entry_format::check_expressions(obstacle_motion, entry + "/Obstacle/Motion");
+    if (master_body == "rigid" && obstacle == "line" &&
+        normal.norm() == 0.)
+      throw InputError(entry + "/Obstacle/Normal", "must not be zero");
+  }
+} // namespace glissade

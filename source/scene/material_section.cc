@@ -1,0 +1,151 @@
+// Body <name>/Material and its regions' Material <region> subsections.
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
+#include <glissade/material/material.h>
+#include <glissade/scene/scene_description.h>
+#include <glissade/scene/section_reader.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** The entries a material region may set; unset ones are the body's. */
+    void
+    declare_region_material(ParameterHandler &prm)
+    {
+      prm.declare_entry("Law",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Law; empty: the body's.");
+      prm.declare_entry("Young modulus",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Young modulus; empty: the body's.");
+      prm.declare_entry("Poisson ratio",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Poisson ratio; empty: the body's.");
+    }
+  } // namespace
+
+
+
+  void
+  MaterialDescription::declare_parameters(
+    ParameterHandler               &prm,
+    const std::vector<std::string> &regions)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Law",
+                        "neo-Hookean",
+                        Patterns::Selection(
+                          text::joined(Material::law_names(), "|")),
+                        "Hyperelastic law (total Lagrangian).");
+      prm.declare_entry("Young modulus",
+                        "1",
+                        Patterns::Double(),
+                        "E in Pa, > 0.");
+      prm.declare_entry("Poisson ratio",
+                        "0.3",
+                        Patterns::Double(),
+                        "nu, in (-1, 0.5).");
+      prm.declare_entry("Hypothesis",
+                        "plane strain",
+                        Patterns::Selection("plane strain|plane stress"),
+                        "Planar hypothesis.");
+      prm.declare_entry("Thickness",
+                        "1",
+                        Patterns::Double(),
+                        "Out-of-plane thickness (m), > 0: forces are per "
+                        "this thickness.");
+      prm.declare_entry(
+        "Regions",
+        "",
+        Patterns::Anything(),
+        "Gmsh meshes: comma-separated names of Physical Surfaces that "
+        "have a material of their own, each set in a subsection "
+        "'Material <name>' beside this one (Law, Young modulus, Poisson "
+        "ratio; an entry left unset is this subsection's). Cells of other "
+        "Physical Surfaces take this subsection's material. Hypothesis and "
+        "Thickness belong to the body.");
+    }
+    prm.leave_subsection();
+    for (const std::string &region : regions)
+      {
+        prm.enter_subsection("Material " + region);
+        declare_region_material(prm);
+        prm.leave_subsection();
+      }
+  }
+
+
+
+  void
+  MaterialDescription::parse_parameters(SectionReader     &prm,
+                                        const std::string &where)
+  {
+    prm.enter_subsection("Material");
+    law           = prm.get("Law");
+    young_modulus = prm.get_double("Young modulus");
+    poisson_ratio = prm.get_double("Poisson ratio");
+    hypothesis    = prm.get("Hypothesis") == "plane stress" ?
+                               PlaneHypothesis::plane_stress :
+                               PlaneHypothesis::plane_strain;
+    thickness     = prm.get_double("Thickness");
+    const std::vector<std::string> region_names =
+      Utilities::split_string_list(prm.get("Regions"), ',');
+    prm.leave_subsection();
+    const auto check_moduli = [&where](const double       E,
+                                       const double       nu,
+                                       const std::string &subsection) {
+      if (!(E > 0.))
+        throw InputError(where + "/" + subsection + "/Young modulus",
+                         "must be > 0");
+      if (!(nu > -1. && nu < 0.5))
+        throw InputError(where + "/" + subsection + "/Poisson ratio",
+                         "must lie in (-1, 0.5)");
+    };
+    check_moduli(young_modulus, poisson_ratio, "Material");
+    if (!(thickness > 0.))
+      throw InputError(where + "/Material/Thickness", "must be > 0");
+
+    // Each region: its own entries, the body's where it sets none.
+    for (const std::string &name : region_names)
+      {
+        const std::string         subsection = "Material " + name;
+        MaterialRegionDescription region;
+        region.name = name;
+        prm.enter_subsection(subsection);
+        region.law           = text::trim(prm.get("Law"));
+        region.young_modulus = prm.number_or_inherited(
+                                                   "Young modulus",
+                                                   young_modulus,
+                                                   where + "/" + subsection);
+        region.poisson_ratio = prm.number_or_inherited(
+                                                   "Poisson ratio",
+                                                   poisson_ratio,
+                                                   where + "/" + subsection);
+        prm.leave_subsection();
+        if (region.law.empty())
+          region.law = law;
+        const auto &laws = Material::law_names();
+        if (std::find(laws.begin(), laws.end(), region.law) == laws.end())
+          throw InputError(where + "/" + subsection + "/Law",
+                           "'" + region.law + "' is not a law (" +
+                             text::joined(laws, ", ") + ")");
+        check_moduli(region.young_modulus, region.poisson_ratio, subsection);
+        regions.push_back(region);
+      }
+  }
+} // namespace glissade
