@@ -25,12 +25,12 @@ namespace glissade_tests
    * code in `exit_code`.
    */
   inline bool
-  choose_group(const int            argc,
-               char               **argv,
-               const Groups        &tests,
-               const Groups        &others,
+  choose_group(const int              argc,
+               char                 **argv,
+               const Groups          &tests,
+               const Groups          &others,
                std::function<void()> &chosen,
-               int                  &exit_code)
+               int                   &exit_code)
   {
     if (argc == 2 && std::strcmp(argv[1], "--list") == 0)
       {

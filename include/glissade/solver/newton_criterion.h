@@ -65,8 +65,7 @@ namespace glissade
     bool
     diverges() const
     {
-      return iteration > 2 &&
-             residual > 1e8 * std::max(first_residual, 1e-300);
+      return iteration > 2 && residual > 1e8 * std::max(first_residual, 1e-300);
     }
 
   private:
