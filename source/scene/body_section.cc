@@ -137,10 +137,11 @@ namespace glissade
           body.dirichlet.push_back(item);
         }
 
-      for (const auto &f : entry_format::items(prm.get("Prescribed displacement"),
-                                       3,
-                                       where + "Prescribed displacement",
-                                       "location: components: expressions"))
+      for (const auto &f :
+           entry_format::items(prm.get("Prescribed displacement"),
+                               3,
+                               where + "Prescribed displacement",
+                               "location: components: expressions"))
         {
           DirichletDescription item;
           item.kind     = DirichletDescription::Kind::displacement;
@@ -160,9 +161,9 @@ namespace glissade
         }
 
       for (const auto &f : entry_format::items(prm.get("Prescribed rotation"),
-                                       3,
-                                       where + "Prescribed rotation",
-                                       "location: cx, cy: angle"))
+                                               3,
+                                               where + "Prescribed rotation",
+                                               "location: cx, cy: angle"))
         {
           DirichletDescription item;
           item.kind             = DirichletDescription::Kind::rotation;

@@ -70,13 +70,12 @@ namespace glissade
                       "",
                       Patterns::Anything(),
                       "The body whose boundary nodes are the slave nodes.");
-    prm.declare_entry(
-      "Slave boundary",
-      "",
-      Patterns::Anything(),
-      "The declared contact area on the slave body: a boundary "
-      "name, or several separated by commas "
-      "('bottom, left, right'), whose nodes form one set.");
+    prm.declare_entry("Slave boundary",
+                      "",
+                      Patterns::Anything(),
+                      "The declared contact area on the slave body: a boundary "
+                      "name, or several separated by commas "
+                      "('bottom, left, right'), whose nodes form one set.");
     prm.declare_entry("Master body",
                       "rigid",
                       Patterns::Anything(),
@@ -182,18 +181,18 @@ namespace glissade
     const std::vector<std::string> &body_names,
     const ContactSolverSettings    &solver)
   {
-    entry = prm.file() + ": Contact " + name;
+    entry           = prm.file() + ": Contact " + name;
     slave_body      = prm.get("Slave body");
     slave_boundary  = prm.get("Slave boundary");
     master_body     = prm.get("Master body");
     master_boundary = prm.get("Master boundary");
     surface         = prm.get("Surface");
     force_transfer  = prm.get("Force transfer") == "spline" ?
-                          ContactDescription::ForceTransfer::spline :
-                          ContactDescription::ForceTransfer::segment;
+                        ContactDescription::ForceTransfer::spline :
+                        ContactDescription::ForceTransfer::segment;
     {
       const std::string rule = prm.get("Faceted vertex rule");
-      vertex_rule          = rule == "closest point" ?
+      vertex_rule            = rule == "closest point" ?
                                  ContactDescription::VertexRule::closest_point :
                                rule == "vertex normal" ?
                                  ContactDescription::VertexRule::vertex_normal :
@@ -214,14 +213,15 @@ namespace glissade
     const auto solver_entry = [&](const std::string &setting,
                                   const double       section_value) {
       return prm.number_or_inherited(setting,
-                                 section_value,
-                                 entry,
-                                 " (this entry is kept for old scenes: set "
-                                 "Contact solver/" +
-                                   setting + " instead, once for all pairs)");
+                                     section_value,
+                                     entry,
+                                     " (this entry is kept for old scenes: set "
+                                     "Contact solver/" +
+                                       setting +
+                                       " instead, once for all pairs)");
     };
-    beta              = solver_entry("Beta", solver.beta);
-    tolerance         = solver_entry("Tolerance", solver.tolerance);
+    beta                = solver_entry("Beta", solver.beta);
+    tolerance           = solver_entry("Tolerance", solver.tolerance);
     const double sweeps = solver_entry("Maximum sweeps", solver.max_sweeps);
     if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
       throw InputError(entry + "/Maximum sweeps",
@@ -275,9 +275,9 @@ namespace glissade
     if (obstacle_motion.size() != 2)
       throw InputError(entry + "/Obstacle/Motion",
                        "expected two expressions 'x(t), y(t)'");
-    entry_format::check_expressions(obstacle_motion, entry + "/Obstacle/Motion");
-    if (master_body == "rigid" && obstacle == "line" &&
-        normal.norm() == 0.)
+    entry_format::check_expressions(obstacle_motion,
+                                    entry + "/Obstacle/Motion");
+    if (master_body == "rigid" && obstacle == "line" && normal.norm() == 0.)
       throw InputError(entry + "/Obstacle/Normal", "must not be zero");
   }
 } // namespace glissade

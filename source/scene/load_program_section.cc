@@ -68,8 +68,7 @@ namespace glissade
                              "between 1 and 1e8");
         stage_increments.push_back(value);
       }
-    max_cut_back_depth =
-      prm.get_integer("Maximum cut-back depth");
+    max_cut_back_depth = prm.get_integer("Maximum cut-back depth");
     prm.leave_subsection();
     const auto &times = stage_end_times;
     prm.check([&]() {
@@ -114,10 +113,9 @@ namespace glissade
   NewtonSettings::parse_parameters(SectionReader &prm)
   {
     prm.enter_subsection("Newton");
-    max_iterations     = prm.get_integer("Maximum iterations");
-    residual_tolerance = prm.get_double("Residual tolerance");
-    displacement_tolerance =
-      prm.get_double("Displacement tolerance");
+    max_iterations         = prm.get_integer("Maximum iterations");
+    residual_tolerance     = prm.get_double("Residual tolerance");
+    displacement_tolerance = prm.get_double("Displacement tolerance");
     prm.leave_subsection();
     prm.check([&]() {
       if (!(residual_tolerance > 0.))
@@ -128,6 +126,5 @@ namespace glissade
         throw InputError(prm.file() + ": Newton/Displacement tolerance",
                          "must be > 0 (1e-6 to 1e-10 is usual)");
     });
-
   }
 } // namespace glissade

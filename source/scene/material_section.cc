@@ -100,22 +100,21 @@ namespace glissade
     young_modulus = prm.get_double("Young modulus");
     poisson_ratio = prm.get_double("Poisson ratio");
     hypothesis    = prm.get("Hypothesis") == "plane stress" ?
-                               PlaneHypothesis::plane_stress :
-                               PlaneHypothesis::plane_strain;
+                      PlaneHypothesis::plane_stress :
+                      PlaneHypothesis::plane_strain;
     thickness     = prm.get_double("Thickness");
     const std::vector<std::string> region_names =
       Utilities::split_string_list(prm.get("Regions"), ',');
     prm.leave_subsection();
-    const auto check_moduli = [&where](const double       E,
-                                       const double       nu,
-                                       const std::string &subsection) {
-      if (!(E > 0.))
-        throw InputError(where + "/" + subsection + "/Young modulus",
-                         "must be > 0");
-      if (!(nu > -1. && nu < 0.5))
-        throw InputError(where + "/" + subsection + "/Poisson ratio",
-                         "must lie in (-1, 0.5)");
-    };
+    const auto check_moduli =
+      [&where](const double E, const double nu, const std::string &subsection) {
+        if (!(E > 0.))
+          throw InputError(where + "/" + subsection + "/Young modulus",
+                           "must be > 0");
+        if (!(nu > -1. && nu < 0.5))
+          throw InputError(where + "/" + subsection + "/Poisson ratio",
+                           "must lie in (-1, 0.5)");
+      };
     check_moduli(young_modulus, poisson_ratio, "Material");
     if (!(thickness > 0.))
       throw InputError(where + "/Material/Thickness", "must be > 0");
@@ -127,15 +126,15 @@ namespace glissade
         MaterialRegionDescription region;
         region.name = name;
         prm.enter_subsection(subsection);
-        region.law           = text::trim(prm.get("Law"));
-        region.young_modulus = prm.number_or_inherited(
-                                                   "Young modulus",
-                                                   young_modulus,
-                                                   where + "/" + subsection);
-        region.poisson_ratio = prm.number_or_inherited(
-                                                   "Poisson ratio",
-                                                   poisson_ratio,
-                                                   where + "/" + subsection);
+        region.law = text::trim(prm.get("Law"));
+        region.young_modulus =
+          prm.number_or_inherited("Young modulus",
+                                  young_modulus,
+                                  where + "/" + subsection);
+        region.poisson_ratio =
+          prm.number_or_inherited("Poisson ratio",
+                                  poisson_ratio,
+                                  where + "/" + subsection);
         prm.leave_subsection();
         if (region.law.empty())
           region.law = law;

@@ -84,7 +84,8 @@ namespace glissade
 
 
   void
-  MeshDescription::parse_parameters(SectionReader &prm, const std::string &where)
+  MeshDescription::parse_parameters(SectionReader     &prm,
+                                    const std::string &where)
   {
     prm.enter_subsection("Mesh");
     type = prm.get("Type");
@@ -106,8 +107,8 @@ namespace glissade
     distortion = prm.get_double("Distortion");
     prm.leave_subsection();
 
-    if (type == "rectangle" && !(corner_2[0] > corner_1[0] &&
-                                      corner_2[1] > corner_1[1]))
+    if (type == "rectangle" &&
+        !(corner_2[0] > corner_1[0] && corner_2[1] > corner_1[1]))
       throw InputError(where + "/Mesh/Corner 2",
                        "must lie above and to the right of Corner 1");
     if ((type == "ring" || type == "half ring") &&
@@ -115,15 +116,12 @@ namespace glissade
       throw InputError(where + "/Mesh/Outer radius",
                        "rings need 0 < Inner radius < Outer radius");
     if (type == "half ring" &&
-        !(end_angle > start_angle &&
-          end_angle - start_angle < 360.))
+        !(end_angle > start_angle && end_angle - start_angle < 360.))
       throw InputError(where + "/Mesh/End angle",
                        "must be larger than Start angle, by less than 360");
-    if (type != "half ring" &&
-        (start_angle != 0. || end_angle != 180.))
+    if (type != "half ring" && (start_angle != 0. || end_angle != 180.))
       throw InputError(where + "/Mesh/" +
-                         (start_angle != 0. ? "Start angle" :
-                                                   "End angle"),
+                         (start_angle != 0. ? "Start angle" : "End angle"),
                        "applies to Type = half ring only (this mesh is a " +
                          type +
                          "); to turn a body, use Boundary conditions/"

@@ -92,23 +92,22 @@ namespace glissade
   OutputSettings::parse_parameters(SectionReader &prm)
   {
     prm.enter_subsection("Output");
-    directory       = prm.get("Directory");
-    vtu_interval    = prm.get_integer("VTU interval");
+    directory    = prm.get("Directory");
+    vtu_interval = prm.get_integer("VTU interval");
     {
-      using Compression            = OutputSettings::Compression;
-      const std::string level      = prm.get("VTU compression");
-      vtu_compression = level == "small" ? Compression::small :
-                                     level == "none"  ? Compression::none :
-                                                        Compression::fast;
+      using Compression       = OutputSettings::Compression;
+      const std::string level = prm.get("VTU compression");
+      vtu_compression         = level == "small" ? Compression::small :
+                                level == "none"  ? Compression::none :
+                                                   Compression::fast;
     }
-    initial_state   = prm.get_bool("Initial state");
-    contact_table_interval =
-      prm.get_integer("Contact table interval");
+    initial_state          = prm.get_bool("Initial state");
+    contact_table_interval = prm.get_integer("Contact table interval");
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))
       if (!item.empty())
         history.push_back(item);
-    progress    = prm.get_bool("Progress");
-    plots       = prm.get_bool("Plots");
+    progress                 = prm.get_bool("Progress");
+    plots                    = prm.get_bool("Plots");
     const std::string curves = prm.get("Plot curves");
     prm.leave_subsection();
     prm.check([&]() {
@@ -126,7 +125,6 @@ namespace glissade
           plot_curves.emplace_back(parts[0], parts[1]);
         }
     });
-
   }
 
 
@@ -171,6 +169,5 @@ namespace glissade
                            ", beyond the last increment of the load program (" +
                            std::to_string(n_increments) + ")");
     });
-
   }
 } // namespace glissade

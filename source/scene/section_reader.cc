@@ -131,9 +131,9 @@ namespace glissade
 
     std::vector<std::vector<std::string>>
     items(const std::string &value,
-                const unsigned int n_fields,
-                const std::string &where,
-                const std::string &syntax)
+          const unsigned int n_fields,
+          const std::string &where,
+          const std::string &syntax)
     {
       std::vector<std::vector<std::string>> items;
       for (const auto &item : text::split_top_level(value, ';'))
