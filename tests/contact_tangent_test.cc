@@ -75,13 +75,15 @@ namespace
                       hermite ? "hermite" : "q1",
                       "left: x; bottom: y");
         contact += " set Master body = lower\n set Master boundary = top\n";
-        if (master == "faceted" || hermite)
-          contact += " set Surface = " + master + "\n";
-        else
+        // bspline_segment and bspline_spline: the B-spline master with
+        // each force transfer; any other name is a Surface of its own.
+        if (master.rfind("bspline_", 0) == 0)
           contact +=
             " set Surface = bspline\n set Force transfer = " +
             std::string(master == "bspline_segment" ? "segment" : "spline") +
             "\n";
+        else
+          contact += " set Surface = " + master + "\n";
       }
     return text + contact + "end\n";
   }

@@ -8,8 +8,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 
-#include <glissade/solver/direct_solver.h>
-#include <glissade/solver/schur_cholesky.h>
+#include <glissade/lac/direct_solver.h>
+#include <glissade/lac/schur_cholesky.h>
 
 #include <cmath>
 

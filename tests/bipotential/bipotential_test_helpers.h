@@ -1,8 +1,7 @@
 // Small helpers shared by bipotential_tests.cc: the check counter, number
 // formatting and tiny problem builders.
 
-#ifndef glissade_tests_bipotential_test_helpers_h
-#define glissade_tests_bipotential_test_helpers_h
+#pragma once
 
 #include <glissade/contact/bipotential_solver.h>
 
@@ -88,5 +87,3 @@ namespace test_helpers
   }
 
 } // namespace test_helpers
-
-#endif

@@ -1,7 +1,6 @@
 // Small helpers shared by the Hermite element tests: a check counter, a
 // reproducible random source and a dense linear solver. Standard library only.
-#ifndef glissade_tests_hermite_test_tools_h
-#define glissade_tests_hermite_test_tools_h
+#pragma once
 
 #include <algorithm>
 #include <cmath>
@@ -144,5 +143,3 @@ namespace hermite_tests
     return std::log2(coarse_error / fine_error);
   }
 } // namespace hermite_tests
-
-#endif

@@ -4,8 +4,9 @@
 // solutions. Prints every figure; exits non-zero if any check fails.
 //
 // Build (from the directory holding include/, source/ and tests/):
-//   g++ -std=c++17 -O2 -Wall -Wextra -I include source/fe/*.cc
-//       tests/hermite_tests.cc -o /tmp/hermite_tests && /tmp/hermite_tests
+//   g++ -std=c++17 -O2 -Wall -Wextra -I include
+//       source/fe/hermite_quadrilateral.cc source/fe/gauss_rule.cc
+//       tests/hermite/*.cc -o /tmp/hermite_tests && /tmp/hermite_tests <group>
 
 #include <glissade/fe/gauss_rule.h>
 #include <glissade/fe/hermite_quadrilateral.h>

@@ -1,8 +1,8 @@
-// Helpers of the master curve test program surface_tests.cc: a check
-// printer, a deterministic random generator, a dense solver used as an
-// independent reference, and the point sets the tests use.
-#ifndef glissade_tests_surface_test_tools_h
-#define glissade_tests_surface_test_tools_h
+// Helpers of the master curve test program surface_tests: a check printer,
+// a deterministic random generator, a dense solver used as an independent
+// reference, the point sets the tests use and the kinds of curve they run
+// over.
+#pragma once
 
 #include <glissade/contact/bspline_curve.h>
 #include <glissade/contact/faceted_curve.h>
@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -195,31 +196,74 @@ namespace surface_test_tools
     return d;
   }
 
-  // The three kinds of curve over a point set, by name.
+  // The kinds of master curve that the shared groups run over, in the order
+  // they print: per kind its name, its interpolation order p (faceted 2,
+  // cubic 4: the projection on a circle converges like h^p) and how it is
+  // built over a point set (a Hermite curve takes the given tangents, or
+  // else differences of the points). A new kind of curve is one row here.
+  struct CurveKind
+  {
+    std::string  name;
+    unsigned int order;
+    std::unique_ptr<MasterCurve> (*make)(bool                      closed,
+                                         const std::vector<Point> &p,
+                                         const std::vector<Point> *tangents);
+  };
+
+  inline const std::vector<CurveKind> curve_kinds = {
+    {"faceted",
+     2,
+     [](const bool                closed,
+        const std::vector<Point> &p,
+        const std::vector<Point> *) -> std::unique_ptr<MasterCurve> {
+       auto c = std::make_unique<FacetedCurve>(closed);
+       c->update(p);
+       return c;
+     }},
+    {"bspline",
+     4,
+     [](const bool                closed,
+        const std::vector<Point> &p,
+        const std::vector<Point> *) -> std::unique_ptr<MasterCurve> {
+       auto c = std::make_unique<BSplineCurve>(
+         closed ? BSplineCurve::EndCondition::periodic :
+                  BSplineCurve::EndCondition::double_vertex);
+       c->update(p);
+       return c;
+     }},
+    {"hermite",
+     4,
+     [](const bool                closed,
+        const std::vector<Point> &p,
+        const std::vector<Point> *tangents) -> std::unique_ptr<MasterCurve> {
+       auto c = std::make_unique<HermiteCurve>(closed);
+       c->update(p);
+       c->set_node_tangents(tangents ? *tangents :
+                                       difference_tangents(p, closed));
+       return c;
+     }}};
+
+  // A curve of the given kind over a point set.
+  inline std::unique_ptr<MasterCurve>
+  make_curve(const CurveKind          &kind,
+             const bool                closed,
+             const std::vector<Point> &p,
+             const std::vector<Point> *tangents = nullptr)
+  {
+    return kind.make(closed, p, tangents);
+  }
+
+  // The same, the kind by its name in curve_kinds.
   inline std::unique_ptr<MasterCurve>
   make_curve(const std::string        &kind,
              const bool                closed,
              const std::vector<Point> &p,
              const std::vector<Point> *tangents = nullptr)
   {
-    if (kind == "faceted")
-      {
-        auto c = std::make_unique<FacetedCurve>(closed);
-        c->update(p);
-        return c;
-      }
-    if (kind == "bspline")
-      {
-        auto c = std::make_unique<BSplineCurve>(
-          closed ? BSplineCurve::EndCondition::periodic :
-                   BSplineCurve::EndCondition::double_vertex);
-        c->update(p);
-        return c;
-      }
-    auto c = std::make_unique<HermiteCurve>(closed);
-    c->update(p);
-    c->set_node_tangents(tangents ? *tangents : difference_tangents(p, closed));
-    return c;
+    for (const CurveKind &row : curve_kinds)
+      if (row.name == kind)
+        return make_curve(row, closed, p, tangents);
+    throw std::invalid_argument("make_curve: no curve kind '" + kind + "'");
   }
 
   inline const char *
@@ -228,6 +272,3 @@ namespace surface_test_tools
     return closed ? "closed" : "open";
   }
 } // namespace surface_test_tools
-
-
-#endif

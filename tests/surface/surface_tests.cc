@@ -12,6 +12,7 @@
 #include <string>
 
 #include "../test_groups.h"
+#include "projection_tests.h"
 #include "surface_test_tools.h"
 
 using namespace surface_test_tools;
@@ -192,7 +193,7 @@ namespace
     const Point  origin    = {{0.3, -0.2}};
     const Point  direction = {{0.6, 0.8}};
     const double length    = 2.;
-    for (const std::string kind : {"faceted", "bspline", "hermite"})
+    for (const CurveKind &kind : curve_kinds)
       for (const bool closed : {false, true})
         {
           std::vector<double> t;
@@ -221,7 +222,7 @@ namespace
               }
           check(off_line < 1e-14 * length,
                 "%-7s %-6s: max distance of the curve to the line = %.1e",
-                kind.c_str(),
+                kind.name.c_str(),
                 kind_name(closed),
                 off_line);
         }
@@ -234,11 +235,11 @@ namespace
   {
     std::printf("\nWeights: reproduction of c(s) and partition of unity\n");
     Random random(4);
-    for (const std::string kind : {"faceted", "bspline", "hermite"})
+    for (const CurveKind &kind : curve_kinds)
       for (const bool closed : {false, true})
         for (const unsigned int n : {5u, 17u, 200u, 2000u})
           {
-            if (n == 2000 && kind != "bspline")
+            if (n == 2000 && kind.name != "bspline")
               continue;
             const auto p =
               closed ? closed_points(n, random) : open_points(n, random);
@@ -262,7 +263,7 @@ namespace
                     sum[1] += phi * p[j][1];
                     total += phi;
                   }
-                if (kind == "hermite")
+                if (kind.name == "hermite")
                   {
                     const auto *h =
                       dynamic_cast<const HermiteCurve *>(curve.get());
@@ -290,7 +291,7 @@ namespace
                     slope[0] += e.derivative * p[e.node][0];
                     slope[1] += e.derivative * p[e.node][1];
                   }
-                if (kind == "hermite")
+                if (kind.name == "hermite")
                   {
                     const auto *h =
                       dynamic_cast<const HermiteCurve *>(curve.get());
@@ -324,7 +325,7 @@ namespace
                   "%-7s %-6s N=%4u: |sum phi P - c| = %.1e, |sum phi - 1| = "
                   "%.1e, hats %.0e, |sum phi' P - c'| = %.1e, at most %zu "
                   "weights",
-                  kind.c_str(),
+                  kind.name.c_str(),
                   kind_name(closed),
                   n,
                   reproduction,
@@ -332,7 +333,7 @@ namespace
                   hat,
                   derivative,
                   widest);
-            if (kind == "bspline")
+            if (kind.name == "bspline")
               check(widest <= 2 * 30 + 4,
                     "  B-spline weights stay banded: %zu <= 64",
                     widest);
@@ -346,7 +347,7 @@ namespace
   {
     std::printf("\nProjection of points that lie on the curve\n");
     Random random(5);
-    for (const std::string kind : {"faceted", "bspline", "hermite"})
+    for (const CurveKind &kind : curve_kinds)
       for (const bool closed : {false, true})
         {
           const auto p =
@@ -374,7 +375,7 @@ namespace
                   gap < 1e-13,
                 "%-7s %-6s: segment recovered, |dx| = %.1e, |ds| = %.1e, "
                 "|gap| = %.1e, <= %u Newton iterations",
-                kind.c_str(),
+                kind.name.c_str(),
                 kind_name(closed),
                 point_error,
                 s_error,
@@ -382,12 +383,8 @@ namespace
                 most_iterations);
         }
   }
-} // namespace
 
-#include "projection_tests.h"
 
-namespace
-{
   // Not a test: how long update() and project() take at the paper's scale.
   void
   print_timings()
