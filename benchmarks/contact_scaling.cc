@@ -10,8 +10,8 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/contact/condensed_problem.h>
+#include <glissade/lac/direct_solver.h>
 #include <glissade/scene/scene_reader.h>
-#include <glissade/solver/direct_solver.h>
 #include <glissade/solver/simulation.h>
 
 #include <algorithm>

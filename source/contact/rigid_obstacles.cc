@@ -1,7 +1,7 @@
 #include <glissade/base/user_function.h>
 #include <glissade/contact/master_surface.h>
 #include <glissade/contact/surface_registry.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 #include <cmath>
 #include <memory>

@@ -1,6 +1,6 @@
 #include <glissade/base/input_error.h>
 #include <glissade/contact/surface_registry.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 namespace glissade
 {

@@ -1,4 +1,4 @@
-#include <glissade/contact/compliance_matrix.h>
+#include <glissade/lac/compliance_matrix.h>
 
 #include <algorithm>
 #include <cassert>

@@ -1,6 +1,6 @@
 #include <deal.II/base/timer.h>
 
-#include <glissade/solver/direct_solver.h>
+#include <glissade/lac/direct_solver.h>
 
 #include <suitesparse/umfpack.h>
 

@@ -1,6 +1,6 @@
 #include <deal.II/base/timer.h>
 
-#include <glissade/solver/schur_cholesky.h>
+#include <glissade/lac/schur_cholesky.h>
 
 #include <suitesparse/camd.h>
 #include <suitesparse/cholmod.h>

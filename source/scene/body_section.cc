@@ -5,8 +5,8 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space_registry.h>
-#include <glissade/scene/scene_description.h>
 #include <glissade/scene/section_reader.h>
 
 #include <string>

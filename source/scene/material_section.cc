@@ -5,8 +5,8 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/material/material.h>
-#include <glissade/scene/scene_description.h>
 #include <glissade/scene/section_reader.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <glissade/base/input_error.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
 
 #include <string>

@@ -6,7 +6,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
 
 #include <string>

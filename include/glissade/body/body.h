@@ -9,11 +9,11 @@
 
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/body/rigid_motion.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space.h>
+#include <glissade/lac/direct_solver.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
-#include <glissade/scene/scene_description.h>
-#include <glissade/solver/direct_solver.h>
 
 #include <map>
 #include <memory>

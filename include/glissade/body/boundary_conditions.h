@@ -8,9 +8,9 @@
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/rigid_motion.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space.h>
 #include <glissade/mesh/mesh_factory.h>
-#include <glissade/scene/scene_description.h>
 
 #include <map>
 #include <memory>

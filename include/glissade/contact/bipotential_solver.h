@@ -1,6 +1,6 @@
 #pragma once
 
-#include <glissade/contact/compliance_matrix.h>
+#include <glissade/lac/compliance_matrix.h>
 
 #include <array>
 #include <string>

@@ -2,8 +2,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <glissade/contact/compliance_matrix.h>
 #include <glissade/contact/contact_linearization.h>
+#include <glissade/lac/compliance_matrix.h>
 
 #include <array>
 #include <memory>

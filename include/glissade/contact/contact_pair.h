@@ -7,7 +7,7 @@
 #include <glissade/contact/bipotential_solver.h>
 #include <glissade/contact/contact_linearization.h>
 #include <glissade/contact/master_surface.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 #include <map>
 #include <memory>

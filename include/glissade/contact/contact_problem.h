@@ -4,7 +4,7 @@
 #include <glissade/contact/bipotential_solver.h>
 #include <glissade/contact/condensed_problem.h>
 #include <glissade/contact/contact_pair.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 #include <memory>
 #include <vector>

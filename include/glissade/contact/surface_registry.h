@@ -1,7 +1,7 @@
 #pragma once
 
 #include <glissade/contact/master_surface.h>
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 #include <functional>
 #include <memory>

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/point.h>
 
-#include <glissade/material/plane_hypothesis.h>
+#include <glissade/description/plane_hypothesis.h>
 
 #include <string>
 #include <utility>

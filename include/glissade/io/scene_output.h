@@ -2,8 +2,8 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/contact_problem.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/io/contact_surface_output.h>
-#include <glissade/scene/scene_description.h>
 
 #include <memory>
 #include <string>

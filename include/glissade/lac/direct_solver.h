@@ -3,7 +3,7 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <glissade/solver/schur_cholesky.h>
+#include <glissade/lac/schur_cholesky.h>
 
 #include <vector>
 

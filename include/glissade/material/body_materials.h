@@ -2,9 +2,9 @@
 
 #include <deal.II/base/types.h>
 
+#include <glissade/description/scene_description.h>
 #include <glissade/material/material.h>
 #include <glissade/mesh/mesh_labels.h>
-#include <glissade/scene/scene_description.h>
 
 #include <map>
 #include <string>

@@ -3,8 +3,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <glissade/description/plane_hypothesis.h>
 #include <glissade/material/hyperelastic_law.h>
-#include <glissade/material/plane_hypothesis.h>
 
 #include <memory>
 #include <string>

@@ -2,8 +2,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_labels.h>
-#include <glissade/scene/scene_description.h>
 
 #include <map>
 #include <string>

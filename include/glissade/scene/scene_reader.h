@@ -2,7 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <glissade/scene/scene_description.h>
+#include <glissade/description/scene_description.h>
 
 #include <iosfwd>
 #include <map>

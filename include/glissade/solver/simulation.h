@@ -2,10 +2,10 @@
 
 #include <glissade/body/body.h>
 #include <glissade/contact/contact_problem.h>
+#include <glissade/description/scene_description.h>
 #include <glissade/io/history_writer.h>
 #include <glissade/io/run_report.h>
 #include <glissade/io/scene_output.h>
-#include <glissade/scene/scene_description.h>
 
 #include <functional>
 #include <memory>
