@@ -42,8 +42,12 @@ namespace
   std::string
   scene(const std::string &master)
   {
-    std::string text = "subsection Output\n set Progress = false\nend\n";
-    text += block("upper", "0, 0.5", "1, 1", "6, 2", "q1");
+    // faceted_vertex: slave nodes above the master's nodes (both blocks
+    // 4 x 2), met as vertices with their cone (Faceted vertex rule =
+    // vertex normal).
+    const bool  vertex = master == "faceted_vertex";
+    std::string text   = "subsection Output\n set Progress = false\nend\n";
+    text += block("upper", "0, 0.5", "1, 1", vertex ? "4, 2" : "6, 2", "q1");
     std::string contact =
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
@@ -77,7 +81,10 @@ namespace
         contact += " set Master body = lower\n set Master boundary = top\n";
         // bspline_segment and bspline_spline: the B-spline master with
         // each force transfer; any other name is a Surface of its own.
-        if (master.rfind("bspline_", 0) == 0)
+        if (vertex)
+          contact += " set Surface = faceted\n"
+                     " set Faceted vertex rule = vertex normal\n";
+        else if (master.rfind("bspline_", 0) == 0)
           contact +=
             " set Surface = bspline\n set Force transfer = " +
             std::string(master == "bspline_segment" ? "segment" : "spline") +
@@ -94,7 +101,7 @@ namespace
    * derivatives) a small deterministic value.
    */
   Vector<double>
-  distortion(const Body &body, const double shift)
+  distortion(const Body &body, const double shift, const double lift = 0.)
   {
     Vector<double> u(body.n_dofs());
     for (unsigned int i = 0; i < u.size(); ++i)
@@ -107,6 +114,12 @@ namespace
         const double x = vertices[v][0], y = vertices[v][1];
         u(d[0]) = shift + 0.01 * std::sin(3. * x + 2. * y);
         u(d[1]) = 0.03 * std::cos(2.5 * x) - 0.01 * y;
+        // Lifted along the normal of the distorted line of height y.
+        const double tx = 1. + 0.03 * std::cos(3. * x + 2. * y);
+        const double ty = -0.075 * std::sin(2.5 * x);
+        const double t  = std::hypot(tx, ty);
+        u(d[0]) -= lift * ty / t;
+        u(d[1]) += lift * tx / t;
       }
     return u;
   }
@@ -123,7 +136,13 @@ namespace
     for (unsigned int b = 0; b < 2; ++b)
       if (bodies[b])
         {
-          Vector<double> u = distortion(*bodies[b], b == 0 ? 0.04 : 0.);
+          // faceted_vertex: the slave follows the master's shape, lifted
+          // by 0.02 along its normal, so that each slave node lies in a
+          // master node's normal cone (a ridge: the distorted top is
+          // concave; the cone's half angle is about 0.02 here).
+          Vector<double> u = master == "faceted_vertex" ?
+                               distortion(*bodies[b], 0., b == 0 ? 0.02 : 0.) :
+                               distortion(*bodies[b], b == 0 ? 0.04 : 0.);
           Vector<double> u0(u);
           u0 *= 0.3;
           bodies[b]->update(u0);
@@ -149,6 +168,15 @@ namespace
         }
     pair.update_geometry();
     check(n_active >= 3, "at least three active nodes");
+    if (master == "faceted_vertex")
+      {
+        unsigned int at_vertex = 0;
+        for (const auto &node : pair.nodes())
+          at_vertex += node.active && node.linearization.vertex_cone > 0.;
+        std::cout << "  " << at_vertex << " nodes at a vertex with its cone"
+                  << std::endl;
+        check(at_vertex >= 2, "at least two nodes at a vertex");
+      }
 
     // The dofs the contact touches, and the assembled tangent over them.
     std::map<std::pair<unsigned int, types::global_dof_index>, unsigned int>
@@ -276,6 +304,9 @@ namespace
 CONTACT_TANGENT_TEST(faceted, frictionless)
 CONTACT_TANGENT_TEST(faceted, stick)
 CONTACT_TANGENT_TEST(faceted, slip)
+CONTACT_TANGENT_TEST(faceted_vertex, frictionless)
+CONTACT_TANGENT_TEST(faceted_vertex, stick)
+CONTACT_TANGENT_TEST(faceted_vertex, slip)
 CONTACT_TANGENT_TEST(bspline_segment, frictionless)
 CONTACT_TANGENT_TEST(bspline_segment, stick)
 CONTACT_TANGENT_TEST(bspline_segment, slip)

@@ -109,3 +109,77 @@ GLISSADE_TEST(faceted_vertex_rule_rigid_turn)
     check(rigid_turn_force_change(rule) < 1.05 * 2. * std::sin(M_PI / 40.),
           rule + ": a rigid turn changed the forces beyond the facets' tilt");
 }
+
+// The vertex's cone (Faceted vertex rule = vertex normal): a node on a
+// vertex of a faceted master holds there while its reaction lies between
+// the two facets' normals, widened by friction's angle, and leaves it
+// along a facet otherwise. Case 3's rings with mu = 0.1, compressed and
+// then turned through one element: every slave node starts on a master
+// vertex (corner angle 2 pi / 40). Closed forms: at a vertex
+// |r_t| <= tan(pi/40 + atan(mu)) r_n about the mean normal, at the bound
+// when it leaves; on a facet |r_t| <= mu r_n about the facet's normal,
+// = mu r_n while it slips. The nodes must use more than friction alone
+// at the vertices before they slip (the cone is in play), and the turn
+// must run without a cut-back (it stopped after six before the cone).
+GLISSADE_TEST(faceted_vertex_cone_holds_then_releases)
+{
+  const double mu = 0.1;
+  Simulation   simulation(SceneReader::read_file(
+    source_path("prm/case3_rings.prm"),
+    {"Contact interface/Faceted vertex rule=vertex normal",
+       "Contact interface/Friction coefficient=0.1",
+       "Load program/Stage end times=1, 1.05",
+       "Load program/Stage increments=10, 50",
+       "Output/Progress=false",
+       "Output/VTU interval=0",
+       "Output/History=",
+       "Output/Directory=faceted_vertex_test/cone"}));
+  const auto  &pair       = *simulation.contact().contact_pairs().at(0);
+  const double cone_bound = std::tan(M_PI / 40. + std::atan(mu));
+  double       largest_vertex_ratio = 0., worst_excess = 0.;
+  unsigned int vertex_nodes_beyond_friction = 0, slipping_on_facets_at_end = 0;
+  double       worst_facet_slip_error = 0.;
+  simulation.on_increment = [&](const unsigned int increment, double) {
+    for (const auto &node : pair.nodes())
+      {
+        if (!node.active || node.reaction[1] <= 0.)
+          continue;
+        const double ratio = std::abs(node.reaction[0]) / node.reaction[1];
+        const double cone  = node.linearization.vertex_cone;
+        if (cone > 0.)
+          {
+            largest_vertex_ratio = std::max(largest_vertex_ratio, ratio);
+            worst_excess         = std::max(worst_excess, ratio - cone_bound);
+            vertex_nodes_beyond_friction += ratio > 1.01 * mu;
+          }
+        else
+          {
+            worst_excess = std::max(worst_excess, ratio - mu);
+            if (increment == 60 &&
+                node.status == BiPotentialSolver::NodeStatus::slip)
+              {
+                ++slipping_on_facets_at_end;
+                worst_facet_slip_error =
+                  std::max(worst_facet_slip_error, std::abs(ratio - mu));
+              }
+          }
+      }
+  };
+  simulation.run();
+  const auto &statistics = simulation.statistics();
+  std::cout << "  cone bound tan(pi/40 + atan 0.1) = " << cone_bound
+            << "; largest |r_t|/r_n at a vertex " << largest_vertex_ratio
+            << " (" << vertex_nodes_beyond_friction
+            << " node-increments beyond mu); worst excess over the bound "
+            << worst_excess << "; " << slipping_on_facets_at_end
+            << " nodes slipping on facets at the end, | |r_t|/r_n - mu | <= "
+            << worst_facet_slip_error << "; " << statistics.cut_backs
+            << " cut-backs, " << statistics.newton_iterations
+            << " Newton iterations" << std::endl;
+  check(worst_excess <= 1e-10, "a reaction left its cone");
+  check(vertex_nodes_beyond_friction > 0,
+        "no vertex carried more than friction alone: the cone was not used");
+  check(slipping_on_facets_at_end == 40 && worst_facet_slip_error <= 1e-10,
+        "the nodes do not all slide on facets at mu at the end of the turn");
+  check(statistics.cut_backs == 0, "the turn needed cut-backs");
+}

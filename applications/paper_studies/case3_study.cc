@@ -81,13 +81,16 @@ namespace glissade
       }
     if (variant == "q4")
       overrides.push_back("Contact interface/Surface=faceted");
-    else if (variant == "q4-closest" || variant == "q4-vertex")
+    else if (variant == "q4-closest" || variant == "q4-vertex" ||
+             variant == "q4-kept")
       {
-        // The faceted master with another vertex rule (issue 22's study).
+        // The faceted master with a given vertex rule (issue 22's study).
         overrides.push_back("Contact interface/Surface=faceted");
         overrides.push_back(
           std::string("Contact interface/Faceted vertex rule=") +
-          (variant == "q4-closest" ? "closest point" : "vertex normal"));
+          (variant == "q4-closest" ? "closest point" :
+           variant == "q4-kept"    ? "kept segment" :
+                                     "vertex normal"));
       }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
@@ -105,8 +108,8 @@ namespace glissade
       throw InputError(
         "Case 3 study/Variants",
         "unknown variant '" + variant +
-          "' (known: q4, q4-closest, q4-vertex, bspline, bspline-spline, "
-          "hermite)");
+          "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
+          "bspline-spline, hermite)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -278,11 +281,11 @@ namespace glissade
     prm.declare_entry("Variants",
                       "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
-                        "q4|q4-closest|q4-vertex|bspline|hermite")),
+                        "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite")),
                       "Discretisations of the interface. q4 uses the "
-                      "scene's Faceted vertex rule; q4-closest and "
-                      "q4-vertex the rules closest point and vertex normal "
-                      "(doc/contact.md).");
+                      "scene's Faceted vertex rule; q4-vertex, q4-closest "
+                      "and q4-kept the rules vertex normal, closest point "
+                      "and kept segment (doc/contact.md).");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

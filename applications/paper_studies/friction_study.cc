@@ -120,11 +120,14 @@ namespace glissade
             tangential += std::abs(rt);
             largest_rn = std::max(largest_rn, rn);
             norms.push_back(node.force().norm());
-            const double mu = pair->settings().friction;
-            excess          = std::max(excess, std::abs(rt) - mu * rn);
+            // Coulomb's bound, widened at a faceted vertex met with its
+            // cone (the Faceted vertex rule vertex normal).
+            const double bound = cone_slope(pair->settings().friction,
+                                            node.linearization.vertex_cone);
+            excess             = std::max(excess, std::abs(rt) - bound * rn);
             // The solver's status; a frictionless closed node slides.
             const bool sticks =
-              mu > 0. && node.status == BiPotentialSolver::NodeStatus::stick;
+              bound > 0. && node.status == BiPotentialSolver::NodeStatus::stick;
             ++(sticks ? sticking : slipping);
             status.push_back(sticks ? 1 : 2);
           }

@@ -57,16 +57,26 @@ namespace glissade
 
     // The relative motion since the increment began, d, and its
     // derivative along the curve, d' (the master point is a material one).
-    Tensor<1, 2> d = slave_motion - point.motion_since_step_start, d_prime;
-    for (const auto &e : kinematics)
-      if (e.body == 1)
-        {
-          const double du = master_increment(e.dof);
-          d[e.component] += e.weight * du;
-          d_prime[e.component] += e.derivative * du;
-        }
-    result.gap  = point.gap;
-    result.slip = t * d;
+    // At a vertex with a cone the node is held at the vertex itself, so d
+    // is its offset from the vertex, x - c, whatever the node did earlier
+    // in the increment (it may have slid there along a facet).
+    Tensor<1, 2> d, d_prime;
+    if (point.vertex_cone > 0.)
+      d = r;
+    else
+      {
+        d = slave_motion - point.motion_since_step_start;
+        for (const auto &e : kinematics)
+          if (e.body == 1)
+            {
+              const double du = master_increment(e.dof);
+              d[e.component] += e.weight * du;
+              d_prime[e.component] += e.derivative * du;
+            }
+      }
+    result.gap         = point.gap;
+    result.slip        = t * d;
+    result.vertex_cone = point.vertex_cone;
 
     // ds/dU from the projection (c - x) . c' = 0: on a curve,
     //   ds = [c' . delta(x - c)|_s - (x - c) . delta c'|_s] / D,

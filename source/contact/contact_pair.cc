@@ -132,7 +132,11 @@ namespace glissade
 
     SegmentHint keep;
     if (keep_segment)
-      keep = {node.segment, node.s, node.segment_switches >= 2};
+      keep = {node.segment,
+              node.s,
+              node.segment_switches >= 2,
+              node.at_vertex,
+              node.status == BiPotentialSolver::NodeStatus::stick};
     const SurfacePoint point = master_surface->project(x, keep);
     if (!point.valid)
       return false;
@@ -141,6 +145,7 @@ namespace glissade
 
     node.segment                = point.segment;
     node.s                      = point.s;
+    node.at_vertex              = point.vertex_cone > 0.;
     node.tangent                = point.tangent;
     node.normal                 = point.normal;
     node.gap                    = point.gap;
@@ -182,6 +187,7 @@ namespace glissade
       {
         node.segment          = -1;
         node.segment_switches = 0;
+        node.at_vertex        = false;
         if (!node.active)
           node.reaction = {{0., 0.}};
         node.projected = project(node);

@@ -248,7 +248,8 @@ namespace glissade
             {
               const ContactLinearization &l = node.linearization;
               active.push_back(&node);
-              nodes.friction.push_back(pair->settings().friction);
+              nodes.friction.push_back(
+                cone_slope(pair->settings().friction, l.vertex_cone));
               nodes.initial.push_back({{l.slip, l.gap}});
               nodes.forces.push_back({&l.tangential_force, b});
               nodes.forces.push_back({&l.normal_force, b});

@@ -34,23 +34,67 @@ namespace glissade
       SurfacePoint
       project(const Point<2> &x, const SegmentHint &keep) const override
       {
-        SurfacePoint point = CurveSurface::project(x, keep);
-        if (rule != VertexRule::vertex_normal || !point.valid ||
-            point.on_vertex)
+        if (rule != VertexRule::vertex_normal)
+          return CurveSurface::project(x, keep);
+
+        // A node kept on a facet that has just passed one of its ends, by
+        // less than half the facet, meets the vertex there: behind the
+        // next facet (a valley of the slave's side) or in front of both
+        // (a ridge), the vertex is where a node sliding along the facet
+        // stops or turns, and without it the node would alternate between
+        // the two facets from one iteration to the next. A node that has
+        // left a vertex is projected afresh.
+        if (keep.segment >= 0 && keep.at_vertex && keep.sticking)
+          {
+            SurfacePoint point = vertex_point(x, keep.segment);
+            const double length =
+              std::min(facet_length(keep.segment),
+                       facet_length(keep.segment == 0 ?
+                                      curve->n_segments() - 1 :
+                                      keep.segment - 1));
+            if (point.on_vertex && (x - point.point).norm() < 0.5 * length)
+              return point;
+          }
+        if (keep.segment >= 0 && !keep.at_vertex)
+          {
+            const unsigned int segment = keep.segment;
+            const auto         a       = curve->value(segment, 0.);
+            const auto         b       = curve->value(segment, 1.);
+            const double       ex = b[0] - a[0], ey = b[1] - a[1];
+            const double       length2 = ex * ex + ey * ey;
+            if (length2 > 0.)
+              {
+                const double s =
+                  ((x[0] - a[0]) * ex + (x[1] - a[1]) * ey) / length2;
+                const unsigned int n = curve->n_segments();
+                if (s < 0. && s >= -0.5 && (curve->is_closed() || segment > 0))
+                  return vertex_point(x, segment);
+                if (s > 1. && s <= 1.5 &&
+                    (curve->is_closed() || segment + 1 < n))
+                  return vertex_point(x, (segment + 1) % n);
+              }
+          }
+
+        SurfacePoint point =
+          CurveSurface::project(x, keep.at_vertex ? SegmentHint() : keep);
+        if (!point.valid)
           return point;
+        // The closest point is the vertex itself (a node behind both facets
+        // of a corner, or in front of both at a ridge).
+        if (point.on_vertex)
+          return vertex_point(x, point.segment);
         // A node on a vertex, to 1e-9 of the segment: the closest point
         // reports it as the start of the segment leaving the vertex (or
-        // the end of the one arriving, if the node was kept there), whose
-        // normal is tilted by half the corner's angle. Meet the vertex with
-        // its mean normal instead, the same whichever side the node came
-        // from.
+        // the end of the one arriving), whose normal is tilted by half the
+        // corner's angle. Meet the vertex with its mean normal and its
+        // cone instead, the same whichever side the node came from.
         const double tolerance = 1e-9;
         if (std::abs(point.s) <= tolerance)
-          return corner_point(x, point.segment);
+          return vertex_point(x, point.segment);
         if (std::abs(point.s - 1.) <= tolerance &&
             (curve->is_closed() ||
              point.segment + 1 < static_cast<int>(curve->n_segments())))
-          return corner_point(x, (point.segment + 1) % curve->n_segments());
+          return vertex_point(x, (point.segment + 1) % curve->n_segments());
         return point;
       }
 
@@ -72,6 +116,36 @@ namespace glissade
       }
 
     private:
+      double
+      facet_length(const unsigned int segment) const
+      {
+        const auto a = curve->value(segment, 0.);
+        const auto b = curve->value(segment, 1.);
+        return std::hypot(b[0] - a[0], b[1] - a[1]);
+      }
+
+      /**
+       * The vertex where `segment` starts, with the mean normal of its two
+       * facets and their cone: the tangent of half the angle between them,
+       * tan(theta / 2) = sin(theta) / (1 + cos(theta)) for the facets'
+       * unit tangents t_in, t_out at angle theta.
+       */
+      SurfacePoint
+      vertex_point(const Point<2> &x, const unsigned int segment) const
+      {
+        SurfacePoint point = corner_point(x, segment);
+        if (!point.on_vertex)
+          return point;
+        const unsigned int incoming =
+          segment == 0 ? curve->n_segments() - 1 : segment - 1;
+        const auto   t_in   = curve->unit_tangent(incoming, 1.);
+        const auto   t_out  = curve->unit_tangent(segment, 0.);
+        const double sine   = std::abs(t_in[0] * t_out[1] - t_in[1] * t_out[0]);
+        const double cosine = t_in[0] * t_out[0] + t_in[1] * t_out[1];
+        point.vertex_cone   = sine / (1. + cosine);
+        return point;
+      }
+
       const VertexRule rule;
     };
   } // namespace

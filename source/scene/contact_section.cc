@@ -102,20 +102,23 @@ namespace glissade
       "spline uses the spline's own weights (consistent, symmetric W).");
     prm.declare_entry(
       "Faceted vertex rule",
-      "kept segment",
+      "vertex normal",
       Patterns::Selection("kept segment|closest point|vertex normal"),
       "What a faceted master does at a vertex, where its normal jumps "
-      "(doc/contact.md). kept segment: a node keeps its segment over "
-      "the increment, up to half its length past either end; a new "
-      "choice takes the closest point, and a node exactly on a vertex the "
-      "segment leaving it. closest point: the closest point at every "
-      "iteration, a node in the corner's wedge (behind both facets) "
-      "meeting the vertex with the mean normal of the two facets. vertex "
-      "normal: as closest point, and a node on a vertex (to 1e-9 of the "
-      "segment) meets it with the mean normal too, instead of the "
-      "segment leaving it: the only rule objective under a rigid turn, "
-      "but a node that must slide off a vertex with friction does not "
-      "converge. Other surfaces ignore this entry.");
+      "(doc/contact.md). vertex normal: a node on a vertex (to 1e-9 of "
+      "the segment), in the corner's wedge, kept on a facet that it has "
+      "just passed the end of, or held there by the last iteration meets "
+      "the vertex with the mean normal of the two facets and their cone: "
+      "it stays at the vertex while its reaction lies between the facets' "
+      "normals (widened by friction's angle) and leaves it along a facet "
+      "otherwise. Objective under a rigid turn, with or without friction. "
+      "closest point: the closest point at every iteration, a node exactly "
+      "on a vertex taking the segment leaving it. kept segment (the rule "
+      "before 2026-11): a node keeps its segment over the increment, up to "
+      "half its length past either end. These two pick one facet at a "
+      "vertex, which no rigid turn leaves alone: they are kept so that "
+      "scenes that ask for them give the answers they gave. Other surfaces "
+      "ignore this entry.");
     prm.declare_entry("Alert distance",
                       "0",
                       Patterns::Double(0.),

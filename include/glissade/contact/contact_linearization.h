@@ -7,6 +7,7 @@
 #include <glissade/contact/master_surface.h>
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <vector>
 
@@ -47,6 +48,14 @@ namespace glissade
     double gap  = 0.;
     double slip = 0.;
 
+    /**
+     * The vertex's cone (SurfacePoint::vertex_cone; zero off a vertex):
+     * there the slip is the tangential offset from the vertex, and the
+     * reaction may tilt by atan(vertex_cone) from the normal besides
+     * friction.
+     */
+    double vertex_cone = 0.;
+
     /** d u_t / dU and dg / dU. */
     DofVector slip_row, gap_row;
 
@@ -59,6 +68,22 @@ namespace glissade
     /** The columns of the contact tangent at the node's reaction. */
     DofVector sliding_load, rotation_load;
   };
+
+  /**
+   * The bound on |r_t| / r_n that the local solver holds a node to: the
+   * pair's Coulomb mu, and at a vertex with a cone (vertex_cone > 0) the
+   * facets' normals' half angle added to friction's, tan(atan(vertex_cone)
+   * + atan(mu)): the node sticks at the vertex while its reaction lies
+   * within the two facets' friction cones, and leaves it along a facet at
+   * that facet's Coulomb bound, so the reaction is the same on both sides
+   * of the hand-over.
+   */
+  inline double
+  cone_slope(const double mu, const double vertex_cone)
+  {
+    return vertex_cone > 0. ? std::tan(std::atan(vertex_cone) + std::atan(mu)) :
+                              mu;
+  }
 
   /**
    * The linearisation of a slave node at x with dofs `slave_dofs`, moved by

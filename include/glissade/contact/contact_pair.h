@@ -43,6 +43,8 @@ namespace glissade
      * this changes how Newton gets there, not where.
      */
     unsigned int segment_switches = 0;
+    /** The last projection met a vertex with its cone (a faceted master). */
+    bool at_vertex = false;
     /**
      * The directions (tangential, normal) of this node that the last local
      * solve augmented (ContactProblem): the next starts from them.

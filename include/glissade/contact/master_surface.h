@@ -58,6 +58,18 @@ namespace glissade
     bool                       on_vertex = false;
     std::vector<SurfaceWeight> vertex_rotation;
 
+    /**
+     * At a vertex of a faceted master met with its mean normal (the
+     * Faceted vertex rule vertex normal), the normal is set-valued: the
+     * reaction may lie anywhere between the two facets' normals,
+     * |r_t| <= vertex_cone r_n about the mean normal (vertex_cone = tan of
+     * half the angle between the facets' normals; with Coulomb friction mu
+     * on the facets the cone widens to tan(atan(vertex_cone) + atan(mu))).
+     * The node then holds its place at the vertex, and its slip is its
+     * tangential offset from the vertex, t . (x - c). Zero elsewhere.
+     */
+    double vertex_cone = 0.;
+
     /** The master dofs in c(s) (value) and c'(s) (derivative). */
     std::vector<SurfaceWeight> kinematics;
 
@@ -89,6 +101,16 @@ namespace glissade
     int    segment = -1;
     double s       = 0.;
     bool   held    = false;
+    /**
+     * The last point was a vertex with its cone (SurfacePoint::vertex_cone),
+     * `segment` the one leaving it; `sticking`: and the contact law held
+     * the node there (within the cone). A sticking node stays at its vertex
+     * (the Newton step that pinned it there leaves it off the vertex by
+     * the step's second-order remainder, which must not send it to a
+     * facet); a node that slipped off is projected afresh.
+     */
+    bool at_vertex = false;
+    bool sticking  = false;
   };
 
   /**

@@ -277,7 +277,7 @@ namespace glissade
       closest_point,
       vertex_normal
     };
-    VertexRule vertex_rule    = VertexRule::kept_segment;
+    VertexRule vertex_rule    = VertexRule::vertex_normal;
     double     alert_distance = 0.;
     double     friction       = 0.;
     // The local solver's settings in effect for this pair: the scene's
