@@ -76,6 +76,35 @@ namespace glissade
                                "settings; set Contact solver/" +
                                name + " once for all pairs");
       }
+    for (const auto &pair : pairs)
+      for (const Body *body : {&pair->slave(), pair->master()})
+        if (body != nullptr &&
+            std::find(bodies_in_contact.begin(),
+                      bodies_in_contact.end(),
+                      body_index(body)) == bodies_in_contact.end())
+          bodies_in_contact.push_back(body_index(body));
+    std::sort(bodies_in_contact.begin(), bodies_in_contact.end());
+    if (scene.contact_solver.method == ContactSolverSettings::Method::sparse &&
+        !pairs.empty())
+      {
+        // A body that only contact holds has a singular system whenever
+        // its nodes open or slip in an active-set pass; the condensed
+        // method holds it through springs it takes out again exactly
+        // (theory.md, section 4.6), which the sparse system has no room
+        // for.
+        for (const auto &body : bodies)
+          if (!body->free_rigid_motions().empty())
+            throw InputError(
+              scene.source + ": Contact solver/Method",
+              "the sparse method needs every body held by its own supports, "
+              "and contact alone holds body '" +
+                body->name() + "' (" +
+                body->free_rigid_motions()[0].describe(body->size()) +
+                "): use Method = condensed, or support the body");
+        sparse_step =
+          std::make_unique<SparseContactStep>(bodies, bodies_in_contact);
+      }
+
     if (!pairs.empty())
       {
         const auto &first                  = pairs[0]->settings();
@@ -157,8 +186,44 @@ namespace glissade
 
 
   bool
+  ContactProblem::correct_sparse(std::vector<Vector<double>> &increments)
+  {
+    std::vector<ContactNode *>                 active;
+    const ActiveNodes                          nodes = active_nodes(active);
+    std::vector<BiPotentialSolver::NodeStatus> status(active.size());
+    std::vector<BiPotentialSolver::Vector2>    r(active.size());
+    for (unsigned int k = 0; k < active.size(); ++k)
+      {
+        status[k] = active[k]->status;
+        r[k]      = {{active[k]->reaction[0], active[k]->reaction[1]}};
+      }
+    result           = BiPotentialSolver::Result();
+    result.converged = true;
+    {
+      TimerOutput::Scope scope(timer, timing::factorization);
+      result.converged =
+        sparse_step->solve(nodes, status, r, increments, result.message);
+    }
+    result.sweeps = sparse_step->passes();
+    if (!result.converged)
+      return false;
+    result.status = status;
+    for (unsigned int k = 0; k < active.size(); ++k)
+      {
+        active[k]->reaction = {{r[k][0], r[k][1]}};
+        active[k]->status   = status[k];
+      }
+    return true;
+  }
+
+
+
+  bool
   ContactProblem::correct(std::vector<Vector<double>> &increments)
   {
+    if (sparse_step)
+      return correct_sparse(increments);
+
     // Nodes that the free step would take behind the master join now,
     // linearised at the current state like the others (update_state()).
     if (activate_nodes_crossed_by(increments) > 0)
@@ -226,7 +291,8 @@ namespace glissade
     spring_loads.clear();
     spring_rows.clear();
     std::vector<unsigned int> spring_body;
-    for (unsigned int b = 0; b < bodies.size(); ++b)
+    // (the sparse method does not factorise the bodies alone: no springs)
+    for (unsigned int b = 0; b < bodies.size() && !sparse_step; ++b)
       for (const auto &[dof, k] : bodies[b]->regularization())
         {
           spring_loads.push_back({{0, dof, k}});

@@ -23,6 +23,19 @@ namespace glissade
   ContactSolverSettings::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact solver");
+    prm.declare_entry(
+      "Method",
+      "condensed",
+      Patterns::Selection("condensed|sparse"),
+      "How the Newton step of the bodies in contact is solved. condensed: "
+      "each body factorised alone, the problem condensed on the active "
+      "nodes (W = H K^-1 H^T, dense) and solved by the bi-potential method "
+      "(the paper's). sparse: the bodies in contact and the reactions of "
+      "the active nodes as one sparse system (one LU per active-set pass), "
+      "the statuses by a primal-dual active-set iteration: the same "
+      "contact law, with memory and time that grow like the bodies' and "
+      "not like the square of the active nodes (doc/performance.md); Beta, "
+      "Tolerance and Maximum sweeps do not apply.");
     prm.declare_entry("Beta",
                       "1",
                       Patterns::Double(0.),
@@ -48,7 +61,8 @@ namespace glissade
   ContactSolverSettings::parse_parameters(SectionReader &prm)
   {
     prm.enter_subsection("Contact solver");
-    beta       = prm.get_double("Beta");
+    method = prm.get("Method") == "sparse" ? Method::sparse : Method::condensed;
+    beta   = prm.get_double("Beta");
     tolerance  = prm.get_double("Tolerance");
     max_sweeps = prm.get_integer("Maximum sweeps");
     prm.leave_subsection();

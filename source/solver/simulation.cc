@@ -205,6 +205,10 @@ namespace glissade
         std::vector<Vector<double>> du(all_bodies.size());
         for (unsigned int b = 0; b < all_bodies.size(); ++b)
           {
+            // (with the sparse contact method, the contact step solves the
+            // bodies in contact together)
+            if (contact_problem->solves_body(b))
+              continue;
             try
               {
                 TimerOutput::Scope scope(timer, timing::factorization);

@@ -99,6 +99,17 @@ namespace glissade
       return springs;
     }
 
+    /**
+     * The constraints of the current iteration (the element's own and the
+     * Dirichlet data, with the inhomogeneity this correction must bring):
+     * a step computed outside the body is completed by their distribute().
+     */
+    const dealii::AffineConstraints<double> &
+    dof_constraints() const
+    {
+      return constraints;
+    }
+
     /** The tangent of the last assembly (benchmarks factorise it again). */
     const dealii::SparseMatrix<double> &
     tangent_matrix() const

@@ -4,8 +4,10 @@
 #include <glissade/contact/bipotential_solver.h>
 #include <glissade/contact/condensed_problem.h>
 #include <glissade/contact/contact_pair.h>
+#include <glissade/contact/sparse_contact_step.h>
 #include <glissade/description/scene_description.h>
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -43,10 +45,27 @@ namespace glissade
      * `increments[b]` holds body b's du_lib on entry and its Newton step on
      * exit; the bodies must be factorised. Returns false if the local
      * solver failed or the consistent tangent is singular (the step is
-     * then cut back).
+     * then cut back). With Contact solver/Method = sparse, the bodies in
+     * contact are neither factorised nor solved alone (solves_body()):
+     * their step comes from one sparse system with the active nodes'
+     * reactions (SparseContactStep), and the other bodies' increments are
+     * left as they are.
      */
     bool
     correct(std::vector<dealii::Vector<double>> &increments);
+
+    /**
+     * True if the contact step computes body b's whole Newton step (the
+     * sparse method, a body of a contact pair): the Newton loop then does
+     * not factorise it.
+     */
+    bool
+    solves_body(const unsigned int b) const
+    {
+      return sparse_step != nullptr &&
+             std::find(bodies_in_contact.begin(), bodies_in_contact.end(), b) !=
+               bodies_in_contact.end();
+    }
 
     /**
      * After the bodies took the Newton step: re-projects and linearises
@@ -86,6 +105,14 @@ namespace glissade
      */
     ActiveNodes
     active_nodes(std::vector<ContactNode *> &active);
+
+    /** Active-set passes of the last sparse step (0 with the condensed one).
+     */
+    unsigned int
+    sparse_passes() const
+    {
+      return sparse_step ? sparse_step->passes() : 0;
+    }
 
     /** Sweeps and outcome of the last local solve. */
     const BiPotentialSolver::Result &
@@ -141,5 +168,13 @@ namespace glissade
     /** The springs of bodies held by contact, as rank-one terms (active_nodes).
      */
     std::vector<DofVector> spring_loads, spring_rows;
+
+    /** The bodies of the contact pairs, and the sparse method's step. */
+    std::vector<unsigned int>          bodies_in_contact;
+    std::unique_ptr<SparseContactStep> sparse_step;
+
+    /** correct() by the sparse method. */
+    bool
+    correct_sparse(std::vector<dealii::Vector<double>> &increments);
   };
 } // namespace glissade

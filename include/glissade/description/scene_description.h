@@ -181,6 +181,18 @@ namespace glissade
    */
   struct ContactSolverSettings
   {
+    /**
+     * condensed: the paper's bi-potential solve on W = H K^-1 H^T, dense in
+     * the active nodes; sparse: one sparse system of the bodies in contact
+     * and the reactions, with an active-set iteration (SparseContactStep),
+     * for contacts too large for a dense W.
+     */
+    enum class Method
+    {
+      condensed,
+      sparse
+    };
+    Method       method     = Method::condensed;
     double       beta       = 1.;
     double       tolerance  = 1e-10;
     unsigned int max_sweeps = 10000;

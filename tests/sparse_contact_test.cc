@@ -1,0 +1,187 @@
+// Contact solver/Method = sparse (SparseContactStep): the bodies in contact
+// and the active nodes' reactions as one sparse system, the statuses by a
+// primal-dual active-set iteration. It solves the same contact law as the
+// condensed bi-potential method, so each check holds it to a closed form
+// (Lame's rings, a uniform pressure, Coulomb's ratio in steady sliding)
+// and to the condensed method's answer on the scenes where both run.
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include <cmath>
+#include <iomanip>
+
+#include "test_tools.h"
+
+using namespace glissade;
+using namespace dealii;
+using namespace glissade_tests;
+
+namespace
+{
+  std::unique_ptr<Simulation>
+  run(const std::string              &file,
+      const std::vector<std::string> &overrides,
+      const std::string              &method,
+      const std::string              &label)
+  {
+    std::vector<std::string> all = overrides;
+    all.push_back("Contact solver/Method=" + method);
+    all.push_back("Output/Progress=false");
+    all.push_back("Output/VTU interval=0");
+    all.push_back("Output/Directory=sparse_test/" + label + "_" + method);
+    auto simulation = std::make_unique<Simulation>(
+      SceneReader::read_file(source_path(file), all));
+    simulation->run();
+    return simulation;
+  }
+
+  /** Mean u_r over the 40 nodes of radius r (case 3's meshes). */
+  double
+  mean_radial_displacement(const Body &body, const double r)
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i < 40; ++i)
+      {
+        const double       theta = 2. * M_PI * i / 40.;
+        const Point<2>     X(r * std::cos(theta), r * std::sin(theta));
+        const Tensor<1, 2> d = body.vertex_displacement(X);
+        sum += (d[0] * X[0] + d[1] * X[1]) / r;
+      }
+    return sum / 40.;
+  }
+} // namespace
+
+// Case 3's rings under the compression alone, inner ring clamped at
+// r = 0.5: Lame's ring a = 0.5, b = 2 under p = 400 / (2 pi b), small
+// strain (the load strains the rings by about 1e-3). The 40 x 4 meshes
+// leave a discretisation error of 0.17 % in u_r(2); the bound is 0.3 %.
+GLISSADE_TEST(contact_sparse_rings_lame)
+{
+  const double E = 1e4, nu = 0.3, a = 0.5, b = 2., c = 1.25;
+  const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+  const double mu     = E / (2. * (1. + nu));
+  const double p      = 400. / (2. * M_PI * b);
+  const double A = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
+  const double u_b_lame = A * (b - a * a / b);
+  const double interface_lame =
+    -A * (2. * (lambda + mu) + 2. * mu * a * a / (c * c));
+  for (const std::string surface : {"faceted", "bspline"})
+    {
+      const auto simulation =
+        run("prm/case3_rings.prm",
+            {"Load program/Stage end times=1",
+             "Load program/Stage increments=10",
+             "Contact interface/Surface=" + surface},
+            "sparse",
+            "lame_" + surface);
+      const double u = mean_radial_displacement(simulation->body("outer"), b);
+      double       sum_rn = 0.;
+      for (const auto &node :
+           simulation->contact().contact_pairs()[0]->nodes())
+        sum_rn += node.reaction[1];
+      const double pressure = sum_rn / (2. * M_PI * c);
+      std::cout << "  " << surface << ": u_r(2) " << u << " (Lame "
+                << u_b_lame << "), interface pressure " << pressure
+                << " (Lame " << interface_lame << ")" << std::endl;
+      check_relative(u, u_b_lame, 3e-3, surface + ": u_r(2) against Lame");
+      check_relative(pressure,
+                     interface_lame,
+                     3e-3,
+                     surface + ": interface pressure against Lame");
+    }
+}
+
+// Coulomb's law in steady sliding: a pad slid on a rigid flat has
+// F_x / F_y = mu (0.2) once every node slips; along a deformable B-spline
+// strip the ratio is a property of the sliding state, the same with 25 and
+// 100 increments.
+GLISSADE_TEST(contact_sparse_coulomb_steady_sliding)
+{
+  const auto ratio = [](const Simulation &simulation) {
+    const Tensor<1, 2> force = const_cast<Simulation &>(simulation)
+                                 .contact()
+                                 .contact_pairs()[0]
+                                 ->total_force();
+    return -force[0] / force[1];
+  };
+  const double flat =
+    ratio(*run("tests/data/pad_on_flat.prm", {}, "sparse", "flat"));
+  const double strip_25 =
+    ratio(*run("tests/data/pad_on_strip.prm",
+               {"Load program/Stage increments=2, 25"},
+               "sparse",
+               "strip_25"));
+  const double strip_100 =
+    ratio(*run("tests/data/pad_on_strip.prm",
+               {"Load program/Stage increments=2, 100"},
+               "sparse",
+               "strip_100"));
+  std::cout << std::setprecision(12) << "  F_x / F_y on the flat " << flat
+            << ", along the strip " << strip_25 << " (25 increments), "
+            << strip_100 << " (100)" << std::endl;
+  check_relative(flat, 0.2, 1e-10, "F_x / F_y on the rigid flat");
+  check_relative(strip_25, strip_100, 1e-3, "the strip: 25 against 100");
+}
+
+// The same answer as the condensed method, Newton iteration for Newton
+// iteration: every master (faceted with its vertex cones, B-spline,
+// Hermite), friction, a rigid roller, a deformable strip. The two methods
+// share the linearisation but not the solver of the step.
+GLISSADE_TEST(contact_sparse_matches_condensed)
+{
+  const std::vector<std::string> turn = {"Load program/Stage end times=1, 1.02",
+                                         "Load program/Stage increments=5, 10"};
+  struct Scene
+  {
+    std::string              label, file;
+    std::vector<std::string> overrides;
+  };
+  std::vector<Scene> scenes = {
+    {"rings_faceted", "prm/case3_rings.prm", turn},
+    {"rings_bspline", "prm/case3_rings.prm", turn},
+    {"rings_hermite", "prm/case3_rings.prm", turn},
+    {"rings_friction", "prm/case3_rings.prm", turn},
+    {"roller", "prm/pad_on_roller.prm", {}},
+    {"strip", "tests/data/pad_on_strip.prm", {}}};
+  scenes[1].overrides.push_back("Contact interface/Surface=bspline");
+  scenes[2].overrides.push_back("Contact interface/Surface=hermite");
+  scenes[2].overrides.push_back("Body outer/Element/Space=hermite");
+  scenes[3].overrides.push_back("Contact interface/Friction coefficient=0.3");
+  for (const Scene &scene : scenes)
+    {
+      const auto condensed =
+        run(scene.file, scene.overrides, "condensed", scene.label);
+      const auto sparse = run(scene.file, scene.overrides, "sparse", scene.label);
+      double difference = 0., largest = 0.;
+      for (const std::string name : {"inner", "outer", "pad", "strip"})
+        {
+          const Body *a = nullptr, *b = nullptr;
+          try
+            {
+              a = &condensed->body(name);
+              b = &sparse->body(name);
+            }
+          catch (...)
+            {
+              continue;
+            }
+          Vector<double> d = a->displacement();
+          d -= b->displacement();
+          difference = std::max(difference, d.linfty_norm());
+          largest    = std::max(largest, a->displacement().linfty_norm());
+        }
+      const auto iterations_condensed =
+        condensed->statistics().newton_iterations;
+      const auto iterations_sparse = sparse->statistics().newton_iterations;
+      std::cout << "  " << scene.label << ": largest difference of the "
+                << "displacements " << difference / largest
+                << " of the largest; Newton iterations "
+                << iterations_condensed << " (condensed), "
+                << iterations_sparse << " (sparse)" << std::endl;
+      check(difference <= 1e-9 * largest,
+            scene.label + ": the two methods disagree");
+      check(iterations_sparse == iterations_condensed,
+            scene.label + ": not the same Newton iterations");
+    }
+}
