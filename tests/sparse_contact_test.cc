@@ -59,31 +59,29 @@ namespace
 GLISSADE_TEST(contact_sparse_rings_lame)
 {
   const double E = 1e4, nu = 0.3, a = 0.5, b = 2., c = 1.25;
-  const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
-  const double mu     = E / (2. * (1. + nu));
-  const double p      = 400. / (2. * M_PI * b);
-  const double A = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
+  const double lambda   = E * nu / ((1. + nu) * (1. - 2. * nu));
+  const double mu       = E / (2. * (1. + nu));
+  const double p        = 400. / (2. * M_PI * b);
+  const double A        = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
   const double u_b_lame = A * (b - a * a / b);
   const double interface_lame =
     -A * (2. * (lambda + mu) + 2. * mu * a * a / (c * c));
   for (const std::string surface : {"faceted", "bspline"})
     {
-      const auto simulation =
-        run("prm/case3_rings.prm",
-            {"Load program/Stage end times=1",
-             "Load program/Stage increments=10",
-             "Contact interface/Surface=" + surface},
-            "sparse",
-            "lame_" + surface);
+      const auto   simulation = run("prm/case3_rings.prm",
+                                  {"Load program/Stage end times=1",
+                                     "Load program/Stage increments=10",
+                                     "Contact interface/Surface=" + surface},
+                                  "sparse",
+                                  "lame_" + surface);
       const double u = mean_radial_displacement(simulation->body("outer"), b);
       double       sum_rn = 0.;
-      for (const auto &node :
-           simulation->contact().contact_pairs()[0]->nodes())
+      for (const auto &node : simulation->contact().contact_pairs()[0]->nodes())
         sum_rn += node.reaction[1];
       const double pressure = sum_rn / (2. * M_PI * c);
-      std::cout << "  " << surface << ": u_r(2) " << u << " (Lame "
-                << u_b_lame << "), interface pressure " << pressure
-                << " (Lame " << interface_lame << ")" << std::endl;
+      std::cout << "  " << surface << ": u_r(2) " << u << " (Lame " << u_b_lame
+                << "), interface pressure " << pressure << " (Lame "
+                << interface_lame << ")" << std::endl;
       check_relative(u, u_b_lame, 3e-3, surface + ": u_r(2) against Lame");
       check_relative(pressure,
                      interface_lame,
@@ -107,16 +105,14 @@ GLISSADE_TEST(contact_sparse_coulomb_steady_sliding)
   };
   const double flat =
     ratio(*run("tests/data/pad_on_flat.prm", {}, "sparse", "flat"));
-  const double strip_25 =
-    ratio(*run("tests/data/pad_on_strip.prm",
-               {"Load program/Stage increments=2, 25"},
-               "sparse",
-               "strip_25"));
-  const double strip_100 =
-    ratio(*run("tests/data/pad_on_strip.prm",
-               {"Load program/Stage increments=2, 100"},
-               "sparse",
-               "strip_100"));
+  const double strip_25  = ratio(*run("tests/data/pad_on_strip.prm",
+                                     {"Load program/Stage increments=2, 25"},
+                                     "sparse",
+                                     "strip_25"));
+  const double strip_100 = ratio(*run("tests/data/pad_on_strip.prm",
+                                      {"Load program/Stage increments=2, 100"},
+                                      "sparse",
+                                      "strip_100"));
   std::cout << std::setprecision(12) << "  F_x / F_y on the flat " << flat
             << ", along the strip " << strip_25 << " (25 increments), "
             << strip_100 << " (100)" << std::endl;
@@ -137,13 +133,12 @@ GLISSADE_TEST(contact_sparse_matches_condensed)
     std::string              label, file;
     std::vector<std::string> overrides;
   };
-  std::vector<Scene> scenes = {
-    {"rings_faceted", "prm/case3_rings.prm", turn},
-    {"rings_bspline", "prm/case3_rings.prm", turn},
-    {"rings_hermite", "prm/case3_rings.prm", turn},
-    {"rings_friction", "prm/case3_rings.prm", turn},
-    {"roller", "prm/pad_on_roller.prm", {}},
-    {"strip", "tests/data/pad_on_strip.prm", {}}};
+  std::vector<Scene> scenes = {{"rings_faceted", "prm/case3_rings.prm", turn},
+                               {"rings_bspline", "prm/case3_rings.prm", turn},
+                               {"rings_hermite", "prm/case3_rings.prm", turn},
+                               {"rings_friction", "prm/case3_rings.prm", turn},
+                               {"roller", "prm/pad_on_roller.prm", {}},
+                               {"strip", "tests/data/pad_on_strip.prm", {}}};
   scenes[1].overrides.push_back("Contact interface/Surface=bspline");
   scenes[2].overrides.push_back("Contact interface/Surface=hermite");
   scenes[2].overrides.push_back("Body outer/Element/Space=hermite");
@@ -152,7 +147,8 @@ GLISSADE_TEST(contact_sparse_matches_condensed)
     {
       const auto condensed =
         run(scene.file, scene.overrides, "condensed", scene.label);
-      const auto sparse = run(scene.file, scene.overrides, "sparse", scene.label);
+      const auto sparse =
+        run(scene.file, scene.overrides, "sparse", scene.label);
       double difference = 0., largest = 0.;
       for (const std::string name : {"inner", "outer", "pad", "strip"})
         {
@@ -176,9 +172,9 @@ GLISSADE_TEST(contact_sparse_matches_condensed)
       const auto iterations_sparse = sparse->statistics().newton_iterations;
       std::cout << "  " << scene.label << ": largest difference of the "
                 << "displacements " << difference / largest
-                << " of the largest; Newton iterations "
-                << iterations_condensed << " (condensed), "
-                << iterations_sparse << " (sparse)" << std::endl;
+                << " of the largest; Newton iterations " << iterations_condensed
+                << " (condensed), " << iterations_sparse << " (sparse)"
+                << std::endl;
       check(difference <= 1e-9 * largest,
             scene.label + ": the two methods disagree");
       check(iterations_sparse == iterations_condensed,

@@ -142,7 +142,10 @@ namespace glissade
         const auto   t_out  = curve->unit_tangent(segment, 0.);
         const double sine   = std::abs(t_in[0] * t_out[1] - t_in[1] * t_out[0]);
         const double cosine = t_in[0] * t_out[0] + t_in[1] * t_out[1];
-        point.vertex_cone   = sine / (1. + cosine);
+        // Facets in line (to far below any mesh's corner angle) have no
+        // corner: no cone either.
+        if (sine > 1e-8)
+          point.vertex_cone = sine / (1. + cosine);
         return point;
       }
 

@@ -41,6 +41,7 @@ namespace glissade
     , offset(bodies.size(), numbers::invalid_unsigned_int)
     , inhomogeneity(bodies.size())
   {
+    lu.use_unsymmetric_ordering();
     for (const unsigned int b : in_contact)
       {
         offset[b] = n_body_unknowns;
@@ -112,7 +113,10 @@ namespace glissade
             for (auto it = sp.begin(i); it != sp.end(i); ++it)
               columns.push_back(offset[b] + it->column());
             std::sort(columns.begin(), columns.end());
-            dsp.add_entries(offset[b] + i, columns.begin(), columns.end(), true);
+            dsp.add_entries(offset[b] + i,
+                            columns.begin(),
+                            columns.end(),
+                            true);
           }
       }
     std::vector<Share> a, c;
@@ -139,11 +143,30 @@ namespace glissade
             dsp.add(reaction, n_body_unknowns + 2 * k + e);
         }
 
+    // The couplings change as nodes slide and reactions appear; the
+    // pattern only grows (with the last one's entries, unused ones held as
+    // zeros), so that after a few corrections it stays the same object and
+    // the sparse LU keeps its analysis, the dearest part of a factorisation
+    // here.
+    const bool same_size = pattern && pattern->n_rows() == n_unknowns;
+    if (same_size)
+      for (unsigned int i = 0; i < n_unknowns; ++i)
+        {
+          columns.clear();
+          for (auto it = pattern->begin(i); it != pattern->end(i); ++it)
+            columns.push_back(it->column());
+          std::sort(columns.begin(), columns.end());
+          dsp.add_entries(i, columns.begin(), columns.end(), true);
+        }
+    if (same_size && dsp.n_nonzero_elements() == pattern->n_nonzero_elements())
+      return;
     auto fresh = std::make_unique<SparsityPattern>();
     fresh->copy_from(dsp);
-    if (pattern && *pattern == *fresh)
-      return;
     // A new object, so that the factorisation analyses it afresh.
+    if (std::getenv("GLISSADE_DEBUG"))
+      std::cerr << "      sparse system: new pattern, " << fresh->n_rows()
+                << " unknowns, " << fresh->n_nonzero_elements() << " entries"
+                << std::endl;
     matrix.reinit(*fresh);
     pattern = std::move(fresh);
     rhs.reinit(n_unknowns);
@@ -321,8 +344,8 @@ namespace glissade
         double largest = 0.;
         for (unsigned int k = 0; k < m; ++k)
           {
-            r[k] = {{alpha * x(n_body_unknowns + 2 * k + tangential),
-                     alpha * x(n_body_unknowns + 2 * k + normal)}};
+            r[k]    = {{alpha * x(n_body_unknowns + 2 * k + tangential),
+                        alpha * x(n_body_unknowns + 2 * k + normal)}};
             largest = std::max(largest, std::abs(r[k][normal]));
           }
         const auto after = [&](const unsigned int row) {
@@ -353,9 +376,9 @@ namespace glissade
         bool changed = false;
         for (unsigned int k = 0; k < m; ++k)
           {
-            const double     mu     = nodes.friction[k];
-            const NodeStatus old    = status[k];
-            const double     gap    = after(2 * k + normal);
+            const double     mu           = nodes.friction[k];
+            const NodeStatus old          = status[k];
+            const double     gap          = after(2 * k + normal);
             const double     c            = stiffness[k];
             const double     normal_trial = r[k][normal] - c * gap;
             if (!(normal_trial > force_tolerance + c * gap_tolerance))
@@ -366,18 +389,19 @@ namespace glissade
               {
                 const double trial =
                   r[k][tangential] - c * after(2 * k + tangential);
-                const double bound = mu * normal_trial;
-                if (std::abs(trial) < bound - force_tolerance)
+                const double bound  = mu * normal_trial;
+                const double margin = force_tolerance + c * gap_tolerance;
+                if (std::abs(trial) < bound - margin)
                   status[k] = NodeStatus::stick;
-                else if (std::abs(trial) > bound + force_tolerance ||
-                         old == NodeStatus::slip)
+                else if (std::abs(trial) > bound + margin)
                   {
                     const double sign = trial >= 0. ? 1. : -1.;
-                    changed = changed || (old == NodeStatus::slip &&
-                                          sign != slip_sign[k]);
+                    changed           = changed ||
+                              (old == NodeStatus::slip && sign != slip_sign[k]);
                     status[k]    = NodeStatus::slip;
                     slip_sign[k] = sign;
                   }
+                // (on the bound to round-off: the status stays)
               }
             changed = changed || status[k] != old;
           }

@@ -119,6 +119,8 @@ namespace glissade
     const long n = row_start.size() - 1;
     double     control[UMFPACK_CONTROL];
     umfpack_dl_defaults(control);
+    if (unsymmetric_ordering)
+      control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_UNSYMMETRIC;
     Timer timer;
     if (symbolic == nullptr)
       {

@@ -100,15 +100,16 @@ namespace glissade
      * (the inhomogeneity of this iteration) in `constant`.
      */
     void
-    expand(unsigned int         b,
-           unsigned int         dof,
-           std::vector<Share>  &shares,
-           double              &constant) const;
+    expand(unsigned int        b,
+           unsigned int        dof,
+           std::vector<Share> &shares,
+           double             &constant) const;
 
     /** A pair vector over global unknowns, and its constant part. */
     void
-    expand(const PairVector &v, std::vector<Share> &shares, double &constant)
-      const;
+    expand(const PairVector   &v,
+           std::vector<Share> &shares,
+           double             &constant) const;
 
     /** Builds the pattern if the couplings changed (keeps the analysis). */
     void
@@ -136,8 +137,8 @@ namespace glissade
      */
     std::unique_ptr<dealii::SparsityPattern> pattern;
     dealii::SparseMatrix<double>             matrix;
-    dealii::Vector<double>       rhs;
-    DirectSolver                 lu;
-    unsigned int                 last_passes = 0;
+    dealii::Vector<double>                   rhs;
+    DirectSolver                             lu;
+    unsigned int                             last_passes = 0;
   };
 } // namespace glissade
