@@ -7,7 +7,9 @@
 // Prints the time per Newton iteration, the peak memory and those two
 // checks, for Contact solver/Method = sparse or condensed.
 //
-//   glissade_large_contact_benchmark <nx> <ny> <sparse|condensed>
+//   glissade_large_contact_benchmark <nx> <ny> <sparse|condensed> [surface]
+//
+// surface: the master's Surface entry, faceted (default) or bspline.
 
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -57,16 +59,18 @@ namespace
 int
 main(int argc, char **argv)
 {
-  const std::string method = argc == 4 ? argv[3] : "";
-  if (argc != 4 || !(method == "sparse" || method == "condensed"))
+  const std::string method  = argc >= 4 ? argv[3] : "";
+  const std::string surface = argc == 5 ? argv[4] : "faceted";
+  if (argc < 4 || argc > 5 || !(method == "sparse" || method == "condensed") ||
+      !(surface == "faceted" || surface == "bspline"))
     {
       std::fprintf(stderr,
                    "usage: glissade_large_contact_benchmark <nx> <ny> "
-                   "<sparse|condensed>\n");
+                   "<sparse|condensed> [faceted|bspline]\n");
       return 1;
     }
   const unsigned int nx = std::stoi(argv[1]), ny = std::stoi(argv[2]);
-  const double       h  = ny; // elements of unit size
+  const double       h = ny; // elements of unit size
   const std::string  prm =
     "subsection Scene\n set Bodies = strip, base\n"
     " set Contact pairs = interface\nend\n" +
@@ -81,7 +85,9 @@ main(int argc, char **argv)
     block("base", -h, 0., nx, ny, "  set Fixed = left: x; bottom: y") +
     "subsection Contact interface\n set Slave body = strip\n"
     " set Slave boundary = bottom\n set Master body = base\n"
-    " set Master boundary = top\n set Surface = faceted\n"
+    " set Master boundary = top\n set Surface = " +
+    surface +
+    "\n"
     " set Alert distance = 0.5\nend\n"
     "subsection Contact solver\n set Method = " +
     method +
@@ -90,14 +96,14 @@ main(int argc, char **argv)
     " set Initial state = false\n set Directory = large_contact_" +
     std::to_string(nx) + "_" + method + "\nend\n";
 
-  Simulation simulation(SceneReader::read_string(prm, "large contact"));
+  Simulation    simulation(SceneReader::read_string(prm, "large contact"));
   dealii::Timer timer;
   simulation.advance_to(1., "increment 1");
   const double        wall = timer.wall_time();
   const RunStatistics s    = simulation.statistics();
 
   // The nodal forces against the uniform pressure, and the balance.
-  const auto  &pair = *simulation.contact().contact_pairs()[0];
+  const auto  &pair     = *simulation.contact().contact_pairs()[0];
   double       interior = 0., sum = 0.;
   unsigned int n_interior = 0;
   for (const auto &node : pair.nodes())
@@ -120,24 +126,25 @@ main(int argc, char **argv)
         std::max(deviation, std::abs(node.reaction[1] - share * uniform));
     }
   const double top = simulation.body("strip").reaction("top")[1];
-  std::printf("%s: %u active nodes, %u dofs, %u Newton iterations, %.2f s "
-              "(%.2f s per iteration, of which %.2f s the contact step's "
-              "factorisations), peak memory %.2f GiB; nodal forces uniform "
-              "to %.1e of the force, sum of r_n %.6g against the top's "
-              "reaction %.6g (%.1e)\n",
-              method.c_str(),
-              simulation.contact().n_active(),
-              simulation.n_dofs(),
-              s.newton_iterations,
-              wall,
-              wall / s.newton_iterations,
-              (s.factorization_seconds + s.compliance_seconds +
-               s.local_solve_seconds) /
-                s.newton_iterations,
-              peak_memory_gib(),
-              deviation / uniform,
-              sum,
-              -top,
-              std::abs(sum + top) / std::abs(top));
+  std::printf(
+    "%s, %s master: %u active nodes, %u dofs, %u Newton iterations, %.2f s "
+    "(%.2f s per iteration, of which %.2f s the contact step's "
+    "factorisations), peak memory %.2f GiB; nodal forces uniform "
+    "to %.1e of the force, sum of r_n %.6g against the top's "
+    "reaction %.6g (%.1e)\n",
+    method.c_str(),
+    surface.c_str(),
+    simulation.contact().n_active(),
+    simulation.n_dofs(),
+    s.newton_iterations,
+    wall,
+    wall / s.newton_iterations,
+    (s.factorization_seconds + s.compliance_seconds + s.local_solve_seconds) /
+      s.newton_iterations,
+    peak_memory_gib(),
+    deviation / uniform,
+    sum,
+    -top,
+    std::abs(sum + top) / std::abs(top));
   return 0;
 }

@@ -94,7 +94,7 @@ namespace
 // turned). Every slave node sits on a master vertex throughout. The rule
 // vertex normal meets it with the vertex's mean normal, the same at every
 // angle and increment, so the forces keep their components on the radius
-// and across it to the solver's tolerance (measured 1.5e-13 of the mean).
+// and across it to the solver's tolerance (measured 1.8e-13 of the mean).
 // The two other rules pick one of the two facets: the force, tilted by
 // half the corner's angle, pushes the node a little past the vertex onto
 // the other facet's side, so the next increment picks the other facet and
