@@ -84,6 +84,7 @@ namespace glissade
                       body_index(body)) == bodies_in_contact.end())
           bodies_in_contact.push_back(body_index(body));
     std::sort(bodies_in_contact.begin(), bodies_in_contact.end());
+    eliminated_last.resize(bodies.size());
     if (scene.contact_solver.method == ContactSolverSettings::Method::sparse &&
         !pairs.empty())
       {
@@ -136,6 +137,59 @@ namespace glissade
     TimerOutput::Scope scope(timer, timing::detection);
     for (auto &pair : pairs)
       pair->begin_step(step_start_time, time);
+    if (!sparse_step)
+      eliminate_touching_dofs_last();
+  }
+
+
+
+  void
+  ContactProblem::eliminate_touching_dofs_last()
+  {
+    // The dofs of the active nodes' rows and forces, per body: the ones
+    // this increment's W needs. A declared contact area much larger than
+    // what touches (Hertz: the whole arc, 1,256 dofs, for some 60 in
+    // contact) otherwise puts a dense trailing block of its size into
+    // every factorisation. A dof that joins later (a node activated or
+    // sliding onto another segment within the increment) is still
+    // answered, by back-substitutions.
+    std::vector<std::vector<types::global_dof_index>> touching(bodies.size());
+    for (const auto &pair : pairs)
+      {
+        const std::array<unsigned int, 2> b = {
+          {body_index(&pair->slave()),
+           pair->master() ? body_index(pair->master()) :
+                            numbers::invalid_unsigned_int}};
+        for (const auto &node : pair->nodes())
+          if (node.active)
+            {
+              const ContactLinearization &l = node.linearization;
+              for (const DofVector *v : {&l.gap_row,
+                                         &l.slip_row,
+                                         &l.tangential_force,
+                                         &l.normal_force,
+                                         &l.sliding_row,
+                                         &l.rotation_row})
+                for (const auto &e : *v)
+                  if (b[e.body] != numbers::invalid_unsigned_int)
+                    touching[b[e.body]].push_back(e.dof);
+            }
+      }
+    for (const unsigned int b : bodies_in_contact)
+      {
+        // (a body held by contact keeps its declared area: its springs
+        // are chosen among those dofs)
+        if (touching[b].empty() || !bodies[b]->free_rigid_motions().empty())
+          continue;
+        std::sort(touching[b].begin(), touching[b].end());
+        touching[b].erase(std::unique(touching[b].begin(), touching[b].end()),
+                          touching[b].end());
+        if (touching[b] != eliminated_last[b])
+          {
+            eliminated_last[b] = touching[b];
+            bodies[b]->set_contact_dofs(touching[b]);
+          }
+      }
   }
 
 

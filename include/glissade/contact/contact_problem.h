@@ -173,6 +173,15 @@ namespace glissade
     std::vector<unsigned int>          bodies_in_contact;
     std::unique_ptr<SparseContactStep> sparse_step;
 
+    /**
+     * Each body's contact dofs to eliminate last in its Cholesky factor:
+     * those the active nodes touch at the start of the increment
+     * (Body::set_contact_dofs, called when they change).
+     */
+    void
+    eliminate_touching_dofs_last();
+    std::vector<std::vector<dealii::types::global_dof_index>> eliminated_last;
+
     /** correct() by the sparse method. */
     bool
     correct_sparse(std::vector<dealii::Vector<double>> &increments);
