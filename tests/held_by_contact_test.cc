@@ -10,6 +10,7 @@
 
 #include <cmath>
 
+#include "case3_rings_reference.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -18,20 +19,6 @@ using namespace glissade_tests;
 
 namespace
 {
-  /** Mean u_r over the 40 nodes of radius r (case 3's meshes). */
-  double
-  mean_radial_displacement(const Body &body, const double r)
-  {
-    double sum = 0.;
-    for (unsigned int i = 0; i < 40; ++i)
-      {
-        const double       theta = 2. * M_PI * i / 40.;
-        const Point<2>     X(r * std::cos(theta), r * std::sin(theta));
-        const Tensor<1, 2> d = body.vertex_displacement(X);
-        sum += (d[0] * X[0] + d[1] * X[1]) / r;
-      }
-    return sum / 40.;
-  }
 
   /** Sum of the normal reactions of a pair's slave nodes. */
   double
@@ -73,17 +60,11 @@ GLISSADE_TEST(held_by_contact_rings_one_support_lame)
   const auto four = run("");
   const auto one  = run("point(2, 0): y");
 
-  // Lame, small strain (the load strains the rings by about 1e-3).
-  const double E = 1e4, nu = 0.3, a = 0.5, b = 2., c = 1.25;
-  const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
-  const double mu     = E / (2. * (1. + nu));
-  const double p      = 400. / (2. * M_PI * b);
-  // u = A (r - a^2 / r), sigma_rr = 2 (lambda + mu) A + 2 mu A a^2 / r^2.
-  const double A        = -p / (2. * (lambda + mu) + 2. * mu * a * a / (b * b));
-  const double u_b_lame = A * (b - a * a / b);
-  const double interface_lame =
-    -A * (2. * (lambda + mu) + 2. * mu * a * a / (c * c));
-
+  // Lame (case3_rings_reference.h).
+  const LameRings lame(1e4);
+  const double    b = 2., c = 1.25;
+  const double    u_b_lame    = lame.u_outer,
+               interface_lame = lame.interface_pressure;
   const double u_four       = mean_radial_displacement(four->body("outer"), b);
   const double u_one        = mean_radial_displacement(one->body("outer"), b);
   const double p_four       = total_normal_reaction(*four) / (2. * M_PI * c);
