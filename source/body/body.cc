@@ -66,6 +66,9 @@ namespace glissade
     DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
+    // Cholesky where the tangent is symmetric (a body in contact sets its
+    // contact dofs to eliminate last later, set_contact_dofs).
+    factorization.use_cholesky(tangent_is_symmetric(), {});
 
     // The rigid motions the supports leave free, about the centre of the
     // body's bounding box.
@@ -463,16 +466,22 @@ namespace glissade
 
 
 
+  bool
+  Body::tangent_is_symmetric() const
+  {
+    // Follower pressure makes the tangent unsymmetric: LU, not Cholesky.
+    for (const auto &load : boundary_conditions->surface_loads())
+      if (load.is_pressure)
+        return false;
+    return true;
+  }
+
+
+
   void
   Body::set_contact_dofs(
     const std::vector<types::global_dof_index> &contact_dofs)
   {
-    // Follower pressure makes the tangent unsymmetric: LU, not Cholesky.
-    bool tangent_is_symmetric = true;
-    for (const auto &load : boundary_conditions->surface_loads())
-      if (load.is_pressure)
-        tangent_is_symmetric = false;
-
     contact_position.assign(n_dofs(), -1);
     contact_rows.clear();
     std::vector<long> unknowns;
@@ -492,7 +501,7 @@ namespace glissade
           unknowns.push_back(j);
         contact_rows.push_back(row);
       }
-    factorization.use_cholesky(tangent_is_symmetric, unknowns);
+    factorization.use_cholesky(tangent_is_symmetric(), unknowns);
     contact_rows_resolved.clear();
     if (!free_motions.empty())
       choose_spring_dofs(contact_dofs);

@@ -353,6 +353,10 @@ namespace glissade
     dealii::SparseMatrix<double>      tangent;
     DirectSolver                      factorization;
 
+    /** False where follower pressure makes the tangent unsymmetric. */
+    bool
+    tangent_is_symmetric() const;
+
     /** See free_rigid_motions() and regularization(). */
     std::vector<RigidMotion> free_motions;
     std::vector<std::pair<dealii::types::global_dof_index, double>> springs;
