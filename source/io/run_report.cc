@@ -72,7 +72,9 @@ namespace glissade
           << s.wall_seconds * per << '\n';
     table << "  factorisations: " << s.n_cholesky << " Cholesky, " << s.n_lu
           << " LU (a tangent that is not positive definite, or not "
-             "symmetric)\n";
+             "symmetric); "
+          << s.n_reused_factorizations
+          << " last corrections with the previous one\n";
     return table.str();
   }
 } // namespace glissade

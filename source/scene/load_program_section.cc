@@ -104,6 +104,18 @@ namespace glissade
                       Patterns::Double(0.),
                       "...and |du| <= tol * |u| (tol * 1e-12 * the largest "
                       "body's diameter while u = 0).");
+    prm.declare_entry(
+      "Last correction with previous tangent",
+      "true",
+      Patterns::Bool(),
+      "When the residual already meets its tolerance, the state is the "
+      "solution and the last correction only confirms it for the "
+      "displacement test: solve it with the previous iteration's "
+      "factorisation (one back-substitution instead of a factorisation). "
+      "It differs from the full Newton correction by about the relative "
+      "size of the correction before it (at most 1e-3, else the full one "
+      "is made), so the displacement test decides as it would. false: "
+      "factorise at every correction.");
     prm.leave_subsection();
   }
 
@@ -116,6 +128,8 @@ namespace glissade
     max_iterations         = prm.get_integer("Maximum iterations");
     residual_tolerance     = prm.get_double("Residual tolerance");
     displacement_tolerance = prm.get_double("Displacement tolerance");
+    last_correction_with_previous_tangent =
+      prm.get_bool("Last correction with previous tangent");
     prm.leave_subsection();
     prm.check([&]() {
       if (!(residual_tolerance > 0.))

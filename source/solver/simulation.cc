@@ -113,6 +113,7 @@ namespace glissade
                               size,
                               n_dofs());
 
+    bool factorized_last_iteration = false;
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
       {
@@ -200,6 +201,16 @@ namespace glissade
             return false;
           }
 
+        // A correction that only confirms a converged state for the
+        // displacement test is solved with the last factorisation
+        // (NewtonCriterion::confirms_only), once per factorisation; the
+        // contact's own terms are those of the current state all the same.
+        const bool previous_tangent =
+          settings.last_correction_with_previous_tangent &&
+          factorized_last_iteration && newly_active == 0 &&
+          criterion.confirms_only();
+        factorized_last_iteration = !previous_tangent;
+
         // Predictor: the contact-free step of every body; then the contact
         // correction on the condensed system; then the update.
         std::vector<Vector<double>> du(all_bodies.size());
@@ -212,7 +223,10 @@ namespace glissade
             try
               {
                 TimerOutput::Scope scope(timer, timing::factorization);
-                all_bodies[b]->factorize();
+                if (previous_tangent)
+                  ++stats.n_reused_factorizations;
+                else
+                  all_bodies[b]->factorize();
               }
             catch (const std::runtime_error &e)
               {

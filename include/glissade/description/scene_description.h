@@ -209,6 +209,10 @@ namespace glissade
     unsigned int max_iterations         = 25;
     double       residual_tolerance     = 1e-9;
     double       displacement_tolerance = 1e-9;
+    /** Where the residual already meets its tolerance and only the
+     *  displacement test waits for one more correction, that correction is
+     *  solved with the last factorisation (NewtonCriterion). */
+    bool last_correction_with_previous_tangent = true;
 
     /** The section Newton (source/scene/load_program_section.cc). */
     static void

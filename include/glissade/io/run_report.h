@@ -28,6 +28,9 @@ namespace glissade
     /** Factorisations of the bodies' tangents by each method (LU: the
      * tangent was not positive definite, or not symmetric). */
     unsigned int n_cholesky = 0, n_lu = 0;
+    /** Last corrections solved with the previous factorisation
+     *  (Newton/Last correction with previous tangent). */
+    unsigned int n_reused_factorizations = 0;
   };
 
   /** "N increments, M Newton iterations, ... s wall (assembly ...)";

@@ -17,6 +17,14 @@ namespace glissade
    *   larger of the first two residuals (a step driven by prescribed
    *   displacements starts from a zero residual).
    * The Simulation tells it each residual and each correction.
+   *
+   * It also says when the next correction only confirms the state
+   * (confirms_only): the residual already meets its tolerance, and the
+   * last correction was small (at most 1e-3 of |u|), so the tangent has
+   * barely changed since it was factorised. A correction solved with the
+   * previous factorisation then differs from the full Newton one by a
+   * relative amount of the order of that last correction, and the
+   * displacement test decides on it as it would on the full one.
    */
   class NewtonCriterion
   {
@@ -60,6 +68,13 @@ namespace glissade
       return iteration > 0 && residual <= residual_tolerance * scale &&
              last_correction <=
                std::max(displacement_tolerance * displacement_norm, round_off);
+    }
+
+    bool
+    confirms_only() const
+    {
+      return iteration > 1 && residual <= residual_tolerance * scale &&
+             last_correction <= 1e-3 * displacement_norm;
     }
 
     bool
