@@ -307,6 +307,38 @@ GLISSADE_TEST(output_initial_state_left_out)
 
 
 
+// Output/VTU fields: each field is in the body's VTU if and only if it is
+// asked for (the arrays' names in the file's header).
+GLISSADE_TEST(output_vtu_fields_as_asked)
+{
+  for (const std::string fields :
+       {"displacement, stress", "displacement", "stress"})
+    {
+      const std::string directory =
+        "vtu_fields_" + std::to_string(fields.size());
+      std::filesystem::remove_all(directory); // no file of an earlier run
+      Simulation simulation(SceneReader::read_string(
+        block_on_line("bottom", directory),
+        "VTU fields",
+        {"Output/VTU interval=0", "Output/VTU fields=" + fields}));
+      simulation.run();
+      const std::string vtu = contents(directory + "/block-00002.vtu");
+      const bool        displacement =
+        vtu.find("Name=\"displacement\"") != std::string::npos;
+      const bool stress = vtu.find("Name=\"von_Mises\"") != std::string::npos &&
+                          vtu.find("Name=\"sigma_xy\"") != std::string::npos;
+      std::cout << "  VTU fields = " << fields << ": displacement "
+                << displacement << ", stress " << stress << std::endl;
+      check(!vtu.empty(), "the final VTU is written");
+      check(displacement == (fields.find("displacement") != std::string::npos),
+            "the displacement is written if and only if asked for");
+      check(stress == (fields.find("stress") != std::string::npos),
+            "the stress is written if and only if asked for");
+    }
+}
+
+
+
 // Output/Plots: any scene draws its history, its pressure along the
 // interface and its deformed mesh as PNG files (scripts/plot_scene.py,
 // Debian's matplotlib; the body VTU read back from deal.II's compressed

@@ -11,6 +11,7 @@ against the closed form (Lame for the rings, Hertz for the disk).
     /usr/bin/python3 benchmarks/peers/run_peers.py [--problems rings,hertz]
         [--rings 40,80,160] [--hertz 0.01,0.005,0.0025,0.00125]
         [--repeats 3] [--codes glissade,getfem,calculix]
+        [--masters bspline,faceted,hermite]
         [--glissade build/glissade] [--work /tmp/glissade-peers]
 
 It needs the peers (README.md): GetFEM's Python module and gmsh's live in
@@ -70,14 +71,21 @@ def read_csv(path):
 
 
 # ----------------------------------------------------------------- glissade
-def glissade_rings_command(glissade, n, out):
+def glissade_rings_command(glissade, n, out, master="bspline"):
+    """The rings with the outer ring's inner edge as a `master` surface:
+    bspline or faceted over Q4 nodes, or hermite (the outer ring of C1
+    Hermite elements)."""
     load = problems.ring_nodal_force(n)
-    return [glissade, os.path.join(HERE, "glissade_rings.prm"),
-            "--set", f"Body inner/Mesh/Subdivisions={n}, {n // 10}",
-            "--set", f"Body outer/Mesh/Subdivisions={n}, {n // 10}",
-            "--set", "Body outer/Boundary conditions/Nodal loads=outer: "
-                     f"-{load!r}*x/sqrt(x^2+y^2)*t, -{load!r}*y/sqrt(x^2+y^2)*t",
-            "--set", f"Output/Directory={out}"]
+    command = [glissade, os.path.join(HERE, "glissade_rings.prm"),
+               "--set", f"Body inner/Mesh/Subdivisions={n}, {n // 10}",
+               "--set", f"Body outer/Mesh/Subdivisions={n}, {n // 10}",
+               "--set", "Body outer/Boundary conditions/Nodal loads=outer: "
+                        f"-{load!r}*x/sqrt(x^2+y^2)*t, -{load!r}*y/sqrt(x^2+y^2)*t",
+               "--set", f"Contact interface/Surface={master}",
+               "--set", f"Output/Directory={out}"]
+    if master == "hermite":
+        command += ["--set", "Body outer/Element/Space=hermite"]
+    return command
 
 
 def glissade_hertz_command(glissade, mesh, out):
@@ -135,29 +143,37 @@ def run_and_read(args, work, runs, readers):
 
 
 def rings_row(args, n):
+    """The peers and glissade with each of args.masters, in one race: the
+    first master runs as "glissade", the others as "glissade-<master>"."""
     work = fresh_folder(args, f"rings-{n}")
     ccx_dir = os.path.join(work, "calculix")
     subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "rings",
                     str(n), ccx_dir], check=True)
     runs = {
-        "glissade": (glissade_rings_command(args.glissade, n,
-                                            os.path.join(work, "glissade")),
-                     work),
         "getfem": ([PYTHON, os.path.join(HERE, "getfem_rings.py"), str(n),
                     "--out", os.path.join(work, "getfem")], work),
         "calculix": (["ccx", "-i", "job"], ccx_dir),
     }
-    times, results = run_and_read(args, work, runs, {
-        "glissade": lambda: glissade_rings_result(os.path.join(work, "glissade")),
+    readers = {
         "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
         "calculix": lambda: read_calculix(["rings", str(n), ccx_dir]),
-    })
+    }
+    for k, master in enumerate(args.masters):
+        code = "glissade" if k == 0 else f"glissade-{master}"
+        out = os.path.join(work, code)
+        runs[code] = (glissade_rings_command(args.glissade, n, out, master),
+                      work)
+        readers[code] = lambda out=out: glissade_rings_result(out)
+        if "glissade" in args.codes and code not in args.codes:
+            args.codes.append(code)
+    times, results = run_and_read(args, work, runs, readers)
     u_lame = problems.lame_u_r2()
     p_lame = problems.lame_interface_pressure()
     errors = {code: ((r["u_r2"] - u_lame) / abs(u_lame),
                      (r["interface_pressure"] - p_lame) / p_lame)
               for code, r in results.items()}
-    return f"rings {n}x{n // 10}", times, results, errors
+    return (f"rings {n}x{n // 10} (glissade: {args.masters[0]} master)",
+            times, results, errors)
 
 
 def hertz_row(args, h):
@@ -218,13 +234,14 @@ def print_row(label, times, results, errors, problem):
         else:
             figure = (f"P {results[code]['P']:.4f}, p0 {100 * error[0]:+.2f} %,"
                       f" a {100 * error[1]:+.2f} %")
-        print(f"  {code:9s} {times[code]:7.2f} s  dofs {results[code]['dofs']}"
-              f"  {figure}")
+        print(f"  {code:16s} {times[code]:7.2f} s  dofs "
+              f"{results[code]['dofs']}  {figure}")
     names = {"getfem": "GetFEM", "calculix": "CalculiX"}
-    if "glissade" in times:
-        print("  " + ", ".join(
-            f"glissade / {names[peer]} {times['glissade'] / times[peer]:.2f}"
-            for peer in ("getfem", "calculix") if peer in times))
+    for code in times:
+        if code.startswith("glissade"):
+            print("  " + ", ".join(
+                f"{code} / {names[peer]} {times[code] / times[peer]:.2f}"
+                for peer in ("getfem", "calculix") if peer in times))
     sys.stdout.flush()
 
 
@@ -239,10 +256,14 @@ def main():
                              "half an hour on the 1600 rings)")
     parser.add_argument("--glissade",
                         default=os.path.join(ROOT, "build", "glissade"))
+    parser.add_argument("--masters", default="bspline",
+                        help="glissade's master surfaces on the rings, each "
+                             "run in the same race (bspline,faceted,hermite)")
     parser.add_argument("--work", default="/tmp/glissade-peers")
     args = parser.parse_args()
     args.glissade = os.path.abspath(args.glissade)
     args.codes = args.codes.split(",")
+    args.masters = args.masters.split(",")
     if "calculix" in args.codes and not shutil.which("ccx"):
         sys.exit("ccx not found: apt-get install calculix-ccx (README.md)")
     selected = args.problems.split(",")

@@ -43,16 +43,17 @@ namespace glissade
   } // namespace
 
   std::string
-  Body::write_vtu(const std::string                &directory,
-                  const unsigned int                index,
-                  const OutputSettings::Compression compression) const
+  Body::write_vtu(const std::string    &directory,
+                  const unsigned int    index,
+                  const OutputSettings &settings) const
   {
     const unsigned int  per_dim = element_space->components_per_displacement();
     StressPostprocessor stress(*materials, per_dim);
     NodalDisplacement   nodal_displacement(per_dim);
     DataOut<2>          data_out;
     data_out.attach_dof_handler(dofs);
-    if (per_dim == 1)
+    // (the fields the scene asks for: Output/VTU fields)
+    if (settings.vtu_displacement && per_dim == 1)
       {
         const std::vector<std::string> names(2, "displacement");
         const std::vector<
@@ -64,9 +65,10 @@ namespace glissade
                                  DataOut<2>::type_dof_data,
                                  interpretation);
       }
-    else
+    else if (settings.vtu_displacement)
       data_out.add_data_vector(solution, nodal_displacement);
-    data_out.add_data_vector(solution, stress);
+    if (settings.vtu_stress)
+      data_out.add_data_vector(solution, stress);
     // No nodal forces here: DataOut writes each node once per cell, so a
     // force field summed over the points would count a node up to four
     // times. The contact forces are in the contact surface output
@@ -80,12 +82,13 @@ namespace glissade
     // deal.II's default is zlib's level 9, which made writing the VTU files
     // a third of the rings' run; level 1 writes them 5.6 times faster for
     // files 0.6 % larger (doc/performance.md).
-    using Compression       = OutputSettings::Compression;
-    flags.compression_level = compression == Compression::small ?
-                                DataOutBase::VtkFlags::best_compression :
-                              compression == Compression::none ?
-                                DataOutBase::VtkFlags::no_compression :
-                                DataOutBase::VtkFlags::best_speed;
+    using Compression             = OutputSettings::Compression;
+    const Compression compression = settings.vtu_compression;
+    flags.compression_level       = compression == Compression::small ?
+                                      DataOutBase::VtkFlags::best_compression :
+                                    compression == Compression::none ?
+                                      DataOutBase::VtkFlags::no_compression :
+                                      DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
     data_out.build_patches(element_space->mapping(),
                            degree,

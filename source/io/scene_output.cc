@@ -90,9 +90,8 @@ namespace glissade
     TimerOutput::Scope scope(timer, timing::output);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        const std::string vtu = bodies[b]->write_vtu(settings.directory,
-                                                     increment,
-                                                     settings.vtu_compression);
+        const std::string vtu =
+          bodies[b]->write_vtu(settings.directory, increment, settings);
         pvd_records[b].emplace_back(t, vtu);
         write_pvd_index(settings.directory + "/" + bodies[b]->name() + ".pvd",
                         pvd_records[b]);

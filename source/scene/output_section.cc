@@ -9,6 +9,7 @@
 #include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
 
+#include <algorithm>
 #include <string>
 
 namespace glissade
@@ -43,6 +44,15 @@ namespace glissade
                       "(zlib level 1), small (level 9, deal.II's default: "
                       "0.6 % smaller, written 5.6 times slower on the 160 x "
                       "16 rings), none (3.4 times larger).");
+    prm.declare_entry("VTU fields",
+                      "displacement, stress",
+                      Patterns::MultipleSelection("displacement|stress"),
+                      "The fields of the bodies' VTU files: displacement, "
+                      "and stress (sigma_xx, sigma_yy, sigma_xy, sigma_zz "
+                      "and von_Mises, computed at the output; Plots colours "
+                      "the deformed mesh by it). Only displacement: the Hertz "
+                      "run at 18,000 dofs writes its VTU in 16 ms instead of "
+                      "57 ms.");
     prm.declare_entry("Contact table interval",
                       "0",
                       Patterns::Integer(0),
@@ -101,6 +111,15 @@ namespace glissade
                                 level == "none"  ? Compression::none :
                                                    Compression::fast;
     }
+    const std::string fields = prm.get("VTU fields");
+    {
+      const auto listed = Utilities::split_string_list(fields);
+      const auto has    = [&](const char *field) {
+        return std::find(listed.begin(), listed.end(), field) != listed.end();
+      };
+      vtu_displacement = has("displacement");
+      vtu_stress       = has("stress");
+    }
     initial_state          = prm.get_bool("Initial state");
     contact_table_interval = prm.get_integer("Contact table interval");
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))
@@ -110,6 +129,13 @@ namespace glissade
     plots                    = prm.get_bool("Plots");
     const std::string curves = prm.get("Plot curves");
     prm.leave_subsection();
+    prm.check([&]() {
+      if (!vtu_displacement && !vtu_stress)
+        throw InputError(prm.file() + ": Output/VTU fields",
+                         "names no field: list displacement, stress or "
+                         "both (to write no VTU file at all, see VTU "
+                         "interval and Initial state)");
+    });
     prm.check([&]() {
       for (const auto &item : text::split_top_level(curves, ';'))
         {

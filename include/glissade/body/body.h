@@ -290,10 +290,9 @@ namespace glissade
 
     /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
     std::string
-    write_vtu(const std::string                &directory,
-              const unsigned int                index,
-              const OutputSettings::Compression compression =
-                OutputSettings::Compression::fast) const;
+    write_vtu(const std::string    &directory,
+              const unsigned int    index,
+              const OutputSettings &settings) const;
 
     const dealii::DoFHandler<2> &
     dof_handler() const

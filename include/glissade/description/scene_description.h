@@ -233,7 +233,11 @@ namespace glissade
       small,
       none
     };
-    Compression  vtu_compression        = Compression::fast;
+    Compression vtu_compression = Compression::fast;
+    /** The fields of the bodies' VTU files: the displacement, and the
+     *  Cauchy stress with its von Mises norm. */
+    bool         vtu_displacement       = true;
+    bool         vtu_stress             = true;
     unsigned int contact_table_interval = 0; // 0: with the VTU files
     std::vector<std::string> history;
     bool                     progress = true;
