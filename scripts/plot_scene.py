@@ -223,6 +223,9 @@ def plot_deformed_mesh():
         a = vtu_arrays(vtu)
         if not {"Points", "connectivity", "offsets", "displacement",
                 "von_Mises"} <= a.keys():
+            print(f"plot_scene.py: deformed-mesh.png leaves out {name}: "
+                  f"{os.path.basename(vtu)} holds no displacement and "
+                  "von_Mises (Output/VTU fields = displacement, stress)")
             continue
         X, u = a["Points"], a["displacement"]
         reference = [(X[3 * i], X[3 * i + 1]) for i in range(len(X) // 3)]
