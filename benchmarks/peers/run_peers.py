@@ -11,8 +11,11 @@ against the closed form (Lame for the rings, Hertz for the disk).
     /usr/bin/python3 benchmarks/peers/run_peers.py [--problems rings,hertz]
         [--rings 40,80,160] [--hertz 0.01,0.005,0.0025,0.00125]
         [--repeats 3] [--codes glissade,getfem,calculix]
-        [--masters bspline,faceted,hermite]
+        [--masters bspline,faceted,hermite] [--plot peers.png]
         [--glissade build/glissade] [--work /tmp/glissade-peers]
+
+Every row also goes to WORK/peers.csv; --plot draws the times and the
+ratios against the dofs as a PNG (Debian's matplotlib).
 
 It needs the peers (README.md): GetFEM's Python module and gmsh's live in
 Debian's /usr/bin/python3, CalculiX is `ccx`. Nothing here is a test: the
@@ -224,7 +227,13 @@ def race(runs, repeats, work):
     return {name: statistics.median(t) for name, t in times.items()}
 
 
+RECORDS = []  # (problem, row label, program, dofs, median wall time)
+
+
 def print_row(label, times, results, errors, problem):
+    for code in times:
+        RECORDS.append((problem, label, code, results[code]["dofs"],
+                        times[code]))
     print(f"\n{label}")
     for code in times:
         error = errors[code]
@@ -260,6 +269,8 @@ def main():
                         help="glissade's master surfaces on the rings, each "
                              "run in the same race (bspline,faceted,hermite)")
     parser.add_argument("--work", default="/tmp/glissade-peers")
+    parser.add_argument("--plot", default=None,
+                        help="draw the times and ratios as this PNG")
     args = parser.parse_args()
     args.glissade = os.path.abspath(args.glissade)
     args.codes = args.codes.split(",")
@@ -274,6 +285,74 @@ def main():
     if "hertz" in selected:
         for h in (float(v) for v in args.hertz.split(",")):
             print_row(*hertz_row(args, h), "hertz")
+    os.makedirs(args.work, exist_ok=True)
+    write_records(os.path.join(args.work, "peers.csv"))
+    if args.plot:
+        plot_records(os.path.abspath(args.plot))
+
+
+def write_records(path):
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["problem", "row", "program", "dofs", "wall_s"])
+        for record in RECORDS:
+            out.writerow(record)
+
+
+def plot_records(path):
+    """Per problem: each program's time against the dofs, and glissade's
+    ratios to each peer with the issue's target, 0.5."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    problems_run = [p for p in ("rings", "hertz")
+                    if any(r[0] == p for r in RECORDS)]
+    fig, axes = plt.subplots(2, len(problems_run), squeeze=False,
+                             figsize=(5.2 * len(problems_run), 7.2))
+    names = {"getfem": "GetFEM", "calculix": "CalculiX"}
+    # One colour per program in every panel; the peer by the line's style.
+    colours = {"getfem": "C1", "calculix": "C3", "glissade": "C0",
+               "glissade-faceted": "C2", "glissade-hermite": "C4",
+               "glissade-bspline": "C9"}
+    styles = {"getfem": "-", "calculix": ":"}
+    for column, problem in enumerate(problems_run):
+        records = [r for r in RECORDS if r[0] == problem]
+        codes = list(dict.fromkeys(r[2] for r in records))
+        top, bottom = axes[0][column], axes[1][column]
+        for code in codes:
+            points = sorted((r[3], r[4]) for r in records if r[2] == code)
+            top.loglog(*zip(*points), "o-", color=colours.get(code),
+                       label=names.get(code, code))
+        for code in (c for c in codes if c.startswith("glissade")):
+            for peer in ("getfem", "calculix"):
+                ratio = []
+                for row in dict.fromkeys(r[1] for r in records):
+                    mine = [r for r in records if r[1] == row and r[2] == code]
+                    theirs = [r for r in records
+                              if r[1] == row and r[2] == peer]
+                    if mine and theirs:
+                        ratio.append((mine[0][3], mine[0][4] / theirs[0][4]))
+                if ratio:
+                    bottom.semilogx(*zip(*sorted(ratio)), "o",
+                                    linestyle=styles[peer],
+                                    color=colours.get(code),
+                                    label=f"{code} / {names[peer]}")
+        bottom.axhline(0.5, color="k", linestyle="--", linewidth=0.8,
+                       label="target 0.5")
+        top.set_title(f"{problem}: whole process, median wall time")
+        top.set_xlabel("dofs")
+        top.set_ylabel("s")
+        bottom.set_xlabel("dofs")
+        bottom.set_ylabel("glissade's time / the peer's")
+        top.legend(fontsize=7)
+        bottom.legend(fontsize=6)
+        for axis in (top, bottom):
+            axis.grid(True, which="both", linewidth=0.3)
+    fig.tight_layout()
+    temporary = path + ".tmp.png"
+    fig.savefig(temporary, dpi=110)
+    os.replace(temporary, path)
+    print(f"\nwrote {path}")
 
 
 if __name__ == "__main__":
