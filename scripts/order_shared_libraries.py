@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The shared libraries of a deal.II program in the order that makes its
-start-up cheapest, for the linker (cmake/shared_library_order.cmake).
+start-up cheapest, for the linker (applications/CMakeLists.txt).
 
 Why: a program linked with Debian's deal.II loads some 200 shared libraries
 (Trilinos, PETSc, OpenCASCADE, Gmsh, ...) and the dynamic loader resolves
@@ -8,7 +8,7 @@ about 190,000 symbol references among them before main(). Each reference is
 looked up in the libraries one after the other, in the order of the global
 scope (the program, then its needed libraries breadth first), until one
 defines the symbol: in the natural order a lookup visits 39 libraries on
-average, and that walk is most of the 0.25 s a glissade process takes to
+average, and that walk is most of the 0.23 s a glissade process took to
 start (doc/performance.md, "Start-up"). Listing the libraries that are
 looked up most first shortens the walk without changing what is loaded.
 
