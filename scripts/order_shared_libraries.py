@@ -28,6 +28,7 @@ empty, which links the usual way, if a tool this needs is missing.
 """
 
 import collections
+import hashlib
 import heapq
 import os
 import re
@@ -103,9 +104,12 @@ def main():
         scope = [path for path in load_order(program)
                  if not os.path.basename(path).startswith("ld-linux")]
         # The same libraries give the same order: skip the 10 s of reading
-        # them again (the key is the scope and the libraries' times).
-        key = "".join(f"# {path} {os.stat(path).st_mtime_ns}\n"
-                      for path in scope)
+        # them again (the key is this script, the scope and the libraries'
+        # times).
+        with open(__file__, "rb") as script:
+            key = f"# {hashlib.sha256(script.read()).hexdigest()}\n"
+        key += "".join(f"# {path} {os.stat(path).st_mtime_ns}\n"
+                       for path in scope)
         try:
             with open(output + ".key") as previous:
                 if previous.read() == key:
