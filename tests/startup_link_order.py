@@ -13,6 +13,7 @@ comparison covers all of them.
 Usage: startup_link_order.py USUAL_PROGRAM ORDERED_PROGRAM WORK_DIRECTORY
 """
 
+import functools
 import os
 import re
 import subprocess
@@ -48,29 +49,47 @@ def bindings(program, work, tag):
     return found
 
 
-def weak_definitions(path, cache={}):
-    if path not in cache:
-        out = subprocess.run(["nm", "-D", "--defined-only", path],
-                             capture_output=True, text=True).stdout
-        cache[path] = {parts[2].split("@")[0]
-                       for parts in (line.split() for line in out.splitlines())
-                       if len(parts) >= 3 and parts[1] in "WVu"}
-    return cache[path]
+@functools.lru_cache(maxsize=None)
+def weak_definitions(path):
+    out = subprocess.run(["nm", "-D", "--defined-only", path],
+                         capture_output=True, text=True).stdout
+    return {parts[2].split("@")[0]
+            for parts in (line.split() for line in out.splitlines())
+            if len(parts) >= 3 and parts[1] in "WVu"}
+
+
+def load_order(program):
+    """The libraries in the loader's order (ldd lists them so)."""
+    out = subprocess.run(["ldd", program], capture_output=True, text=True,
+                         check=True).stdout
+    return [line.split()[2] for line in out.splitlines() if " => /" in line]
 
 
 def main():
     usual_program, ordered_program, work = sys.argv[1:]
     os.makedirs(work, exist_ok=True)
+    # The order must have been applied (the same libraries, loaded in
+    # another order), or there would be nothing to compare.
+    usual_order, ordered_order = (load_order(usual_program),
+                                  load_order(ordered_program))
+    print(f"libraries: {len(usual_order)} in both, "
+          f"{sum(a != b for a, b in zip(usual_order, ordered_order))} "
+          "at another place in the load order")
+    failures = []
+    if sorted(usual_order) != sorted(ordered_order):
+        failures.append("the two programs load different libraries")
+    if usual_order == ordered_order:
+        failures.append("the ordered program loads its libraries in the "
+                        "usual order: the link order was not applied")
     usual = bindings(usual_program, work, "usual")
     ordered = bindings(ordered_program, work, "ordered")
     print(f"bindings: usual link {len(usual)}, ordered link {len(ordered)}")
-    failures = []
     if set(usual) != set(ordered):
         failures.append(f"{len(set(usual) ^ set(ordered))} references are "
                         "bound in one program and not the other")
     moved = [key for key in usual if key in ordered
              and usual[key] != ordered[key]]
-    copies = 0
+    copies, rebound = 0, []
     for user, symbol in moved:
         first, second = usual[(user, symbol)], ordered[(user, symbol)]
         if (symbol.startswith("_Z")
@@ -78,13 +97,14 @@ def main():
                 and symbol in weak_definitions(second)):
             copies += 1
         else:
-            failures.append(f"{user}: {symbol} bound to {second}, "
-                            f"not {first}")
+            rebound.append(f"{user}: {symbol} bound to {second}, "
+                           f"not {first}")
     print(f"bound to another copy of the same C++ entity: {copies}")
-    print(f"bound to another definition: {len(failures)}")
+    print(f"bound to another definition: {len(rebound)}")
+    failures += rebound
     for failure in failures[:20]:
         print("  " + failure)
-    # A reordering that moved nothing would not have been done.
+    # (LD_DEBUG is read by glibc's loader; with another, nothing is said)
     if len(usual) < 1000:
         failures.append("too few bindings reported: is LD_DEBUG ignored?")
     sys.exit(1 if failures else 0)

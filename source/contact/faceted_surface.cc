@@ -37,13 +37,10 @@ namespace glissade
         if (rule != VertexRule::vertex_normal)
           return CurveSurface::project(x, keep);
 
-        // A node kept on a facet that has just passed one of its ends, by
-        // less than half the facet, meets the vertex there: behind the
-        // next facet (a valley of the slave's side) or in front of both
-        // (a ridge), the vertex is where a node sliding along the facet
-        // stops or turns, and without it the node would alternate between
-        // the two facets from one iteration to the next. A node that has
-        // left a vertex is projected afresh.
+        // A node that the contact law held at a vertex stays there while
+        // it is within half a facet of it: the Newton step that pinned it
+        // leaves it off the vertex by the step's second-order remainder,
+        // which must not send it to a facet.
         if (keep.segment >= 0 && keep.at_vertex && keep.sticking)
           {
             SurfacePoint point = vertex_point(x, keep.segment);
@@ -55,6 +52,13 @@ namespace glissade
             if (point.on_vertex && (x - point.point).norm() < 0.5 * length)
               return point;
           }
+        // A node kept on a facet that has just passed one of its ends, by
+        // less than half the facet, meets the vertex there: behind the
+        // next facet (a valley of the slave's side) or in front of both
+        // (a ridge), the vertex is where a node sliding along the facet
+        // stops or turns, and without it the node would alternate between
+        // the two facets from one iteration to the next. A node that has
+        // left a vertex is projected afresh.
         if (keep.segment >= 0 && !keep.at_vertex)
           {
             const unsigned int segment = keep.segment;

@@ -21,13 +21,13 @@ namespace glissade
     // last correction are the start, and a pass that changes none ends it.
     constexpr unsigned int max_passes = 50;
 
-    // The stiffness c of the status tests, as a fraction of the bodies'
-    // mean diagonal stiffness: a contact node's own stiffness (the inverse
-    // of its compliance through the bodies) is well below a dof's diagonal
-    // entry. Measured: 0.01 and 0.1 give the condensed method's Newton
-    // iterations on the walkthrough's roller, the pad on a strip and case 3
-    // with mu = 0.3; 1 and 10 make the roller's statuses cycle (3 and 17
-    // cut-backs).
+    // The stiffness c_k of node k's status tests, as a fraction of the
+    // inverse of its normal compliance estimated from the diagonals
+    // (solve()): a node's own stiffness through the bodies is well below
+    // that estimate. Measured: 0.01 and 0.1 give the condensed method's
+    // Newton iterations on the walkthrough's roller, the pad on a strip and
+    // case 3 with mu = 0.3; 1 and 10 (then of the bodies' mean diagonal)
+    // made the roller's statuses cycle (3 and 17 cut-backs).
     constexpr double trial_stiffness = 0.1;
   } // namespace
 

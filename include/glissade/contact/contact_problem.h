@@ -106,14 +106,6 @@ namespace glissade
     ActiveNodes
     active_nodes(std::vector<ContactNode *> &active);
 
-    /** Active-set passes of the last sparse step (0 with the condensed one).
-     */
-    unsigned int
-    sparse_passes() const
-    {
-      return sparse_step ? sparse_step->passes() : 0;
-    }
-
     /** Sweeps and outcome of the last local solve. */
     const BiPotentialSolver::Result &
     last_result() const

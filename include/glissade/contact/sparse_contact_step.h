@@ -80,13 +80,6 @@ namespace glissade
       return last_passes;
     }
 
-    /** The factorisation, for its timings. */
-    const DirectSolver &
-    factorization() const
-    {
-      return lu;
-    }
-
   private:
     /** A global unknown and its weight: a dof's share after its constraint. */
     struct Share
