@@ -73,3 +73,41 @@ GLISSADE_TEST(contact_friction_steady_sliding_bspline_strip)
   // indented strip under the pad.
   check(std::abs(four_n - 0.2) < 0.01, "F_x / F_y within 5 % of mu");
 }
+
+// The rubber block of prm/rubber_block_drag.prm (issue 33), its bottom
+// corners rounded (a fillet of radius 2 mm): dragged 10 mm on the rigid
+// flat with mu = 0.3, it reaches full sliding, where Coulomb's law gives
+// F_x / F_y = mu exactly (every node in contact slips on the flat), and
+// keeps sliding to the end with no cut-back. (Its sharp-cornered version
+// stops where the leading corner folds: test rubber_block_sharp_corner_folds.)
+GLISSADE_TEST(contact_friction_rubber_block_with_rounded_corners_slides)
+{
+  std::vector<double> drag, ratio;
+  Simulation          simulation(SceneReader::read_file(
+    source_path("prm/rubber_block_drag.prm"),
+    {"Body block/Mesh/Type=gmsh",
+              "Body block/Mesh/File=meshes/rubber_block_fillet_r2.msh",
+              "Output/Progress=false",
+              "Output/Plots=false",
+              "Output/VTU interval=0",
+              "Output/Directory=friction_rubber_block_rounded"}));
+  simulation.on_increment = [&](unsigned int, double t) {
+    const Tensor<1, 2> force =
+      simulation.contact().contact_pairs()[0]->total_force();
+    drag.push_back(10. * std::max(t - 1., 0.));
+    ratio.push_back(force[1] != 0. ? -force[0] / force[1] : 0.);
+  };
+  simulation.run();
+  double full_sliding_from = -1.;
+  for (unsigned int i = 0; i < ratio.size(); ++i)
+    if (full_sliding_from < 0. && ratio[i] >= 0.297)
+      full_sliding_from = drag[i];
+  std::cout << "  F_x / F_y " << std::setprecision(12) << ratio.back()
+            << " at the end, >= 0.297 from " << full_sliding_from
+            << " mm of drag; " << simulation.statistics().cut_backs
+            << " cut-backs" << std::endl;
+  check_relative(ratio.back(), 0.3, 1e-8, "F_x / F_y in full sliding");
+  check(full_sliding_from > 0. && full_sliding_from < 8.,
+        "full sliding reached before 8 mm of drag");
+  check(simulation.statistics().cut_backs == 0, "no increment cut back");
+}

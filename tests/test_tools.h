@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace glissade_tests
 {
@@ -53,6 +54,41 @@ namespace glissade_tests
               << expected << ", relative deviation " << deviation
               << " (tolerance " << tolerance << ")" << std::endl;
     check(deviation <= tolerance, what + " is out of tolerance");
+  }
+
+  /**
+   * Two runs that solve the same equations by two linear-algebra paths (or
+   * the same path on another BLAS kernel) take the same increments and,
+   * in each, Newton iterations equal or within one: round-off decides
+   * whether the last correction falls just below or just above its
+   * tolerance (doc/design.md, "Assertions that round-off must not
+   * decide"). Prints both lists either way.
+   */
+  inline void
+  check_iterations_within_one(const std::vector<unsigned int> &a,
+                              const std::vector<unsigned int> &b,
+                              const std::string               &what)
+  {
+    unsigned int       differ = 0, apart = 0;
+    std::ostringstream lists;
+    for (const auto *list : {&a, &b})
+      {
+        lists << (list == &a ? " (" : "; ");
+        for (unsigned int i = 0; i < list->size(); ++i)
+          lists << (i ? " " : "") << (*list)[i];
+      }
+    for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
+      {
+        differ += a[i] != b[i];
+        apart += a[i] + 1 < b[i] || b[i] + 1 < a[i];
+      }
+    std::cout << "  " << what << ": Newton iterations per increment"
+              << lists.str() << "); " << differ << " increments differ by one, "
+              << apart << " by more" << std::endl;
+    check(a.size() == b.size(), what + ": not the same number of increments");
+    check(apart == 0,
+          what + ": Newton iterations differ by more than one in some "
+                 "increment");
   }
 
   /** The path of a file in the source tree (set by CMake). */

@@ -23,9 +23,9 @@ namespace glissade
 
   namespace
   {
-    using Point = MasterCurve::Point;
+    using CurvePoint = MasterCurve::Point;
 
-    Point
+    CurvePoint
     on_circle(const double theta)
     {
       return {{std::cos(theta), std::sin(theta)}};
@@ -38,8 +38,8 @@ namespace glissade
     std::unique_ptr<MasterCurve>
     build_curve(const std::string &method, const unsigned int n_e)
     {
-      const double       d_theta = M_PI / n_e;
-      std::vector<Point> vertices;
+      const double            d_theta = M_PI / n_e;
+      std::vector<CurvePoint> vertices;
       for (unsigned int i = 0; i <= n_e; ++i)
         vertices.push_back(on_circle(M_PI - i * d_theta));
 
@@ -51,8 +51,8 @@ namespace glissade
         }
       if (method == "q8" || method == "q12")
         {
-          const unsigned int degree = (method == "q8" ? 2 : 3);
-          std::vector<Point> edge_nodes;
+          const unsigned int      degree = (method == "q8" ? 2 : 3);
+          std::vector<CurvePoint> edge_nodes;
           for (unsigned int i = 0; i < n_e; ++i)
             for (unsigned int j = 1; j < degree; ++j)
               edge_nodes.push_back(
@@ -72,7 +72,7 @@ namespace glissade
         {
           // theta(s) = theta_i - s d_theta on a segment, so
           // dX/ds = d_theta (sin theta, -cos theta).
-          std::vector<Point> tangents;
+          std::vector<CurvePoint> tangents;
           for (unsigned int i = 0; i <= n_e; ++i)
             {
               const double theta = M_PI - i * d_theta;
@@ -121,12 +121,12 @@ namespace glissade
         for (unsigned int k = 0; k < samples_per_edge; ++k)
           {
             const double s = double(k) / (samples_per_edge - 1);
-            Point        c, dc, ddc;
+            CurvePoint   c, dc, ddc;
             curve->evaluate(segment, s, c, dc, ddc);
-            const Point     n            = curve->unit_normal(segment, s);
-            const double    radius       = std::hypot(c[0], c[1]);
-            const Point     exact_normal = {{c[0] / radius, c[1] / radius}};
-            GeometricSample sample;
+            const CurvePoint n            = curve->unit_normal(segment, s);
+            const double     radius       = std::hypot(c[0], c[1]);
+            const CurvePoint exact_normal = {{c[0] / radius, c[1] / radius}};
+            GeometricSample  sample;
             sample.edge              = edge;
             sample.xi                = 2. * s - 1.;
             sample.theta             = std::atan2(c[1], c[0]);

@@ -296,5 +296,14 @@ namespace glissade
                                     entry + "/Obstacle/Motion");
     if (master_body == "rigid" && obstacle == "line" && normal.norm() == 0.)
       throw InputError(entry + "/Obstacle/Normal", "must not be zero");
+    // A disk of radius 0 is a point and a hole of radius 0 has no inside:
+    // no slave node would ever touch either, and the run would end with
+    // no contact and exit 0.
+    if (master_body == "rigid" && (obstacle == "disk" || obstacle == "hole") &&
+        !(obstacle_radius > 0.))
+      throw InputError(entry + "/Obstacle/Radius",
+                       "must be > 0 for a " + obstacle +
+                         " (a radius of 0 makes it a point that no slave "
+                         "node ever touches)");
   }
 } // namespace glissade

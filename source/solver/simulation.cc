@@ -6,6 +6,7 @@
 #include <glissade/base/interruption.h>
 #include <glissade/base/progress_text.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/contact/folding_corner.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
@@ -347,6 +348,14 @@ namespace glissade
           message << " none (its first assembly failed)";
         if (!failure_cause.empty())
           message << ". Cause of the last attempt's failure: " << failure_cause;
+        // (the state is the last converged one again: what it shows)
+        for (const auto &pair : contact_problem->contact_pairs())
+          if (const std::string fold = describe_folding_corner(*pair);
+              !fold.empty())
+            {
+              message << ". What happened: " << fold;
+              break;
+            }
         throw ConvergenceFailure(message.str());
       }
     current_time = t;
