@@ -9,6 +9,8 @@
 #include <glissade/mesh/mesh_diameter.h>
 
 #include <cmath>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace glissade
@@ -33,6 +35,10 @@ namespace glissade
                                       where);
 
     element_space = ElementSpaceRegistry::create(description.element_space);
+    const bool axisymmetric =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    if (axisymmetric)
+      check_axisymmetric_mesh(where);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
     // the chords instead.
@@ -51,6 +57,8 @@ namespace glissade
 
     boundary_conditions =
       std::make_unique<BoundaryConditions>(description, boundary_names, mesh);
+    if (axisymmetric)
+      boundary_conditions->hold_on_axis(dofs_on_axis());
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());
@@ -76,9 +84,79 @@ namespace glissade
     const auto basis =
       rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
     const std::vector<RigidMotion> all(basis.begin(), basis.end());
-    for (const auto &coefficients : null_space(
-           boundary_conditions->support_rows(dofs, *element_space, basis), 3))
-      free_motions.push_back(combine(all, coefficients));
+    const auto                     rows =
+      boundary_conditions->support_rows(dofs, *element_space, basis);
+    if (axisymmetric)
+      {
+        // A body of revolution has one rigid motion, along its axis (a
+        // radial translation or a rotation would strain its hoops).
+        bool held = false;
+        for (const auto &row : rows)
+          held = held || std::abs(row[1]) > 1e-12;
+        if (!held)
+          free_motions.push_back(basis[1]);
+      }
+    else
+      for (const auto &coefficients : null_space(rows, 3))
+        free_motions.push_back(combine(all, coefficients));
+  }
+
+
+
+  void
+  Body::check_axisymmetric_mesh(const std::string &where) const
+  {
+    if (description.element_space == "hermite")
+      throw InputError(
+        where + "/Material/Hypothesis",
+        "axisymmetric bodies are not implemented for Hermite elements: "
+        "their derivative dofs would need the axis condition on the "
+        "derivatives of u_r too (du_r/dz = 0 on the axis), and the hoop "
+        "strain u_r / r of a C1 field near the axis is not what the "
+        "element was built for; use q1, q2, q3, q8 or q12");
+    // r >= 0: a cell with a vertex left of the axis would have a negative
+    // ring volume there.
+    const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (cell->vertex(v)[0] < -tolerance)
+          {
+            std::ostringstream message;
+            message << "an axisymmetric body needs its mesh in x = r >= 0 "
+                    << "(x is the radius, y the axis): cell "
+                    << cell->active_cell_index() << " has a vertex at ("
+                    << cell->vertex(v)[0] << ", " << cell->vertex(v)[1] << ")";
+            throw InputError(where + "/Mesh", message.str());
+          }
+  }
+
+
+
+  std::vector<types::global_dof_index>
+  Body::dofs_on_axis() const
+  {
+    // The x dofs whose support point lies on x = 0 (every space but
+    // Hermite's has one value dof per node and component).
+    std::map<types::global_dof_index, Point<2>> support_points;
+    DoFTools::map_dofs_to_support_points(element_space->mapping(),
+                                         dofs,
+                                         support_points);
+    const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
+    std::vector<types::global_dof_index> on_axis;
+    const FiniteElement<2>              &fe = dofs.get_fe();
+    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+    std::set<types::global_dof_index>    radial;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          if (fe.system_to_component_index(i).first == 0)
+            radial.insert(local[i]);
+      }
+    for (const auto &[dof, X] : support_points)
+      if (radial.count(dof) && std::abs(X[0]) <= tolerance)
+        on_axis.push_back(dof);
+    return on_axis;
   }
 
 
@@ -102,7 +180,9 @@ namespace glissade
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
 
-    const double       thickness          = description.material.thickness;
+    const double thickness = description.material.thickness;
+    const bool   axisymmetric =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric;
     const auto         boundary_evaluator = element_space->create_evaluator();
     const unsigned int n_local            = boundary_evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n_local);
@@ -142,6 +222,10 @@ namespace glissade
       std::unique_ptr<CellEvaluator>     evaluator;
       std::vector<Tensor<1, 2>>          grad;
       std::vector<SymmetricTensor<2, 2>> dE, D_dE;
+      // (axisymmetric: each dof's hoop strain variation dE_33 and the hoop
+      // stress variation dS_33 it causes)
+      std::vector<double> dE33 = std::vector<double>(grad.size()),
+                          dS33 = std::vector<double>(grad.size());
     };
     struct CellContribution
     {
@@ -167,6 +251,8 @@ namespace glissade
         auto          &grad        = scratch.grad;
         auto          &dE          = scratch.dE;
         auto          &D_dE        = scratch.D_dE;
+        auto          &dE33        = scratch.dE33;
+        auto          &dS33        = scratch.dS33;
         auto          &cell_matrix = data.cell_matrix;
         auto          &cell_rhs    = data.cell_rhs;
         data.cell                  = cell;
@@ -189,8 +275,21 @@ namespace glissade
                 H[component[i]] += solution(data.local_dofs[i]) * grad[i];
               }
             const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
-            const double       J = determinant(F);
-            if (!(J > 0.) || !std::isfinite(J))
+            // Axisymmetric: the hoop stretch F_33 = 1 + u_r / r, r the
+            // reference radius of the point (> 0 at every quadrature point
+            // of a mesh in r >= 0), and the volume of the ring 2 pi r dA.
+            double       hoop = 0.;
+            const double r    = evaluator.quadrature_point(q)[0];
+            if (axisymmetric)
+              {
+                for (unsigned int i = 0; i < n_local; ++i)
+                  if (component[i] == 0)
+                    hoop += solution(data.local_dofs[i]) *
+                            evaluator.shape_value(i, q);
+                hoop /= r;
+              }
+            const double J = determinant(F) * (1. + hoop);
+            if (!(J > 0.) || !std::isfinite(J) || !(1. + hoop > 0.))
               {
                 std::ostringstream why;
                 why << "is inverted, det F = " << J
@@ -200,7 +299,8 @@ namespace glissade
                   data.rejection = why.str();
                 continue;
               }
-            const MaterialPointResponse response = cell_material.evaluate(H);
+            const MaterialPointResponse response =
+              cell_material.evaluate(H, hoop);
             // The tangent too: at u = 0 the stress is zero however large
             // E is, and only the stiffness overflows.
             if (!std::isfinite(response.stress.norm()) ||
@@ -217,8 +317,9 @@ namespace glissade
                   data.rejection = why.str();
                 continue;
               }
-            const Tensor<2, 2> P  = F * Tensor<2, 2>(response.stress);
-            const double       dV = evaluator.JxW(q) * thickness;
+            const Tensor<2, 2> P = F * Tensor<2, 2>(response.stress);
+            const double       dV =
+              evaluator.JxW(q) * (axisymmetric ? 2. * M_PI * r : thickness);
 
             for (unsigned int i = 0; i < n_local; ++i)
               {
@@ -229,6 +330,17 @@ namespace glissade
                       0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
                 D_dE[i] = response.tangent * dE[i];
                 cell_rhs(i) -= (P[c] * grad[i]) * dV;
+                if (axisymmetric)
+                  {
+                    // dE_33 = F_33 du_r / r; the hoop stress works on it.
+                    dE33[i] = c == 0 ?
+                                (1. + hoop) * evaluator.shape_value(i, q) / r :
+                                0.;
+                    D_dE[i] += response.hoop_coupling * dE33[i];
+                    dS33[i] = response.hoop_coupling * dE[i] +
+                              response.hoop_stiffness * dE33[i];
+                    cell_rhs(i) -= response.hoop_stress * dE33[i] * dV;
+                  }
               }
             for (unsigned int i = 0; i < n_local; ++i)
               {
@@ -239,6 +351,15 @@ namespace glissade
                     double k = dE[j] * D_dE[i];
                     if (component[i] == component[j])
                       k += S_grad_i * grad[j];
+                    if (axisymmetric)
+                      {
+                        k += dE33[j] * dS33[i];
+                        // d(dE_33)/du_r = N_i N_j / r^2 (radial dofs)
+                        if (component[i] == 0 && component[j] == 0)
+                          k += response.hoop_stress *
+                               evaluator.shape_value(i, q) *
+                               evaluator.shape_value(j, q) / (r * r);
+                      }
                     cell_matrix(i, j) += k * dV;
                   }
               }
@@ -327,8 +448,10 @@ namespace glissade
     const auto &loads = boundary_conditions->surface_loads();
     if (loads.empty())
       return;
-    const double       thickness = description.material.thickness;
-    const unsigned int n_local   = evaluator.dofs_per_cell();
+    const double thickness = description.material.thickness;
+    const bool   axisymmetric =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    const unsigned int n_local = evaluator.dofs_per_cell();
 
     for (const unsigned int f : cell->face_indices())
       {
@@ -347,7 +470,10 @@ namespace glissade
               {
                 const Point<2>     X  = evaluator.quadrature_point(q);
                 const Tensor<1, 2> N0 = evaluator.normal_vector(q);
-                const double       dA = evaluator.JxW(q) * thickness;
+                // (axisymmetric: the ring of the reference surface,
+                // 2 pi R dS; a traction is per unit reference area)
+                const double dA = evaluator.JxW(q) *
+                                  (axisymmetric ? 2. * M_PI * X[0] : thickness);
                 if (!load.is_pressure)
                   {
                     // Dead traction per unit reference length.
@@ -361,17 +487,23 @@ namespace glissade
                   }
                 // Follower pressure: f = -p n da = -p cof(F) N0 dA (Nanson),
                 // with cof(F) linear in F in 2D, hence the simple tangent.
+                // Axisymmetric: da is the current ring, 2 pi x_r ds, that
+                // is F_33 = x_r / R times the reference one (3D Nanson).
                 const Tensor<2, 2> F = unit_symmetric_tensor<2>() +
                                        evaluator.gradient(cell_values, q);
                 const double       p = load.function->value(X);
                 const Tensor<1, 2> cof_F_N0(
                   {F[1][1] * N0[0] - F[1][0] * N0[1],
                    -F[0][1] * N0[0] + F[0][0] * N0[1]});
+                const double hoop_stretch =
+                  axisymmetric ?
+                    1. + evaluator.value(cell_values, q)[0] / X[0] :
+                    1.;
                 for (unsigned int i = 0; i < n_local; ++i)
                   {
                     const unsigned int ci = evaluator.displacement_component(i);
                     const double       Ni = evaluator.shape_value(i, q);
-                    cell_rhs(i) -= p * Ni * cof_F_N0[ci] * dA;
+                    cell_rhs(i) -= p * Ni * cof_F_N0[ci] * hoop_stretch * dA;
                     for (unsigned int j = 0; j < n_local; ++j)
                       {
                         const unsigned int cj =
@@ -382,6 +514,10 @@ namespace glissade
                           d = -g[1] * N0[0] + g[0] * N0[1];
                         else if (ci == 0 && cj == 1)
                           d = g[1] * N0[0] - g[0] * N0[1];
+                        d *= hoop_stretch;
+                        if (axisymmetric && cj == 0)
+                          d +=
+                            cof_F_N0[ci] * evaluator.shape_value(j, q) / X[0];
                         cell_matrix(i, j) += p * Ni * d * dA;
                       }
                   }
@@ -415,8 +551,12 @@ namespace glissade
     // displacements) has no force to compare the residual with; the floor
     // is the force a strain of 1e-4 |u| / L would carry over the length L
     // (round-off of a rigid motion stays 1e-12 (L / h) below it).
-    const double floor = 1e-4 * materials->largest_young_modulus() *
-                         description.material.thickness *
+    // (axisymmetric: a ring of the body's size stands for the thickness)
+    const double depth =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric ?
+        2. * M_PI * reference_size :
+        description.material.thickness;
+    const double floor = 1e-4 * materials->largest_young_modulus() * depth *
                          solution.linfty_norm();
     return std::max({internal_force_norm,
                      external_force_norm,

@@ -381,6 +381,9 @@ namespace glissade
           relations[r.dof] = r;
       }
 
+    for (const types::global_dof_index dof : axis_dofs)
+      relations[dof] = DofRelation{dof, {}, 0.};
+
     // Two items may couple the same pair of dofs the opposite way round (a
     // Hermite node where two fixed boundaries meet: each fixes its own
     // tangential derivative, a + c_a b = v_a and b + c_b a = v_b). That is

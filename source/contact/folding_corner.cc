@@ -63,9 +63,9 @@ namespace glissade
 
     /** The cell at vertex v with the smallest corner Jacobian. */
     CrushedCell
-    most_crushed_cell_at(const Triangulation<2>            &mesh,
+    most_crushed_cell_at(const Triangulation<2>          &mesh,
                          const std::vector<Tensor<1, 2>> &displacement,
-                         const unsigned int                v)
+                         const unsigned int               v)
     {
       CrushedCell worst;
       for (const auto &cell : mesh.active_cell_iterators())
@@ -106,8 +106,8 @@ namespace glissade
   std::string
   describe_folding_corner(const ContactPair &pair)
   {
-    const Body             &body = pair.slave();
-    const Triangulation<2> &mesh = body.triangulation();
+    const Body             &body               = pair.slave();
+    const Triangulation<2> &mesh               = body.triangulation();
     double                  total_normal_force = 0.;
     for (const ContactNode &node : pair.nodes())
       if (node.active)
@@ -138,9 +138,9 @@ namespace glissade
              << node.reference_position[1] << ") of pair '" << pair.name()
              << "' folds: the boundary turns by " << std::round(turn)
              << " degrees there, the node "
-             << (stuck ? "sticks" : "is in contact") << " (|r_t| / r_n = "
-             << ratio << ", mu = " << pair.settings().friction
-             << ") and carries "
+             << (stuck ? "sticks" : "is in contact")
+             << " (|r_t| / r_n = " << ratio
+             << ", mu = " << pair.settings().friction << ") and carries "
              << std::round(100. * node.reaction[1] /
                            std::max(total_normal_force, 1e-300))
              << " % of the pair's normal force, and the cell at ("

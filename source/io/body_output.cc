@@ -48,7 +48,9 @@ namespace glissade
                   const OutputSettings &settings) const
   {
     const unsigned int  per_dim = element_space->components_per_displacement();
-    StressPostprocessor stress(*materials, per_dim);
+    StressPostprocessor stress(*materials,
+                               per_dim,
+                               hypothesis() == PlaneHypothesis::axisymmetric);
     NodalDisplacement   nodal_displacement(per_dim);
     DataOut<2>          data_out;
     data_out.attach_dof_handler(dofs);

@@ -69,16 +69,26 @@ namespace glissade
       x[k] = nodes[k].reference_position +
              Tensor<1, 2>({slave.displacement()(nodes[k].dofs[0]),
                            slave.displacement()(nodes[k].dofs[1])});
-    std::vector<double> length(n, 0.);
+    // The tributary area is the integral of the node's hat function over
+    // the current adjacent faces, so that a uniform pressure's nodal
+    // forces divided by it give the pressure back: thickness times half
+    // of each face, or for a body of revolution the rings 2 pi x_r ds,
+    // 2 pi L (2 x_k + x_other) / 6 per face (forces are for the full
+    // turn).
+    std::vector<double> length(n, 0.), area(n, 0.);
+    const bool ring = slave.hypothesis() == PlaneHypothesis::axisymmetric;
     for (const auto &[a, b] : faces)
       {
-        const double half = 0.5 * x[a].distance(x[b]);
-        length[a] += half;
-        length[b] += half;
+        const double face = x[a].distance(x[b]);
+        length[a] += 0.5 * face;
+        length[b] += 0.5 * face;
+        for (const auto &[k, other] : {std::make_pair(a, b), {b, a}})
+          area[k] += ring ?
+                       2. * M_PI * face * (2. * x[k][0] + x[other][0]) / 6. :
+                       0.5 * face * slave.thickness();
       }
-    const double thickness = slave.thickness();
-    const auto   per_area  = [&](const unsigned int k, const double force) {
-      return length[k] > 0. ? force / (length[k] * thickness) : 0.;
+    const auto per_area = [&](const unsigned int k, const double force) {
+      return area[k] > 0. ? force / area[k] : 0.;
     };
 
     std::ostringstream stem;

@@ -8,9 +8,11 @@ namespace glissade
 
   StressPostprocessor::StressPostprocessor(
     const BodyMaterials &materials,
-    const unsigned int   components_per_displacement)
+    const unsigned int   components_per_displacement,
+    const bool           axisymmetric)
     : materials(materials)
     , per_dim(components_per_displacement)
+    , axisymmetric(axisymmetric)
   {}
 
 
@@ -26,6 +28,8 @@ namespace glissade
   UpdateFlags
   StressPostprocessor::get_needed_update_flags() const
   {
+    if (axisymmetric)
+      return update_values | update_gradients | update_quadrature_points;
     return per_dim == 1 ? update_gradients : update_values;
   }
 
@@ -53,7 +57,14 @@ namespace glissade
             computed[p] = 0.;
             continue;
           }
-        const SymmetricTensor<2, 3> s   = material.cauchy_stress(H);
+        // (u_r / r, and its limit du_r / dr on the axis)
+        double hoop = 0.;
+        if (axisymmetric)
+          {
+            const double r = inputs.evaluation_points[p][0];
+            hoop = r > 0. ? inputs.solution_values[p][0] / r : H[0][0];
+          }
+        const SymmetricTensor<2, 3> s   = material.cauchy_stress(H, hoop);
         const SymmetricTensor<2, 3> dev = deviator(s);
         computed[p][0]                  = s[0][0];
         computed[p][1]                  = s[1][1];

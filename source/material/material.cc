@@ -126,17 +126,38 @@ namespace glissade
 
 
   MaterialPointResponse
-  Material::evaluate(const Tensor<2, 2> &H) const
+  Material::evaluate(const Tensor<2, 2> &H,
+                     const double        hoop_strain_ratio) const
   {
     SymmetricTensor<2, 3> S;
     SymmetricTensor<4, 3> D;
     MaterialPointResponse response;
 
-    if (plane_hypothesis == PlaneHypothesis::plane_strain)
-      law->evaluate(strain(H, 0.), S, D);
-    else
-      response.out_of_plane_stretch =
-        std::sqrt(1. + 2. * solve_out_of_plane(H, S, D));
+    switch (plane_hypothesis)
+      {
+        case PlaneHypothesis::plane_strain:
+          law->evaluate(strain(H, 0.), S, D);
+          break;
+        case PlaneHypothesis::plane_stress:
+          response.out_of_plane_stretch =
+            std::sqrt(1. + 2. * solve_out_of_plane(H, S, D));
+          break;
+        case PlaneHypothesis::axisymmetric:
+          // E_33 = ((1 + h)^2 - 1) / 2 with h = u_r / r, without
+          // cancellation for a small h.
+          law->evaluate(strain(H,
+                               hoop_strain_ratio +
+                                 0.5 * hoop_strain_ratio * hoop_strain_ratio),
+                        S,
+                        D);
+          response.out_of_plane_stretch = 1. + hoop_strain_ratio;
+          response.hoop_stress          = S[2][2];
+          response.hoop_stiffness       = D[2][2][2][2];
+          for (unsigned int i = 0; i < 2; ++i)
+            for (unsigned int j = i; j < 2; ++j)
+              response.hoop_coupling[i][j] = D[i][j][2][2];
+          break;
+      }
 
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = i; j < 2; ++j)
@@ -157,15 +178,20 @@ namespace glissade
 
 
   SymmetricTensor<2, 3>
-  Material::cauchy_stress(const Tensor<2, 2> &H) const
+  Material::cauchy_stress(const Tensor<2, 2> &H,
+                          const double        hoop_strain_ratio) const
   {
     SymmetricTensor<2, 3> S;
     SymmetricTensor<4, 3> D;
     double                e33 = 0.;
-    if (plane_hypothesis == PlaneHypothesis::plane_strain)
-      law->evaluate(strain(H, 0.), S, D);
-    else
+    if (plane_hypothesis == PlaneHypothesis::plane_stress)
       e33 = solve_out_of_plane(H, S, D);
+    else
+      {
+        if (plane_hypothesis == PlaneHypothesis::axisymmetric)
+          e33 = hoop_strain_ratio + 0.5 * hoop_strain_ratio * hoop_strain_ratio;
+        law->evaluate(strain(H, e33), S, D);
+      }
 
     Tensor<2, 3> F;
     for (unsigned int i = 0; i < 2; ++i)

@@ -62,8 +62,14 @@ namespace glissade
                         "nu, in (-1, 0.5).");
       prm.declare_entry("Hypothesis",
                         "plane strain",
-                        Patterns::Selection("plane strain|plane stress"),
-                        "Planar hypothesis.");
+                        Patterns::Selection(
+                          "plane strain|plane stress|axisymmetric"),
+                        "What makes the 2D body a 3D one: plane strain, plane "
+                        "stress, or axisymmetric (a body of revolution: x is "
+                        "the radius r >= 0, y the axis; forces, reactions "
+                        "and contact forces are for the full turn, 2 pi r "
+                        "times a force per unit length of the circle; "
+                        "Thickness is not used).");
       prm.declare_entry("Thickness",
                         "1",
                         Patterns::Double(),
@@ -99,10 +105,13 @@ namespace glissade
     law           = prm.get("Law");
     young_modulus = prm.get_double("Young modulus");
     poisson_ratio = prm.get_double("Poisson ratio");
-    hypothesis    = prm.get("Hypothesis") == "plane stress" ?
-                      PlaneHypothesis::plane_stress :
-                      PlaneHypothesis::plane_strain;
-    thickness     = prm.get_double("Thickness");
+    {
+      const std::string name = prm.get("Hypothesis");
+      hypothesis = name == "plane stress" ? PlaneHypothesis::plane_stress :
+                   name == "axisymmetric" ? PlaneHypothesis::axisymmetric :
+                                            PlaneHypothesis::plane_strain;
+    }
+    thickness = prm.get_double("Thickness");
     const std::vector<std::string> region_names =
       Utilities::split_string_list(prm.get("Regions"), ',');
     prm.leave_subsection();

@@ -245,6 +245,13 @@ namespace glissade
       return problem;
     }
 
+    /** Plane strain, plane stress or axisymmetric (Material/Hypothesis). */
+    PlaneHypothesis
+    hypothesis() const
+    {
+      return description.material.hypothesis;
+    }
+
     /** The out-of-plane thickness (Material/Thickness). */
     double
     thickness() const
@@ -326,6 +333,17 @@ namespace glissade
     }
 
   private:
+    /**
+     * An axisymmetric body: refuses a Hermite space and a mesh with a
+     * vertex at x = r < 0, naming the cell.
+     */
+    void
+    check_axisymmetric_mesh(const std::string &where) const;
+
+    /** The radial dofs of the nodes on the axis x = 0. */
+    std::vector<dealii::types::global_dof_index>
+    dofs_on_axis() const;
+
     void
     assemble_surface_loads(
       const typename dealii::DoFHandler<2>::active_cell_iterator &cell,

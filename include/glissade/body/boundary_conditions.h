@@ -64,6 +64,17 @@ namespace glissade
       dealii::AffineConstraints<double>       &constraints) const;
 
     /**
+     * The radial dofs of the nodes on the axis of an axisymmetric body:
+     * held at u_r = 0 by every make_constraints() (a node on the axis
+     * cannot move off it), whatever the Dirichlet data say.
+     */
+    void
+    hold_on_axis(const std::vector<dealii::types::global_dof_index> &dofs)
+    {
+      axis_dofs = dofs;
+    }
+
+    /**
      * How much each Dirichlet relation would be violated by each motion of
      * `basis`: row i, column j is the value that relation i takes (in its
      * homogeneous form) under motion j. A combination of the motions that
@@ -161,9 +172,10 @@ namespace glissade
                      std::array<dealii::types::global_dof_index, 2>>
       vertex_dof_cache;
 
-    std::vector<DirichletItem> dirichlet_items;
-    std::vector<PointLoad>     point_loads;
-    std::vector<PointLoad>     nodal_loads; // on every vertex of a boundary
-    std::vector<SurfaceLoad>   loads_on_boundaries;
+    std::vector<DirichletItem>                   dirichlet_items;
+    std::vector<dealii::types::global_dof_index> axis_dofs;
+    std::vector<PointLoad>                       point_loads;
+    std::vector<PointLoad>   nodal_loads; // on every vertex of a boundary
+    std::vector<SurfaceLoad> loads_on_boundaries;
   };
 } // namespace glissade

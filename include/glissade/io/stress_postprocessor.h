@@ -15,12 +15,16 @@ namespace glissade
    * For Hermite elements (3 components per displacement component) the
    * gradient is read from the derivative dofs, interpolated bilinearly
    * between the nodes where it is exact.
+   *
+   * For an axisymmetric body sigma_zz is the hoop stress, with the hoop
+   * strain u_r / r (its limit du_r / dr on the axis).
    */
   class StressPostprocessor : public dealii::DataPostprocessor<2>
   {
   public:
     StressPostprocessor(const BodyMaterials &materials,
-                        const unsigned int   components_per_displacement);
+                        const unsigned int   components_per_displacement,
+                        const bool           axisymmetric = false);
 
     void
     evaluate_vector_field(
@@ -36,5 +40,6 @@ namespace glissade
   private:
     const BodyMaterials &materials;
     const unsigned int   per_dim;
+    const bool           axisymmetric;
   };
 } // namespace glissade

@@ -21,6 +21,14 @@ namespace glissade
     dealii::SymmetricTensor<4, 2> tangent;
     /** Out-of-plane stretch: 1 in plane strain, solved for in plane stress. */
     double out_of_plane_stretch = 1.;
+    /**
+     * Axisymmetric: the hoop stress S_33, its coupling dS_ab/dE_33 =
+     * dS_33/dE_ab (the law's D_ab33) and dS_33/dE_33 (zero otherwise:
+     * the assembly adds the hoop terms only for an axisymmetric body).
+     */
+    double                        hoop_stress = 0.;
+    dealii::SymmetricTensor<2, 2> hoop_coupling;
+    double                        hoop_stiffness = 0.;
   };
 
   /**
@@ -32,7 +40,10 @@ namespace glissade
    * local Newton iteration and condenses the tangent,
    *   D_ab_cd - D_ab_33 D_33_cd / D_33_33,
    * which is exact for any law (for Saint Venant-Kirchhoff it gives the
-   * textbook plane-stress constants).
+   * textbook plane-stress constants). Axisymmetric: the hoop stretch is
+   * kinematic, F_33 = 1 + u_r / r, so E_33 = u_r / r + (u_r / r)^2 / 2 is
+   * given and S_33 with its tangent terms returned beside the in-plane
+   * ones.
    */
   class Material
   {
@@ -51,12 +62,21 @@ namespace glissade
            const double          poisson_ratio,
            const PlaneHypothesis hypothesis);
 
+    /**
+     * `hoop_strain_ratio` is u_r / r at the point (axisymmetric bodies
+     * only; ignored otherwise).
+     */
     MaterialPointResponse
-    evaluate(const dealii::Tensor<2, 2> &displacement_gradient) const;
+    evaluate(const dealii::Tensor<2, 2> &displacement_gradient,
+             const double                hoop_strain_ratio = 0.) const;
 
-    /** Cauchy stress in 3D (sigma_33 is non-zero in plane strain). */
+    /**
+     * Cauchy stress in 3D (sigma_33 is non-zero in plane strain; the hoop
+     * stress of an axisymmetric body).
+     */
     dealii::SymmetricTensor<2, 3>
-    cauchy_stress(const dealii::Tensor<2, 2> &displacement_gradient) const;
+    cauchy_stress(const dealii::Tensor<2, 2> &displacement_gradient,
+                  const double                hoop_strain_ratio = 0.) const;
 
     PlaneHypothesis
     hypothesis() const

@@ -1,0 +1,73 @@
+#!/usr/bin/python3
+"""Writes the meshes of prm/hertz_sphere.prm and prm/hertz_two_spheres.prm
+(and of the axisymmetric Hertz tests, tests/axisymmetric_test.cc):
+the meridian of a sphere of radius 1 touching y = 0 at the origin, x = r
+in [0, 1] (the axis is x = 0), graded to 0.0025 within 0.08 of the contact
+point and 0.08 beyond 1.5 from it (quadrilaterals: Gmsh's Frontal-Delaunay
+paired by Blossom). Physical groups: arc (the sphere's surface), axis,
+top (the equatorial plane), sphere.
+
+- hertz_sphere_upper.msh: the sphere above the plane, centre (0, 1);
+- hertz_sphere_lower.msh: its mirror below, centre (0, -1).
+
+Needs Gmsh's Python module (Debian: python3-gmsh, in /usr/bin/python3).
+Run from prm/meshes: /usr/bin/python3 make_hertz_sphere_meshes.py
+"""
+import re
+
+import gmsh
+
+H_CONTACT, FINE, FAR, COARSE = 0.0025, 0.08, 1.5, 0.08
+
+
+def write(path, side):
+    gmsh.initialize(readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add("sphere")
+    geo = gmsh.model.geo
+    contact = geo.addPoint(0, 0, 0)
+    centre = geo.addPoint(0, side, 0)
+    equator = geo.addPoint(1, side, 0)
+    arc = geo.addCircleArc(contact, centre, equator)
+    top = geo.addLine(equator, centre)
+    axis = geo.addLine(centre, contact)
+    # counter-clockwise in both: the lower sphere's loop runs backwards
+    loop = geo.addCurveLoop([arc, top, axis] if side > 0 else [-axis, -top, -arc])
+    sphere = geo.addPlaneSurface([loop])
+    geo.synchronize()
+    for dim, tag, name, number in ((1, arc, "arc", 1), (1, axis, "axis", 2),
+                                   (1, top, "top", 3), (2, sphere, "sphere", 4)):
+        gmsh.model.addPhysicalGroup(dim, [tag], number)
+        gmsh.model.setPhysicalName(dim, number, name)
+    field = gmsh.model.mesh.field
+    distance = field.add("Distance")
+    field.setNumbers(distance, "PointsList", [contact])
+    size = field.add("Threshold")
+    field.setNumber(size, "InField", distance)
+    field.setNumber(size, "SizeMin", H_CONTACT)
+    field.setNumber(size, "SizeMax", COARSE)
+    field.setNumber(size, "DistMin", FINE)
+    field.setNumber(size, "DistMax", FAR)
+    field.setAsBackgroundMesh(size)
+    for option, value in (("Mesh.MeshSizeExtendFromBoundary", 0),
+                          ("Mesh.MeshSizeFromPoints", 0),
+                          ("Mesh.MeshSizeFromCurvature", 0),
+                          ("Mesh.Algorithm", 6), ("Mesh.RecombineAll", 1),
+                          ("Mesh.RecombinationAlgorithm", 1),
+                          ("Mesh.ElementOrder", 1),
+                          ("Mesh.MshFileVersion", 2.2), ("Mesh.Binary", 0)):
+        gmsh.option.setNumber(option, value)
+    gmsh.model.mesh.generate(2)
+    gmsh.write(path)
+    gmsh.finalize()
+    # ten significant digits are plenty for a mesh, and halve the file
+    text = open(path).read()
+    head, nodes, tail = re.split(r"(?<=\$Nodes\n)|(?=\$EndNodes)", text)
+    lines = nodes.strip().split("\n")
+    out = [lines[0]] + [" ".join([f[0]] + [f"{float(v):.10g}" for v in f[1:]])
+                        for f in (line.split() for line in lines[1:])]
+    open(path, "w").write(head + "\n".join(out) + "\n" + tail)
+
+
+write("hertz_sphere_upper.msh", 1.0)
+write("hertz_sphere_lower.msh", -1.0)
