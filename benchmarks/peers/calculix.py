@@ -180,7 +180,10 @@ def rings_deck(n, directory, contact):
 FLAT = ((-0.2, -0.2), (1.2, -0.2), (1.2, 0.0), (-0.2, 0.0))
 
 
-def hertz_deck(h, directory, mesh, contact):
+def hertz_deck(h, directory, mesh, contact, element="CPE4",
+               drive=problems.HERTZ_DRIVE):
+    """The Hertz deck; element CAX4 and drive SPHERE_DRIVE make it the
+    axisymmetric sphere (x = r, y the axis: ccx's convention too)."""
     if mesh is None:
         mesh = os.path.join(directory, "hertz.msh")
         nodes, quads, groups = problems.hertz_mesh(h, mesh)
@@ -191,7 +194,7 @@ def hertz_deck(h, directory, mesh, contact):
     out.append("*NODE, NSET=NALL")
     write_nodes(out, nodes, 1)
     write_nodes(out, np.array(FLAT), nn + 1)
-    out.append("*ELEMENT, TYPE=CPE4, ELSET=EALL")
+    out.append(f"*ELEMENT, TYPE={element}, ELSET=EALL")
     write_elements(out, quads, 0, 1)
     out.append(f"{ne + 1}, {nn + 1}, {nn + 2}, {nn + 3}, {nn + 4}")
     # The arc's faces: for each segment, its quad and the face (S1 = nodes
@@ -214,7 +217,9 @@ def hertz_deck(h, directory, mesh, contact):
     write_set(out, range(nn + 1, nn + 5))
     out += ["*BOUNDARY", "FLAT, 1, 2", "AXIS, 1, 1"]
     common_cards(out, problems.HERTZ_E, problems.HERTZ_NU, contact)
-    loads = ["*BOUNDARY", f"TOP, 2, 2, {num(-problems.HERTZ_DRIVE)}"]
+    # (the axis's x is held in both: the plane model's symmetry, the
+    # axisymmetric one's axis, which ccx does not hold by itself)
+    loads = ["*BOUNDARY", f"TOP, 2, 2, {num(-drive)}"]
     step_cards(out, loads)
     write_deck(directory, out)
 
@@ -326,11 +331,39 @@ def read_hertz(h, directory, mesh):
     }
 
 
+def read_sphere(h, directory, mesh):
+    """The axisymmetric Hertz run: ring forces K u (full turn) on the arc."""
+    if mesh is None:
+        mesh = os.path.join(directory, "hertz.msh")
+    nodes, quads, groups = problems.read_msh(mesh)
+    disp = read_frd_displacements(os.path.join(directory, "job.frd"))
+    u = displacement_array(disp, 1, len(nodes))
+    f = problems.axisymmetric_quad_internal_forces(
+        nodes, quads, u, problems.HERTZ_E, problems.HERTZ_NU)
+    arc = problems.group_nodes(groups["arc"])
+    top = problems.group_nodes(groups["top"])
+    arc = np.setdiff1d(arc, top)
+    p0, a, P = problems.sphere_figures_from_ring_forces(
+        nodes[arc, 0], nodes[arc, 1], f[arc, 1])
+    p0_hertz, a_hertz = problems.sphere_reference(P)
+    return {
+        "code": "calculix", "problem": "sphere", "h": h,
+        "dofs": 2 * len(nodes), "P": P, "p0": p0, "a": a,
+        "p0_hertz": p0_hertz, "a_hertz": a_hertz,
+        "error_p0": (p0 - p0_hertz) / p0_hertz,
+        "error_a": (a - a_hertz) / a_hertz,
+        "newton_iterations": read_sta_iterations(
+            os.path.join(directory, "job.sta")),
+        "top_reaction": -float(f[top, 1].sum()),
+        "penalty": PENALTY,
+    }
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("words", nargs="+",
-                        help="rings N DIR | hertz H DIR | read rings N DIR "
-                             "| read hertz H DIR")
+                        help="rings N DIR | hertz H DIR | sphere H DIR | "
+                             "read rings|hertz|sphere SIZE DIR")
     parser.add_argument("--contact", default=None,
                         choices=("SURFACE TO SURFACE", "NODE TO SURFACE"),
                         help="the *CONTACT PAIR TYPE (default: rings "
@@ -344,6 +377,9 @@ def main():
         problem, size, directory = words[1:]
         if problem == "rings":
             result = read_rings(int(size), directory)
+        elif problem == "sphere":
+            with open(os.path.join(directory, "mesh.txt")) as f:
+                result = read_sphere(float(size), directory, f.read().strip())
         else:
             mesh = args.mesh
             if mesh is None and os.path.exists(
@@ -354,9 +390,14 @@ def main():
         print(json.dumps(result))
     elif len(words) == 3 and words[0] == "rings":
         rings_deck(int(words[1]), words[2], args.contact or CONTACT["rings"])
-    elif len(words) == 3 and words[0] == "hertz":
-        hertz_deck(float(words[1]), words[2], args.mesh,
-                   args.contact or CONTACT["hertz"])
+    elif len(words) == 3 and words[0] in ("hertz", "sphere"):
+        if words[0] == "hertz":
+            hertz_deck(float(words[1]), words[2], args.mesh,
+                       args.contact or CONTACT["hertz"])
+        else:
+            hertz_deck(float(words[1]), words[2], args.mesh,
+                       args.contact or CONTACT["hertz"], "CAX4",
+                       problems.SPHERE_DRIVE)
         # The reader needs the mesh: remember where it is.
         mesh = os.path.abspath(args.mesh) if args.mesh else os.path.join(
             os.path.abspath(words[2]), "hertz.msh")

@@ -183,6 +183,78 @@ def hertz_reference(P, E=HERTZ_E, nu=HERTZ_NU, R=HERTZ_R):
     return 2 * P / (math.pi * a), a
 
 
+# The axisymmetric Hertz problem (issue 34): the same quarter disk, x = r
+# and y the axis, is the meridian of a sphere of radius 1; its top (the
+# equatorial plane) driven down by SPHERE_DRIVE puts a / R near 0.05.
+SPHERE_DRIVE = 0.0027
+
+
+def sphere_reference(P, E=HERTZ_E, nu=HERTZ_NU, R=HERTZ_R):
+    """Hertz, a sphere on a rigid flat, P the total load: (p0, a)."""
+    e_star = E / (1 - nu * nu)
+    a = (3 * P * R / (4 * e_star)) ** (1 / 3)
+    return 3 * P / (2 * math.pi * a * a), a
+
+
+def sphere_figures_from_ring_forces(x, y, force):
+    """(p0, a, P) of an axisymmetric contact from its arc nodes' ring forces
+    (for the full turn), as glissade's tests read them:
+
+    x, y   the reference position of each node of the arc (x = r),
+    force  its axial contact force (> 0 pushing the sphere up).
+
+    P  = sum(force) over the contact zone (hertz_contact_zone),
+    a  = sqrt(5 / 2 sum(force r^2) / P): for p0 sqrt(1 - r^2 / a^2) on the
+         disk, sum f r^2 = (2 / 5) a^2 P,
+    p0 = the force of the node on the axis over the ring its hat function
+         covers on its face, 2 pi L (2 r_0 + r_1) / 6 = pi L r_1 / 3.
+    """
+    order = np.argsort(np.asarray(x, dtype=float))
+    x = np.asarray(x, dtype=float)[order]
+    y = np.asarray(y, dtype=float)[order]
+    _, f = hertz_contact_zone(x, np.asarray(force, dtype=float)[order])
+    P = float(f.sum())
+    a = math.sqrt(2.5 * float((f * x * x).sum()) / P)
+    length = math.hypot(x[1] - x[0], y[1] - y[0])
+    p0 = float(f[0]) / (2 * math.pi * length * (2 * x[0] + x[1]) / 6)
+    return p0, a, P
+
+
+def axisymmetric_quad_internal_forces(nodes, quads, u, E, nu):
+    """f = K u for axisymmetric Q1 (x = r), full 2 x 2 Gauss, the nodal
+    forces of the full turn (2 pi r dA): CalculiX's CAX4 in the plane.
+    (n, 2); u is (n, 2)."""
+    lam, mu = lame_coefficients(E, nu)
+    D = np.array([[lam + 2 * mu, lam, lam, 0], [lam, lam + 2 * mu, lam, 0],
+                  [lam, lam, lam + 2 * mu, 0], [0, 0, 0, mu]])
+    X, U = nodes[quads], u[quads]
+    f = np.zeros_like(u)
+    g = 1 / math.sqrt(3)
+    ref = np.array([[-1, -1], [1, -1], [1, 1], [-1, 1]], dtype=float)
+    for xi, eta in ((-g, -g), (g, -g), (g, g), (-g, g)):
+        N = (1 + ref[:, 0] * xi) * (1 + ref[:, 1] * eta) / 4          # (4,)
+        dN = np.stack([ref[:, 0] * (1 + ref[:, 1] * eta) / 4,
+                       ref[:, 1] * (1 + ref[:, 0] * xi) / 4], axis=1)  # (4,2)
+        J = np.einsum("mai,aj->mij", X, dN)
+        det = J[:, 0, 0] * J[:, 1, 1] - J[:, 0, 1] * J[:, 1, 0]
+        inv = np.empty_like(J)
+        inv[:, 0, 0], inv[:, 1, 1] = J[:, 1, 1] / det, J[:, 0, 0] / det
+        inv[:, 0, 1], inv[:, 1, 0] = -J[:, 0, 1] / det, -J[:, 1, 0] / det
+        G = np.einsum("aj,mji->mai", dN, inv)                          # (m,4,2)
+        r = X[:, :, 0] @ N                                              # (m,)
+        grad = np.einsum("mak,mai->mki", U, G)
+        u_r = U[:, :, 0] @ N
+        eps = np.stack([grad[:, 0, 0], grad[:, 1, 1], u_r / r,
+                        grad[:, 0, 1] + grad[:, 1, 0]], axis=1)  # rr zz tt rz
+        s = eps @ D.T
+        w = 2 * math.pi * r * det
+        f_r = (s[:, 0, None] * G[:, :, 0] + s[:, 3, None] * G[:, :, 1]
+               + s[:, 2, None] * N[None, :] / r[:, None]) * w[:, None]
+        f_z = (s[:, 1, None] * G[:, :, 1] + s[:, 3, None] * G[:, :, 0]) * w[:, None]
+        np.add.at(f, quads, np.stack([f_r, f_z], axis=2))
+    return f
+
+
 CONTACT_THRESHOLD = 1e-3   # relative to the largest nodal force
 
 

@@ -10,6 +10,8 @@ against the closed form (Lame for the rings, Hertz for the disk).
 
     /usr/bin/python3 benchmarks/peers/run_peers.py [--problems rings,hertz]
         [--rings 40,80,160] [--hertz 0.01,0.005,0.0025,0.00125]
+        (--problems sphere: Hertz's sphere, axisymmetric, on the --hertz
+        meshes)
         [--repeats 3] [--codes glissade,getfem,calculix]
         [--masters bspline,faceted,hermite] [--plot peers.png]
         [--glissade build/glissade] [--work /tmp/glissade-peers]
@@ -95,6 +97,22 @@ def glissade_hertz_command(glissade, mesh, out):
     return [glissade, os.path.join(HERE, "glissade_hertz.prm"),
             "--set", f"Body disk/Mesh/File={mesh}",
             "--set", f"Output/Directory={out}"]
+
+
+def glissade_sphere_command(glissade, mesh, out):
+    """The same quarter disk as the meridian of a sphere (x = r)."""
+    return glissade_hertz_command(glissade, mesh, out) + [
+        "--set", "Body disk/Material/Hypothesis=axisymmetric",
+        "--set", "Body disk/Boundary conditions/Prescribed displacement="
+                 f"top: y: -{problems.SPHERE_DRIVE!r}*t"]
+
+
+def glissade_sphere_result(out):
+    table = read_csv(last_contact_table(out, "flat"))
+    p0, a, P = problems.sphere_figures_from_ring_forces(
+        [float(row["X"]) for row in table], [float(row["Y"]) for row in table],
+        [float(row["fy"]) for row in table])
+    return {"dofs": glissade_dofs(out), "P": P, "p0": p0, "a": a}
 
 
 def glissade_dofs(out):
@@ -207,6 +225,32 @@ def hertz_row(args, h):
     return f"hertz h={h}", times, results, errors
 
 
+def sphere_row(args, h):
+    """Hertz's sphere, axisymmetric: glissade and CalculiX's CAX4 on the
+    same meridian mesh (GetFEM's Python scripts here are plane)."""
+    work = fresh_folder(args, f"sphere-{h}")
+    mesh = os.path.join(work, "hertz.msh")
+    problems.hertz_mesh(h, mesh)
+    ccx_dir = os.path.join(work, "calculix")
+    subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "sphere",
+                    str(h), ccx_dir, "--mesh", mesh], check=True)
+    runs = {
+        "glissade": (glissade_sphere_command(args.glissade, mesh,
+                                             os.path.join(work, "glissade")),
+                     work),
+        "calculix": (["ccx", "-i", "job"], ccx_dir),
+    }
+    times, results = run_and_read(args, work, runs, {
+        "glissade": lambda: glissade_sphere_result(os.path.join(work, "glissade")),
+        "calculix": lambda: read_calculix(["sphere", str(h), ccx_dir]),
+    })
+    errors = {}
+    for code, r in results.items():
+        p0, a = problems.sphere_reference(r["P"])
+        errors[code] = ((r["p0"] - p0) / p0, (r["a"] - a) / a)
+    return f"sphere h={h}", times, results, errors
+
+
 def read_calculix(arguments):
     output = subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"),
                              "read"] + arguments, check=True,
@@ -256,7 +300,9 @@ def print_row(label, times, results, errors, problem):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--problems", default="rings,hertz")
+    parser.add_argument("--problems", default="rings,hertz",
+                        help="rings, hertz (plane strain), sphere (Hertz's "
+                             "sphere, axisymmetric: glissade and CalculiX)")
     parser.add_argument("--rings", default="40,80,160")
     parser.add_argument("--hertz", default="0.01,0.005,0.0025,0.00125")
     parser.add_argument("--repeats", type=int, default=3)
@@ -285,6 +331,9 @@ def main():
     if "hertz" in selected:
         for h in (float(v) for v in args.hertz.split(",")):
             print_row(*hertz_row(args, h), "hertz")
+    if "sphere" in selected:
+        for h in (float(v) for v in args.hertz.split(",")):
+            print_row(*sphere_row(args, h), "sphere")
     os.makedirs(args.work, exist_ok=True)
     write_records(os.path.join(args.work, "peers.csv"))
     if args.plot:
@@ -305,7 +354,7 @@ def plot_records(path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    problems_run = [p for p in ("rings", "hertz")
+    problems_run = [p for p in ("rings", "hertz", "sphere")
                     if any(r[0] == p for r in RECORDS)]
     fig, axes = plt.subplots(2, len(problems_run), squeeze=False,
                              figsize=(5.2 * len(problems_run), 7.2))
