@@ -4,6 +4,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/user_function.h>
 #include <glissade/body/body.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/mesh_diameter.h>
@@ -26,7 +27,7 @@ namespace glissade
       MeshFactory::create(description.mesh, mesh, where);
     boundary_names = labels.boundaries;
     reference_size = mesh_diameter(mesh);
-    materials =
+    materials_of_cells =
       std::make_unique<BodyMaterials>(description.material,
                                       labels.regions,
                                       description.mesh.type == "gmsh" ?
@@ -57,6 +58,10 @@ namespace glissade
 
     boundary_conditions =
       std::make_unique<BoundaryConditions>(description, boundary_names, mesh);
+    if (!description.gravity.empty())
+      gravity =
+        std::make_unique<UserFunction>(description.gravity,
+                                       where + "/Boundary conditions/Gravity");
     if (axisymmetric)
       boundary_conditions->hold_on_axis(dofs_on_axis());
 
@@ -259,9 +264,10 @@ namespace glissade
         data.rejection.clear();
         evaluator.reinit(cell);
         cell->get_dof_indices(data.local_dofs);
-        cell_matrix                   = 0.;
-        cell_rhs                      = 0.;
-        const Material &cell_material = materials->of_cell(cell->material_id());
+        cell_matrix = 0.;
+        cell_rhs    = 0.;
+        const Material &cell_material =
+          materials_of_cells->of_cell(cell->material_id());
 
         for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
           {
@@ -308,7 +314,8 @@ namespace glissade
               {
                 std::ostringstream why;
                 const auto [young_modulus, entry] =
-                  materials->young_modulus_of_cell(cell->material_id());
+                  materials_of_cells->young_modulus_of_cell(
+                    cell->material_id());
                 why << "has a stress or stiffness that is not finite: the "
                     << entry << " (" << young_modulus
                     << ") times the strain is beyond double precision; "
@@ -367,6 +374,14 @@ namespace glissade
         for (unsigned int i = 0; i < n_local; ++i)
           for (unsigned int j = i + 1; j < n_local; ++j)
             cell_matrix(i, j) = cell_matrix(j, i);
+        // A dynamic scheme's inertia (BodyInertia: read only, so shared by
+        // the threads).
+        if (inertia_terms)
+          inertia_terms->add_cell_terms(cell->active_cell_index(),
+                                        data.local_dofs,
+                                        solution,
+                                        cell_matrix,
+                                        cell_rhs);
       };
 
     // The first cell that makes the state inadmissible names the problem.
@@ -392,6 +407,8 @@ namespace glissade
       if (cell->at_boundary())
         assemble_surface_loads(
           cell, data.local_dofs, *boundary_evaluator, cell_matrix, cell_rhs);
+      if (gravity)
+        assemble_weight(cell, *boundary_evaluator, cell_rhs);
 
       for (unsigned int i = 0; i < n_local; ++i)
         unconstrained_residual(data.local_dofs[i]) -= cell_rhs(i);
@@ -424,10 +441,10 @@ namespace glissade
           }
     }
 
-    internal_force_norm     = internal_forces.l2_norm();
-    Vector<double> external = internal_forces;
-    external -= unconstrained_residual;
-    external_force_norm = external.l2_norm();
+    internal_force_norm = internal_forces.l2_norm();
+    external_forces     = internal_forces;
+    external_forces -= unconstrained_residual;
+    external_force_norm = external_forces.l2_norm();
     if (admissible && !std::isfinite(unconstrained_residual.l2_norm()))
       problem = "the residual of body '" + name() +
                 "' is not finite (a load or a prescribed displacement out of "
@@ -528,6 +545,71 @@ namespace glissade
 
 
 
+  void
+  Body::assemble_weight(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    CellEvaluator                                      &evaluator,
+    Vector<double>                                     &cell_rhs) const
+  {
+    // rho g per unit reference volume: the mass is the reference one
+    // (total Lagrangian), so the weight is a dead load. (In the sequential
+    // copier: muParser's functions hold a time and are not thread safe.)
+    const double rho = materials_of_cells->density_of_cell(cell->material_id());
+    if (!(rho > 0.))
+      return;
+    const bool axisymmetric =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    gravity->set_time(time);
+    evaluator.reinit(cell);
+    for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
+      {
+        const Point<2> X = evaluator.quadrature_point(q);
+        const double   dV =
+          evaluator.JxW(q) *
+          (axisymmetric ? 2. * M_PI * X[0] : description.material.thickness);
+        const std::array<double, 2> g = {
+          {gravity->value(X, 0), gravity->value(X, 1)}};
+        for (unsigned int i = 0; i < evaluator.dofs_per_cell(); ++i)
+          cell_rhs(i) += rho * g[evaluator.displacement_component(i)] *
+                         evaluator.shape_value(i, q) * dV;
+      }
+  }
+
+
+
+  double
+  Body::strain_energy() const
+  {
+    const bool axisymmetric =
+      description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    auto evaluator = element_space->create_evaluator();
+    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+    std::vector<double>                  values(local.size());
+    double                               energy = 0.;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        evaluator->reinit(cell);
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          values[i] = solution(local[i]);
+        const Material &material =
+          materials_of_cells->of_cell(cell->material_id());
+        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
+          {
+            const double r = evaluator->quadrature_point(q)[0];
+            const double hoop =
+              axisymmetric ? evaluator->value(values, q)[0] / r : 0.;
+            energy +=
+              material.energy(evaluator->gradient(values, q), hoop) *
+              evaluator->JxW(q) *
+              (axisymmetric ? 2. * M_PI * r : description.material.thickness);
+          }
+      }
+    return energy;
+  }
+
+
+
   double
   Body::residual_norm() const
   {
@@ -556,12 +638,13 @@ namespace glissade
       description.material.hypothesis == PlaneHypothesis::axisymmetric ?
         2. * M_PI * reference_size :
         description.material.thickness;
-    const double floor = 1e-4 * materials->largest_young_modulus() * depth *
-                         solution.linfty_norm();
+    const double floor = 1e-4 * materials_of_cells->largest_young_modulus() *
+                         depth * solution.linfty_norm();
     return std::max({internal_force_norm,
                      external_force_norm,
                      contact_forces.l2_norm(),
-                     floor});
+                     floor,
+                     inertia_terms ? inertia_terms->force_scale() : 0.});
   }
 
 

@@ -48,7 +48,7 @@ namespace glissade
                   const OutputSettings &settings) const
   {
     const unsigned int  per_dim = element_space->components_per_displacement();
-    StressPostprocessor stress(*materials,
+    StressPostprocessor stress(*materials_of_cells,
                                per_dim,
                                hypothesis() == PlaneHypothesis::axisymmetric);
     NodalDisplacement   nodal_displacement(per_dim);
@@ -71,6 +71,30 @@ namespace glissade
       data_out.add_data_vector(solution, nodal_displacement);
     if (settings.vtu_stress)
       data_out.add_data_vector(solution, stress);
+    // A dynamic scheme's velocity and acceleration, beside the
+    // displacement (the same fields, on the same nodes).
+    NodalDisplacement nodal_velocity(per_dim, "velocity"),
+      nodal_acceleration(per_dim, "acceleration");
+    if (inertia_terms && settings.vtu_displacement)
+      {
+        if (per_dim == 1)
+          for (const auto &[vector, name] :
+               {std::make_pair(&inertia_terms->velocity(), "velocity"),
+                std::make_pair(&inertia_terms->acceleration(), "acceleration")})
+            data_out.add_data_vector(
+              *vector,
+              std::vector<std::string>(2, name),
+              DataOut<2>::type_dof_data,
+              std::vector<
+                DataComponentInterpretation::DataComponentInterpretation>(
+                2, DataComponentInterpretation::component_is_part_of_vector));
+        else
+          {
+            data_out.add_data_vector(inertia_terms->velocity(), nodal_velocity);
+            data_out.add_data_vector(inertia_terms->acceleration(),
+                                     nodal_acceleration);
+          }
+      }
     // No nodal forces here: DataOut writes each node once per cell, so a
     // force field summed over the points would count a node up to four
     // times. The contact forces are in the contact surface output

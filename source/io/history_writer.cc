@@ -56,7 +56,8 @@ namespace glissade
     const std::vector<std::unique_ptr<Body>>        &bodies,
     const std::vector<std::unique_ptr<ContactPair>> &pairs,
     const std::string                               &filename,
-    const std::string                               &source)
+    const std::string                               &source,
+    const EnergyAccount                             *energies)
     : filename(filename)
   {
     columns                 = {"increment", "time", "newton_iterations"};
@@ -71,6 +72,33 @@ namespace glissade
         const auto        args =
           text::split_top_level(item.substr(open + 1, item.size() - open - 2),
                                 ',');
+        if (kind == "energies" &&
+            (args.empty() || (args.size() == 1 && text::trim(args[0]).empty())))
+          {
+            if (energies == nullptr)
+              throw InputError(entry,
+                               "'" + item +
+                                 "': the energies are those of a dynamic "
+                                 "scheme (Time integration/Scheme)");
+            for (const std::string q : {"kinetic_energy",
+                                        "strain_energy",
+                                        "work_of_loads",
+                                        "contact_dissipation",
+                                        "friction_dissipation",
+                                        "damping_dissipation",
+                                        "energy_balance"})
+              columns.push_back(q);
+            evaluators.emplace_back([energies](std::vector<double> &row) {
+              row.push_back(energies->kinetic);
+              row.push_back(energies->strain);
+              row.push_back(energies->work_of_loads);
+              row.push_back(energies->contact_dissipation());
+              row.push_back(energies->friction_dissipation);
+              row.push_back(energies->damping_dissipation);
+              row.push_back(energies->balance());
+            });
+            continue;
+          }
         if (args.empty())
           throw InputError(entry, "'" + item + "' names no body");
         const ContactPair *pair = nullptr;
@@ -121,7 +149,22 @@ namespace glissade
                            "'" + item + "': there is no body '" + args[0] +
                              "'");
 
-        if (kind == "max_displacement" && args.size() == 1)
+        if (kind == "momentum" && args.size() == 1)
+          {
+            if (body->inertia() == nullptr)
+              throw InputError(entry,
+                               "'" + item +
+                                 "': a body's momentum is that of a dynamic "
+                                 "scheme (Time integration/Scheme)");
+            for (const std::string q : {"px", "py"})
+              columns.push_back(identifier(args[0]) + "_" + q);
+            evaluators.emplace_back([body](std::vector<double> &row) {
+              const auto p = body->inertia()->momentum();
+              row.push_back(p[0]);
+              row.push_back(p[1]);
+            });
+          }
+        else if (kind == "max_displacement" && args.size() == 1)
           {
             columns.push_back(identifier(args[0]) + "_max_u");
             evaluators.emplace_back([body](std::vector<double> &row) {
@@ -179,7 +222,8 @@ namespace glissade
                              "' (known: displacement(body, point(x, y)), "
                              "max_displacement(body), reaction(body, "
                              "boundary), contact_force(pair), "
-                             "contact_node(pair, point(x, y)))");
+                             "contact_node(pair, point(x, y)); dynamic "
+                             "schemes: momentum(body), energies())");
       }
 
     // Names that differ only in what an identifier cannot hold ("a b" and

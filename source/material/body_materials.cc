@@ -16,7 +16,8 @@ namespace glissade
                                      description.poisson_ratio,
                                      description.hypothesis),
                     description.young_modulus,
-                    "Material"}
+                    "Material",
+                    description.density}
   {
     for (const MaterialRegionDescription &region : description.regions)
       {
@@ -41,7 +42,8 @@ namespace glissade
                                                         region.poisson_ratio,
                                                         description.hypothesis),
                                        region.young_modulus,
-                                       "Material " + region.name});
+                                       "Material " + region.name,
+                                       region.density});
       }
   }
 
@@ -65,6 +67,16 @@ namespace glissade
     const Entry &entry =
       region == region_materials.end() ? body_material : region->second;
     return {entry.young_modulus, entry.subsection + "/Young modulus"};
+  }
+
+
+
+  double
+  BodyMaterials::density_of_cell(const dealii::types::material_id id) const
+  {
+    const auto region = region_materials.find(id);
+    return region == region_materials.end() ? body_material.density :
+                                              region->second.density;
   }
 
 

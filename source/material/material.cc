@@ -177,6 +177,21 @@ namespace glissade
 
 
 
+  double
+  Material::energy(const Tensor<2, 2> &H, const double hoop_strain_ratio) const
+  {
+    SymmetricTensor<2, 3> S;
+    SymmetricTensor<4, 3> D;
+    double                e33 = 0.;
+    if (plane_hypothesis == PlaneHypothesis::plane_stress)
+      e33 = solve_out_of_plane(H, S, D);
+    else if (plane_hypothesis == PlaneHypothesis::axisymmetric)
+      e33 = hoop_strain_ratio + 0.5 * hoop_strain_ratio * hoop_strain_ratio;
+    return law->energy(strain(H, e33));
+  }
+
+
+
   SymmetricTensor<2, 3>
   Material::cauchy_stress(const Tensor<2, 2> &H,
                           const double        hoop_strain_ratio) const

@@ -45,4 +45,18 @@ namespace glissade
               factor * 0.5 *
                 (C_inv[i][k] * C_inv[j][l] + C_inv[i][l] * C_inv[j][k]);
   }
+
+
+
+  double
+  NeoHookean::energy(const SymmetricTensor<2, 3> &E) const
+  {
+    // W = mu/2 (tr C - 3) - mu ln J + lambda/2 (ln J)^2 with tr C - 3 =
+    // 2 tr E and ln J as in evaluate(), free of cancellation.
+    const SymmetricTensor<2, 3> A   = 2. * E;
+    const double                trA = trace(A);
+    const double                log_J =
+      0.5 * std::log1p(trA + 0.5 * (trA * trA - A * A) + determinant(A));
+    return mu * trace(E) - mu * log_J + 0.5 * lambda * log_J * log_J;
+  }
 } // namespace glissade

@@ -21,4 +21,12 @@ namespace glissade
     S = lambda * trace(E) * unit_symmetric_tensor<3>() + 2. * mu * E;
     D = elasticity;
   }
+
+
+
+  double
+  SaintVenantKirchhoff::energy(const SymmetricTensor<2, 3> &E) const
+  {
+    return 0.5 * lambda * trace(E) * trace(E) + mu * (E * E);
+  }
 } // namespace glissade

@@ -72,6 +72,13 @@ namespace glissade
           "the reference boundary times the material's Thickness): "
           "'boundary: tx, ty; ...' (expressions in x, y, t).");
         prm.declare_entry(
+          "Gravity",
+          "",
+          Patterns::Anything(),
+          "An acceleration field acting on the body's mass (Material/"
+          "Density), a force per unit volume rho g: 'gx, gy' (expressions "
+          "in x, y, t), e.g. '0, -9.81'. Empty: none.");
+        prm.declare_entry(
           "Pressure",
           "",
           Patterns::Anything(),
@@ -253,6 +260,14 @@ namespace glissade
                   NeumannDescription::Kind::pressure,
                   1,
                   "boundary: p");
+      if (const std::string g = text::trim(prm.get("Gravity")); !g.empty())
+        {
+          body.gravity = text::split_top_level(g, ',');
+          if (body.gravity.size() != 2)
+            throw InputError(where + "Gravity",
+                             "'" + g + "': expected 'gx, gy'");
+          entry_format::check_expressions(body.gravity, where + "Gravity");
+        }
       prm.leave_subsection();
     }
   } // namespace
@@ -275,6 +290,13 @@ namespace glissade
 
     MaterialDescription::declare_parameters(prm, regions);
     declare_boundary_conditions(prm);
+    prm.declare_entry("Initial velocity",
+                      "0, 0",
+                      Patterns::Anything(),
+                      "The velocity at t = 0 of a dynamic scheme (Time "
+                      "integration): 'vx, vy', expressions in x, y (the "
+                      "reference position), e.g. '0, -1' or a rotation "
+                      "'-2*y, 2*x'.");
   }
 
 
@@ -291,6 +313,16 @@ namespace glissade
     prm.leave_subsection();
     prm.check([&]() { material.parse_parameters(prm, where); });
     prm.check([&]() { parse_boundary_conditions(prm, *this, where); });
+    prm.check([&]() {
+      initial_velocity =
+        text::split_top_level(text::trim(prm.get("Initial velocity")), ',');
+      if (initial_velocity.size() != 2)
+        throw InputError(where + "/Initial velocity",
+                         "'" + prm.get("Initial velocity") +
+                           "': expected 'vx, vy'");
+      entry_format::check_expressions(initial_velocity,
+                                      where + "/Initial velocity");
+    });
     if (mesh.type == "gmsh")
       mesh.file = text::path_beside(prm.file(), mesh.file);
   }

@@ -35,6 +35,10 @@ namespace glissade
                         "",
                         Patterns::Anything(),
                         "As Material/Poisson ratio; empty: the body's.");
+      prm.declare_entry("Density",
+                        "",
+                        Patterns::Anything(),
+                        "As Material/Density; empty: the body's.");
     }
   } // namespace
 
@@ -70,6 +74,14 @@ namespace glissade
                         "and contact forces are for the full turn, 2 pi r "
                         "times a force per unit length of the circle; "
                         "Thickness is not used).");
+      prm.declare_entry("Density",
+                        "0",
+                        Patterns::Double(0.),
+                        "Mass per unit volume (kg/m^3 with SI units), >= "
+                        "0: the inertia of a dynamic scheme (Time "
+                        "integration) and the weight of Boundary "
+                        "conditions/Gravity. 0: massless (a quasi-static "
+                        "scene).");
       prm.declare_entry("Thickness",
                         "1",
                         Patterns::Double(),
@@ -105,6 +117,7 @@ namespace glissade
     law           = prm.get("Law");
     young_modulus = prm.get_double("Young modulus");
     poisson_ratio = prm.get_double("Poisson ratio");
+    density       = prm.get_double("Density");
     {
       const std::string name = prm.get("Hypothesis");
       hypothesis = name == "plane stress" ? PlaneHypothesis::plane_stress :
@@ -144,7 +157,12 @@ namespace glissade
           prm.number_or_inherited("Poisson ratio",
                                   poisson_ratio,
                                   where + "/" + subsection);
+        region.density =
+          prm.number_or_inherited("Density", density, where + "/" + subsection);
         prm.leave_subsection();
+        if (!(region.density >= 0.))
+          throw InputError(where + "/" + subsection + "/Density",
+                           "must be >= 0");
         if (region.law.empty())
           region.law = law;
         const auto &laws = Material::law_names();

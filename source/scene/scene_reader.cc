@@ -203,6 +203,7 @@ namespace glissade
       }
 
     LoadProgram::declare_parameters(prm);
+    TimeIntegrationSettings::declare_parameters(prm);
     NewtonSettings::declare_parameters(prm);
     ContactSolverSettings::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
@@ -224,6 +225,7 @@ namespace glissade
     // Each part is checked even when an earlier one has a mistake: the user
     // reads every mistake of the file in one message.
     prm.check([&]() { scene.contact_solver.parse_parameters(prm); });
+    prm.check([&]() { scene.time_integration.parse_parameters(prm); });
     for (const auto &name : contact_names)
       prm.check([&]() {
         ContactDescription contact;
@@ -248,7 +250,8 @@ namespace glissade
         for (const auto &c : scene.contacts)
           in_contact =
             in_contact || c.slave_body == name || c.master_body == name;
-        if (body.dirichlet.empty() && !in_contact)
+        if (body.dirichlet.empty() && !in_contact &&
+            !scene.time_integration.dynamic())
           prm.check([&]() {
             throw InputError(source + ": Body " + name + "/Boundary conditions",
                              "body '" + name +
@@ -260,6 +263,25 @@ namespace glissade
         scene.bodies.push_back(body);
       }
     scene.load_program.parse_parameters(prm);
+    // A dynamic scheme integrates every body's inertia: a body without
+    // mass would have none, and its equations no time derivative.
+    if (scene.time_integration.dynamic())
+      for (const auto &body : scene.bodies)
+        prm.check([&]() {
+          if (!(body.material.density > 0.))
+            throw InputError(source + ": Body " + body.name +
+                               "/Material/Density",
+                             "must be > 0 for the dynamic scheme of Time "
+                             "integration/Scheme (body '" +
+                               body.name + "' would have no inertia)");
+        });
+    for (const auto &body : scene.bodies)
+      prm.check([&]() {
+        if (!body.gravity.empty() && !(body.material.density > 0.))
+          throw InputError(source + ": Body " + body.name +
+                             "/Boundary conditions/Gravity",
+                           "acts on the mass, and Material/Density is 0");
+      });
     scene.newton.parse_parameters(prm);
     scene.output.parse_parameters(prm);
     scene.checkpoint.parse_parameters(prm, scene.load_program);

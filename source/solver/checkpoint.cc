@@ -72,7 +72,13 @@ namespace glissade
                              " dofs in the checkpoint and " +
                              std::to_string(b->n_dofs()) + " in the scene");
         b->serialize_state(archive);
+        // A dynamic scheme's velocity and acceleration (the scene decides
+        // whether there is one: the fingerprint covers it).
+        if (b->inertia())
+          b->inertia()->serialize(archive, 0);
       }
+    if (EnergyAccount *energies = integrator->energies())
+      energies->serialize(archive, 0);
     for (auto &pair : contact_problem->contact_pairs())
       {
         unsigned int n_nodes = pair->nodes().size();

@@ -13,6 +13,7 @@
 #include <glissade/io/pvd_index.h>
 #include <glissade/solver/newton_criterion.h>
 #include <glissade/solver/simulation.h>
+#include <glissade/solver/time_integrator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -53,8 +54,12 @@ namespace glissade
                     << ")" << std::endl;
       });
     mistakes.throw_if_any();
+    // (a dynamic scheme's inertia holds the rigid motions that no support
+    // does, which the contact problem checks: the scheme first)
+    integrator = TimeIntegrator::create(scene, all_bodies);
     contact_problem =
       std::make_unique<ContactProblem>(scene, all_bodies, timer);
+    integrator->attach(*contact_problem);
     output = std::make_unique<SceneOutput>(scene.output,
                                            all_bodies,
                                            *contact_problem,
@@ -64,7 +69,8 @@ namespace glissade
                                       all_bodies,
                                       contact_problem->contact_pairs(),
                                       scene.output.directory + "/history.csv",
-                                      scene.source);
+                                      scene.source,
+                                      integrator->energies());
     // The curves to plot name history columns: known only now.
     const auto &columns = history->column_names();
     for (const auto &[x, y] : scene.output.plot_curves)
@@ -103,6 +109,7 @@ namespace glissade
       b->set_time(t);
     // Detection at the start of the load step, from the current state.
     contact_problem->begin_step(t_start, t);
+    integrator->begin_step(t_start, t);
 
     residual_history.clear();
     failure_cause.clear();
@@ -300,7 +307,10 @@ namespace glissade
     try
       {
         if (newton(t_start, t_end))
-          return true;
+          {
+            integrator->accept_step();
+            return true;
+          }
       }
     catch (...)
       {
@@ -419,6 +429,7 @@ namespace glissade
       }
     else
       {
+        integrator->initialize();
         history->record(0, 0., 0);
         output->write_initial_state();
       }

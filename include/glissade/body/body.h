@@ -7,6 +7,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <glissade/body/body_inertia.h>
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/body/rigid_motion.h>
 #include <glissade/description/scene_description.h>
@@ -40,6 +41,71 @@ namespace glissade
     name() const
     {
       return description.name;
+    }
+
+    /** What the scene says of the body. */
+    const BodyDescription &
+    description_of_body() const
+    {
+      return description;
+    }
+
+    /** The .prm file the body comes from, for messages. */
+    const std::string &
+    source_name() const
+    {
+      return source;
+    }
+
+    /**
+     * Under a dynamic scheme, the body's inertia (mass, velocity,
+     * acceleration), whose Newmark terms each assemble() then adds;
+     * nullptr (the default) for a quasi-static body.
+     */
+    void
+    set_inertia(std::unique_ptr<BodyInertia> body_inertia)
+    {
+      inertia_terms = std::move(body_inertia);
+    }
+    BodyInertia *
+    inertia() const
+    {
+      return inertia_terms.get();
+    }
+
+    /**
+     * Under a dynamic scheme the mass holds the rigid motions that no
+     * support does: none is free (no check that contact holds them, no
+     * springs).
+     */
+    void
+    hold_rigid_motions_by_inertia()
+    {
+      free_motions.clear();
+    }
+
+    /** F_int - F_ext (with the inertia force, if any) on every dof. */
+    const dealii::Vector<double> &
+    unbalanced_forces() const
+    {
+      return unconstrained_residual;
+    }
+
+    /** F_ext of the last assembly: loads, tractions, pressure, weight. */
+    const dealii::Vector<double> &
+    applied_loads() const
+    {
+      return external_forces;
+    }
+
+    /** The stored energy of the current state, int W dV. */
+    double
+    strain_energy() const;
+
+    const BodyMaterials &
+    materials() const
+    {
+      return *materials_of_cells;
     }
 
     /** Target time of the current increment (Dirichlet and Neumann data). */
@@ -319,7 +385,7 @@ namespace glissade
     const Material &
     material() const
     {
-      return materials->of_body();
+      return materials_of_cells->of_body();
     }
     const dealii::Vector<double> &
     displacement() const
@@ -333,6 +399,13 @@ namespace glissade
     }
 
   private:
+    /** The weight rho g of one cell (Boundary conditions/Gravity). */
+    void
+    assemble_weight(
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      CellEvaluator                                              &evaluator,
+      dealii::Vector<double> &cell_rhs) const;
+
     /**
      * An axisymmetric body: refuses a Hermite space and a mesh with a
      * vertex at x = r < 0, naming the cell.
@@ -352,17 +425,20 @@ namespace glissade
       dealii::FullMatrix<double>                                 &cell_matrix,
       dealii::Vector<double> &cell_rhs) const;
 
-    const BodyDescription               description;
-    std::string                         problem;
-    const std::string                   source;
-    dealii::Triangulation<2>            mesh;
-    BoundaryNames                       boundary_names;
-    std::unique_ptr<ElementSpace>       element_space;
-    dealii::DoFHandler<2>               dofs;
-    std::unique_ptr<BodyMaterials>      materials;
-    std::unique_ptr<BoundaryConditions> boundary_conditions;
-    double                              reference_size = 1.;
-    double                              time           = 0.;
+    const BodyDescription          description;
+    std::string                    problem;
+    const std::string              source;
+    dealii::Triangulation<2>       mesh;
+    BoundaryNames                  boundary_names;
+    std::unique_ptr<ElementSpace>  element_space;
+    dealii::DoFHandler<2>          dofs;
+    std::unique_ptr<BodyMaterials> materials_of_cells;
+    std::unique_ptr<BodyInertia>   inertia_terms;
+    /** Boundary conditions/Gravity: an acceleration of x, y, t, or none. */
+    std::unique_ptr<dealii::Function<2>> gravity;
+    std::unique_ptr<BoundaryConditions>  boundary_conditions;
+    double                               reference_size = 1.;
+    double                               time           = 0.;
 
     dealii::AffineConstraints<double> element_constraints; // the space's own
     dealii::AffineConstraints<double> constraints; // plus Dirichlet data
@@ -403,6 +479,7 @@ namespace glissade
     dealii::Vector<double> stored_solution;
     dealii::Vector<double> system_rhs;             // F_ext - F_int, constrained
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
+    dealii::Vector<double> external_forces;        // F_ext, all dofs
     dealii::Vector<double> contact_forces;         // H^T r, all dofs
     dealii::Vector<double> stored_contact_forces;
     double                 internal_force_norm = 0.;

@@ -113,6 +113,7 @@ namespace glissade
     std::string law;
     double      young_modulus = 1.;
     double      poisson_ratio = 0.3;
+    double      density       = 0.;
   };
 
   struct MaterialDescription
@@ -122,6 +123,9 @@ namespace glissade
     double          poisson_ratio = 0.3;
     PlaneHypothesis hypothesis    = PlaneHypothesis::plane_strain;
     double          thickness     = 1.;
+    /** Mass per unit reference volume: inertia (Time integration) and
+     *  Gravity need it; 0 (the default) for a scene without either. */
+    double density = 0.;
     /** Regions with a material of their own; other cells take the above. */
     std::vector<MaterialRegionDescription> regions;
 
@@ -144,6 +148,11 @@ namespace glissade
     MaterialDescription               material;
     std::vector<DirichletDescription> dirichlet;
     std::vector<NeumannDescription>   neumann;
+    /** The velocity at t = 0: two expressions of x, y (Initial velocity). */
+    std::vector<std::string> initial_velocity = {"0", "0"};
+    /** An acceleration field of x, y, t acting on the mass (Boundary
+     *  conditions/Gravity); empty for none. */
+    std::vector<std::string> gravity;
 
     /**
      * The subsection Body <name>: Mesh, Element, Material, Boundary
@@ -169,6 +178,47 @@ namespace glissade
     unsigned int              max_cut_back_depth = 6;
 
     /** The section Load program (source/scene/load_program_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
+  };
+
+  /**
+   * How time is integrated (section Time integration, source/scene/
+   * time_integration_section.cc): quasi-static (the load program's t is a
+   * load parameter, no inertia: every scene before issue 35) or an implicit
+   * dynamic scheme on the bodies' inertia, the load program's increments
+   * then being the time steps.
+   */
+  struct TimeIntegrationSettings
+  {
+    enum class Scheme
+    {
+      quasi_static,
+      newmark
+    };
+    Scheme scheme = Scheme::quasi_static;
+    /** Newmark's beta and gamma (1/4, 1/2: the trapezoidal rule). */
+    double beta  = 0.25;
+    double gamma = 0.5;
+    /** The mass matrix: consistent (every space) or lumped (HRZ). */
+    bool lumped_mass = false;
+    /**
+     * Khenous, Laborde and Renard's redistributed mass: the value dofs of
+     * the nodes on a contact boundary (slave and master) carry no mass,
+     * their share moved to the other nodes of their cells.
+     */
+    bool redistribute_contact_mass = true;
+    /** Rayleigh damping C = a_M M (mass-proportional). */
+    double mass_damping = 0.;
+
+    bool
+    dynamic() const
+    {
+      return scheme != Scheme::quasi_static;
+    }
+
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     void
@@ -334,6 +384,7 @@ namespace glissade
     std::vector<BodyDescription>    bodies;
     std::vector<ContactDescription> contacts;
     LoadProgram                     load_program;
+    TimeIntegrationSettings         time_integration;
     NewtonSettings                  newton;
     ContactSolverSettings           contact_solver;
     OutputSettings                  output;

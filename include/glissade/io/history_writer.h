@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glissade/body/body.h>
+#include <glissade/body/energy_account.h>
 #include <glissade/contact/contact_pair.h>
 
 #include <functional>
@@ -24,7 +25,8 @@ namespace glissade
                   const std::vector<std::unique_ptr<Body>>        &bodies,
                   const std::vector<std::unique_ptr<ContactPair>> &pairs,
                   const std::string                               &filename,
-                  const std::string                               &source);
+                  const std::string                               &source,
+                  const EnergyAccount *energies = nullptr);
 
     void
     record(const unsigned int increment,

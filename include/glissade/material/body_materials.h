@@ -43,6 +43,10 @@ namespace glissade
     std::pair<double, std::string>
     young_modulus_of_cell(const dealii::types::material_id id) const;
 
+    /** The density of the cells with this material id (Material/Density). */
+    double
+    density_of_cell(const dealii::types::material_id id) const;
+
     /** The largest Young modulus of any region (for force scales). */
     double
     largest_young_modulus() const;
@@ -53,6 +57,7 @@ namespace glissade
       Material    material;
       double      young_modulus;
       std::string subsection; // "Material" or "Material <region>"
+      double      density = 0.;
     };
 
     Entry                                       body_material;

@@ -31,6 +31,14 @@ namespace glissade
              dealii::SymmetricTensor<2, 3>       &second_piola_kirchhoff,
              dealii::SymmetricTensor<4, 3>       &tangent) const = 0;
 
+    /**
+     * The stored energy W(E) per unit reference volume (the strain energy
+     * of a dynamic run's energy balance).
+     */
+    virtual double
+    energy(
+      const dealii::SymmetricTensor<2, 3> &green_lagrange_strain) const = 0;
+
     virtual std::string
     name() const = 0;
   };

@@ -70,6 +70,11 @@ namespace glissade
     evaluate(const dealii::Tensor<2, 2> &displacement_gradient,
              const double                hoop_strain_ratio = 0.) const;
 
+    /** The stored energy per unit reference volume at the point. */
+    double
+    energy(const dealii::Tensor<2, 2> &displacement_gradient,
+           const double                hoop_strain_ratio = 0.) const;
+
     /**
      * Cauchy stress in 3D (sigma_33 is non-zero in plane strain; the hoop
      * stress of an axisymmetric body).

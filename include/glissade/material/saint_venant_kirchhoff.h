@@ -20,6 +20,10 @@ namespace glissade
              dealii::SymmetricTensor<2, 3>       &second_piola_kirchhoff,
              dealii::SymmetricTensor<4, 3>       &tangent) const override;
 
+    double
+    energy(const dealii::SymmetricTensor<2, 3> &green_lagrange_strain)
+      const override;
+
     std::string
     name() const override
     {

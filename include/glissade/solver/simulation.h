@@ -6,6 +6,7 @@
 #include <glissade/io/history_writer.h>
 #include <glissade/io/run_report.h>
 #include <glissade/io/scene_output.h>
+#include <glissade/solver/time_integrator.h>
 
 #include <functional>
 #include <memory>
@@ -73,6 +74,13 @@ namespace glissade
     contact() const
     {
       return *contact_problem;
+    }
+
+    /** The energies of a dynamic scheme so far; nullptr if quasi-static. */
+    const EnergyAccount *
+    energies() const
+    {
+      return integrator->energies();
     }
 
     /** Scaled residuals |R|/scale of the Newton iterations of the last step. */
@@ -153,7 +161,9 @@ namespace glissade
     dealii::TimerOutput                timer;
     std::vector<std::unique_ptr<Body>> all_bodies;
     std::unique_ptr<ContactProblem>    contact_problem;
-    std::unique_ptr<HistoryWriter>     history;
+    /** Quasi-static or dynamic (Time integration/Scheme). */
+    std::unique_ptr<TimeIntegrator> integrator;
+    std::unique_ptr<HistoryWriter>  history;
     /** The VTU, PVD and contact files written as the run goes. */
     std::unique_ptr<SceneOutput> output;
     std::vector<double>          residual_history;

@@ -1,0 +1,150 @@
+#pragma once
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/description/scene_description.h>
+#include <glissade/body/energy_account.h>
+
+#include <array>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace glissade
+{
+  class Body;
+
+  /**
+   * A body's inertia under a dynamic scheme (Time integration): its mass,
+   * cell by cell, its velocity and acceleration, and the terms Newmark's
+   * scheme adds to the body's residual and tangent at each Newton
+   * iteration of a time step.
+   *
+   * Newmark, from the state (u_n, v_n, a_n) over a step dt: with the
+   * predictors u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n and v~ = v_n +
+   * (1 - gamma) dt a_n, the end state's acceleration and velocity are
+   * functions of its displacement,
+   *   a(u) = (u - u~) / (beta dt^2),   v(u) = v~ + gamma dt a(u),
+   * and the equation of motion M a + a_M M v + F_int(u) = F_ext + F_c is
+   * the quasi-static one with the inertia force on the left and the
+   * tangent K + (1 / (beta dt^2) + a_M gamma / (beta dt)) M: the contact
+   * step of the quasi-static scheme solves it unchanged (doc/theory.md,
+   * "Dynamics").
+   *
+   * The mass is the reference configuration's (total Lagrangian: it never
+   * changes): consistent, M_ij = int rho N_i N_j dV over each cell, or
+   * lumped by the HRZ rule. With the contact mass redistributed (Khenous,
+   * Laborde & Renard 2008), the value dofs of the nodes on a contact
+   * boundary carry no mass: each such cell is lumped and the massless
+   * dofs' share moved to the other dofs of their component in the cell, in
+   * proportion to theirs, which keeps the cell's mass, so the body's mass
+   * and momentum.
+   */
+  class BodyInertia
+  {
+  public:
+    /**
+     * `massless` are the dofs on a contact boundary (redistributed mass);
+     * `where` names the body for messages.
+     */
+    BodyInertia(const Body                                 &body,
+                const TimeIntegrationSettings              &settings,
+                const std::set<dealii::types::global_dof_index> &massless,
+                const std::string                          &where);
+
+    /**
+     * The velocity at t = 0 from the body's Initial velocity, and the
+     * acceleration that balances `residual` (F_ext - F_int at t = 0 on
+     * every dof, unconstrained: M a_0 = R_0 on the free dofs, condensed
+     * by the body's constraints; zero on the massless ones).
+     */
+    void
+    initialize(const Body &body, const dealii::Vector<double> &residual);
+
+    /** The predictors of a step of length dt from the displacement u_n. */
+    void
+    begin_step(const dealii::Vector<double> &u_n, const double dt);
+
+    /**
+     * The inertia terms of one cell at the displacement u: the cell's
+     * residual loses M (a(u) + a_M v(u)) and its tangent gains (1 / (beta
+     * dt^2) + a_M gamma / (beta dt)) M.
+     */
+    void
+    add_cell_terms(const unsigned int                                 cell,
+                   const std::vector<dealii::types::global_dof_index> &dofs,
+                   const dealii::Vector<double>                       &u,
+                   dealii::FullMatrix<double> &cell_matrix,
+                   dealii::Vector<double>     &cell_rhs) const;
+
+    /**
+     * After a converged step to the body's displacement: a and v of the
+     * end state, and the work of the step done on the body by its loads
+     * and supports, by contact and by the damping, added to `account`
+     * (EnergyAccount: the trapezoidal rule over the step).
+     */
+    void
+    accept_step(const Body &body, EnergyAccount &account);
+
+    /**
+     * The force that would change the body's momentum by itself over one
+     * step, |M v~| / dt: the scale of the residual of a body in flight,
+     * whose internal and external forces may both be nil.
+     */
+    double
+    force_scale() const;
+
+    /**
+     * The body's linear momentum, int rho v dV: e_c . M v with e_c the
+     * unit translation along c (its value dofs of component c at 1).
+     */
+    std::array<double, 2>
+    momentum() const;
+
+    /** 1/2 v . M v */
+    double
+    kinetic_energy() const;
+
+    const dealii::Vector<double> &
+    velocity() const
+    {
+      return v;
+    }
+    const dealii::Vector<double> &
+    acceleration() const
+    {
+      return a;
+    }
+
+    /** The state a checkpoint holds: velocity, acceleration and the forces
+     *  of the last accepted state. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      // clang-format off
+      archive & v & a & applied_before & contact_before & damping_before;
+      // clang-format on
+    }
+
+  private:
+    /** M x, the mass applied to a global vector. */
+    dealii::Vector<double>
+    apply_mass(const dealii::Vector<double> &x) const;
+
+    const TimeIntegrationSettings                         settings;
+    std::vector<std::vector<dealii::types::global_dof_index>> cell_dofs;
+    /** Each cell's mass matrix (diagonal when lumped or redistributed). */
+    std::vector<dealii::FullMatrix<double>> cell_mass;
+    dealii::Vector<double>                  v, a;
+    dealii::Vector<double>                  u_start, u_predicted, v_predicted;
+    /** The unit translations along x and y (value dofs at 1). */
+    std::array<dealii::Vector<double>, 2> translation;
+    double                                  step = 0.;
+    /** The forces of the last accepted state, for the next step's work:
+     *  loads and supports, contact, damping. */
+    dealii::Vector<double> applied_before, contact_before, damping_before;
+  };
+} // namespace glissade
