@@ -35,7 +35,7 @@ namespace
       SceneReader::read_file(source_path("prm/bar_impact.prm"), all));
     std::vector<Step> steps;
     simulation.on_increment = [&](unsigned int, double t) {
-      const ContactPair &pair = *simulation.contact().contact_pairs()[0];
+      const ContactPair &pair   = *simulation.contact().contact_pairs()[0];
       double             lowest = 0.;
       for (const ContactNode &node : pair.nodes())
         if (node.active)
@@ -91,19 +91,22 @@ GLISSADE_TEST(dynamics_bar_impact_closed_forms)
       penetration   = std::min(penetration, s.lowest_gap);
       worst_balance = std::max(worst_balance, std::abs(s.energy_balance));
     }
-  const double mean_pressure = impulse / duration / area;
+  const double mean_pressure  = impulse / duration / area;
   const double velocity_after = steps.back().momentum / mass;
-  std::cout << std::setprecision(6) << "  contact from t = " << first
-            << " to " << last << ": duration " << duration << " (2 L / c = "
-            << 2. * L / c << "); mean pressure " << mean_pressure
+  std::cout << std::setprecision(6) << "  contact from t = " << first << " to "
+            << last << ": duration " << duration << " (2 L / c = " << 2. * L / c
+            << "); mean pressure " << mean_pressure
             << " (rho c v0 = " << rho * c * v0
             << "); largest departure of the force from rho c v0 A between "
                "the wave fronts "
-            << worst << "; velocity after "
-            << velocity_after << " (-v0 = " << -v0 << "); deepest gap "
-            << penetration << "; largest |energy balance| / E0 "
+            << worst << "; velocity after " << velocity_after
+            << " (-v0 = " << -v0 << "); deepest gap " << penetration
+            << "; largest |energy balance| / E0 "
             << worst_balance / initial_energy << std::endl;
-  check_relative(duration, 2. * L / c, 0.02, "contact duration against 2 L / c");
+  check_relative(duration,
+                 2. * L / c,
+                 0.02,
+                 "contact duration against 2 L / c");
   check_relative(mean_pressure, rho * c * v0, 0.02, "mean contact pressure");
   check(worst <= 0.05,
         "the contact force rings: it departs from rho c v0 A by 5 % "
@@ -136,23 +139,23 @@ GLISSADE_TEST(dynamics_bar_impact_closed_forms)
 // impact is printed.
 GLISSADE_TEST(dynamics_two_disks_conserve_momentum)
 {
-  Simulation simulation(SceneReader::read_file(
-    source_path("prm/two_disks.prm"),
-    {"Output/Progress=false",
-     "Output/VTU interval=0",
-     "Output/Directory=dynamics_two_disks"}));
+  Simulation simulation(
+    SceneReader::read_file(source_path("prm/two_disks.prm"),
+                           {"Output/Progress=false",
+                            "Output/VTU interval=0",
+                            "Output/Directory=dynamics_two_disks"}));
   double worst = 0., scale = 0., largest_force = 0.;
   double energy_before = 0., energy_after = 0.;
   simulation.on_increment = [&](unsigned int, double) {
     const auto left  = simulation.body("left").inertia()->momentum();
     const auto right = simulation.body("right").inertia()->momentum();
     scale            = std::max(scale, std::abs(left[0]));
-    worst            = std::max({worst,
-                      std::abs(left[0] + right[0]),
-                      std::abs(left[1] + right[1])});
-    largest_force    = std::max(
-      largest_force,
-      std::abs(simulation.contact().contact_pairs()[0]->total_force()[0]));
+    worst            = std::max(
+      {worst, std::abs(left[0] + right[0]), std::abs(left[1] + right[1])});
+    largest_force =
+      std::max(largest_force,
+               std::abs(
+                 simulation.contact().contact_pairs()[0]->total_force()[0]));
     const EnergyAccount &e = *simulation.energies();
     if (energy_before == 0.)
       energy_before = e.kinetic + e.strain;
@@ -160,14 +163,63 @@ GLISSADE_TEST(dynamics_two_disks_conserve_momentum)
   };
   simulation.run();
   const double left_after = simulation.body("left").inertia()->momentum()[0];
-  std::cout << std::setprecision(6) << "  largest |p_left + p_right| "
-            << worst << " of |p| " << scale << "; largest contact force "
-            << largest_force << "; left disk's momentum after "
-            << left_after << "; energy " << energy_before << " -> "
-            << energy_after << " (drift "
-            << (energy_after - energy_before) / energy_before << ")"
-            << std::endl;
+  std::cout << std::setprecision(6) << "  largest |p_left + p_right| " << worst
+            << " of |p| " << scale << "; largest contact force "
+            << largest_force << "; left disk's momentum after " << left_after
+            << "; energy " << energy_before << " -> " << energy_after
+            << " (drift " << (energy_after - energy_before) / energy_before
+            << ")" << std::endl;
   check(largest_force > 0., "the disks never touched");
   check(worst <= 1e-12 * scale, "the total momentum is not conserved");
   check(left_after < -0.9 * scale, "the left disk did not bounce back");
+}
+
+// Hertz's impact, axisymmetric (prm/sphere_impact.prm): an elastic sphere
+// (R = 1, E = 200, nu = 0.3, rho = 1) hitting a rigid flat at v0 = 0.0042.
+// Quasi-statically loaded Hertz contact on a rigid sphere gives the
+// contact time t_c = 2.868 (m^2 / (R E*^2 v0))^(1/5) and the peak force
+// 4/3 E* sqrt(R) d^(3/2), d = (15 m v0^2 / (16 E* sqrt(R)))^(2/5); the
+// impact lasts 12 times the wave transit 2 R / c, so the sphere is nearly
+// rigid and both hold within 3 %. The sphere leaves at v0 (momentum within
+// 1 %) and the energy balance closes.
+GLISSADE_TEST(dynamics_sphere_impact_hertz)
+{
+  const double R = 1., E = 200., nu = 0.3, rho = 1., v0 = 0.0042, dt = 0.01;
+  const double m      = 4. / 3. * M_PI * R * R * R * rho;
+  const double E_star = E / (1. - nu * nu);
+  const double t_c = 2.868 * std::pow(m * m / (R * E_star * E_star * v0), 0.2);
+  const double approach =
+    std::pow(15. * m * v0 * v0 / (16. * E_star * std::sqrt(R)), 0.4);
+  const double peak = 4. / 3. * E_star * std::sqrt(R) * std::pow(approach, 1.5);
+
+  Simulation simulation(
+    SceneReader::read_file(source_path("prm/sphere_impact.prm"),
+                           {"Output/Progress=false",
+                            "Output/VTU interval=0",
+                            "Output/Directory=dynamics_sphere_impact"}));
+  double first = -1., last = -1., largest = 0., balance = 0.;
+  simulation.on_increment = [&](unsigned int, double t) {
+    const double f = simulation.contact().contact_pairs()[0]->total_force()[1];
+    if (f > 1e-12)
+      {
+        if (first < 0.)
+          first = t;
+        last = t;
+      }
+    largest = std::max(largest, f);
+    balance = std::max(balance, std::abs(simulation.energies()->balance()));
+  };
+  simulation.run();
+  const double duration = last - first + dt;
+  const double leaving = simulation.body("sphere").inertia()->momentum()[1] / m;
+  std::cout << std::setprecision(6) << "  contact " << duration << " (Hertz "
+            << t_c << "), peak force " << largest << " (Hertz " << peak
+            << "), velocity after " << leaving << " (v0 " << v0
+            << "), largest |energy balance| " << balance << " of "
+            << 0.5 * m * v0 * v0 << std::endl;
+  check_relative(duration, t_c, 0.03, "contact time against Hertz's");
+  check_relative(largest, peak, 0.03, "peak force against Hertz's");
+  check_relative(leaving, v0, 0.01, "velocity after the impact");
+  check(balance <= 1e-6 * 0.5 * m * v0 * v0,
+        "the energy balance does not close");
 }

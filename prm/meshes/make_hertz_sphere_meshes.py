@@ -8,7 +8,10 @@ paired by Blossom). Physical groups: arc (the sphere's surface), axis,
 top (the equatorial plane), sphere.
 
 - hertz_sphere_upper.msh: the sphere above the plane, centre (0, 1);
-- hertz_sphere_lower.msh: its mirror below, centre (0, -1).
+- hertz_sphere_lower.msh: its mirror below, centre (0, -1);
+- hertz_sphere_whole.msh: the whole sphere's meridian, the half disk
+  x >= 0 of centre (0, 1) (prm/sphere_impact.prm), its arc the whole
+  surface.
 
 Needs Gmsh's Python module (Debian: python3-gmsh, in /usr/bin/python3).
 Run from prm/meshes: /usr/bin/python3 make_hertz_sphere_meshes.py
@@ -20,25 +23,8 @@ import gmsh
 H_CONTACT, FINE, FAR, COARSE = 0.0025, 0.08, 1.5, 0.08
 
 
-def write(path, side):
-    gmsh.initialize(readConfigFiles=False)
-    gmsh.option.setNumber("General.Terminal", 0)
-    gmsh.model.add("sphere")
-    geo = gmsh.model.geo
-    contact = geo.addPoint(0, 0, 0)
-    centre = geo.addPoint(0, side, 0)
-    equator = geo.addPoint(1, side, 0)
-    arc = geo.addCircleArc(contact, centre, equator)
-    top = geo.addLine(equator, centre)
-    axis = geo.addLine(centre, contact)
-    # counter-clockwise in both: the lower sphere's loop runs backwards
-    loop = geo.addCurveLoop([arc, top, axis] if side > 0 else [-axis, -top, -arc])
-    sphere = geo.addPlaneSurface([loop])
-    geo.synchronize()
-    for dim, tag, name, number in ((1, arc, "arc", 1), (1, axis, "axis", 2),
-                                   (1, top, "top", 3), (2, sphere, "sphere", 4)):
-        gmsh.model.addPhysicalGroup(dim, [tag], number)
-        gmsh.model.setPhysicalName(dim, number, name)
+def mesh_and_write(contact, path):
+    """Meshes the model, graded from the contact point, and writes it."""
     field = gmsh.model.mesh.field
     distance = field.add("Distance")
     field.setNumbers(distance, "PointsList", [contact])
@@ -69,5 +55,53 @@ def write(path, side):
     open(path, "w").write(head + "\n".join(out) + "\n" + tail)
 
 
+def write(path, side):
+    """The quarter disk of centre (0, side): the hemisphere touching y = 0."""
+    gmsh.initialize(readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add("sphere")
+    geo = gmsh.model.geo
+    contact = geo.addPoint(0, 0, 0)
+    centre = geo.addPoint(0, side, 0)
+    equator = geo.addPoint(1, side, 0)
+    arc = geo.addCircleArc(contact, centre, equator)
+    top = geo.addLine(equator, centre)
+    axis = geo.addLine(centre, contact)
+    # counter-clockwise in both: the lower sphere's loop runs backwards
+    loop = geo.addCurveLoop([arc, top, axis] if side > 0 else [-axis, -top, -arc])
+    sphere = geo.addPlaneSurface([loop])
+    geo.synchronize()
+    for dim, tag, name, number in ((1, arc, "arc", 1), (1, axis, "axis", 2),
+                                   (1, top, "top", 3), (2, sphere, "sphere", 4)):
+        gmsh.model.addPhysicalGroup(dim, [tag], number)
+        gmsh.model.setPhysicalName(dim, number, name)
+    mesh_and_write(contact, path)
+
+
+def write_whole(path):
+    """The whole sphere's meridian: the half disk x >= 0 of centre (0, 1),
+    its arc from the contact point (0, 0) round to (0, 2)."""
+    gmsh.initialize(readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add("sphere")
+    geo = gmsh.model.geo
+    contact = geo.addPoint(0, 0, 0)
+    centre = geo.addPoint(0, 1, 0)
+    equator = geo.addPoint(1, 1, 0)
+    pole = geo.addPoint(0, 2, 0)
+    lower = geo.addCircleArc(contact, centre, equator)
+    upper = geo.addCircleArc(equator, centre, pole)
+    axis = geo.addLine(pole, contact)
+    sphere = geo.addPlaneSurface([geo.addCurveLoop([lower, upper, axis])])
+    geo.synchronize()
+    for dim, tags, name, number in ((1, [lower, upper], "arc", 1),
+                                    (1, [axis], "axis", 2),
+                                    (2, [sphere], "sphere", 4)):
+        gmsh.model.addPhysicalGroup(dim, tags, number)
+        gmsh.model.setPhysicalName(dim, number, name)
+    mesh_and_write(contact, path)
+
+
 write("hertz_sphere_upper.msh", 1.0)
 write("hertz_sphere_lower.msh", -1.0)
+write_whole("hertz_sphere_whole.msh")
