@@ -428,6 +428,9 @@ namespace glissade
                                          *element_space,
                                          time,
                                          point_loads);
+    // (a Moreau-Jean step carries its start state's forces as loads)
+    if (inertia_terms)
+      point_loads += inertia_terms->step_forces();
     unconstrained_residual -= point_loads;
     {
       std::vector<types::global_dof_index> index(1);

@@ -41,7 +41,8 @@ namespace glissade
           for (unsigned int i = 0; i < n; ++i)
             if (component[i] == c)
               {
-                const double d = diagonal > 0. ? m(i, i) * total / diagonal : 0.;
+                const double d =
+                  diagonal > 0. ? m(i, i) * total / diagonal : 0.;
                 for (unsigned int j = 0; j < n; ++j)
                   m(i, j) = 0.;
                 m(i, i) = d;
@@ -52,8 +53,8 @@ namespace glissade
 
 
 
-  BodyInertia::BodyInertia(const Body                    &body,
-                           const TimeIntegrationSettings &settings,
+  BodyInertia::BodyInertia(const Body                              &body,
+                           const TimeIntegrationSettings           &settings,
                            const std::set<types::global_dof_index> &massless,
                            const std::string                       &where)
     : settings(settings)
@@ -68,8 +69,8 @@ namespace glissade
                          "Mass = consistent");
     const bool axisymmetric =
       body.hypothesis() == PlaneHypothesis::axisymmetric;
-    auto evaluator = space.create_evaluator();
-    const unsigned int        n = evaluator->dofs_per_cell();
+    auto                      evaluator = space.create_evaluator();
+    const unsigned int        n         = evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = evaluator->displacement_component(i);
@@ -133,10 +134,11 @@ namespace glissade
       }
     v.reinit(body.n_dofs());
     a.reinit(body.n_dofs());
+    old_forces.reinit(body.n_dofs());
     // The unit translations: every value dof of a component at 1 (a
     // Hermite body's derivative dofs at 0).
-    const unsigned int     per_dim = space.components_per_displacement();
-    const FiniteElement<2> &fe     = body.dof_handler().get_fe();
+    const unsigned int      per_dim = space.components_per_displacement();
+    const FiniteElement<2> &fe      = body.dof_handler().get_fe();
     for (unsigned int c = 0; c < 2; ++c)
       translation[c].reinit(body.n_dofs());
     for (unsigned int k = 0; k < cell_dofs.size(); ++k)
@@ -157,8 +159,8 @@ namespace glissade
     // v there, a Hermite derivative dof the derivative of v (by a central
     // difference of the expressions, exact for the linear fields of rigid
     // motions and uniform velocities).
-    const auto &description = body.description_of_body();
-    FunctionParser<2> velocity(2);
+    const auto                   &description = body.description_of_body();
+    FunctionParser<2>             velocity(2);
     std::map<std::string, double> constants = {{"pi", M_PI}};
     try
       {
@@ -195,10 +197,10 @@ namespace glissade
             else
               {
                 Tensor<1, 2> e;
-                e[kind - 1]  = h;
-                v(local[i]) = (velocity.value(X + e, c) -
-                               velocity.value(X - e, c)) /
-                              (2. * h);
+                e[kind - 1] = h;
+                v(local[i]) =
+                  (velocity.value(X + e, c) - velocity.value(X - e, c)) /
+                  (2. * h);
               }
             if (!std::isfinite(v(local[i])))
               throw InputError(body.source_name() + ": Body " + body.name() +
@@ -243,6 +245,15 @@ namespace glissade
     solver.solve(a);
     homogeneous.distribute(a);
 
+    // Moreau-Jean's start-state loads: (1 - theta) / theta (F_ext -
+    // F_int)_0.
+    old_forces.reinit(body.n_dofs());
+    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
+      {
+        old_forces = residual;
+        old_forces *= (1. - settings.theta) / settings.theta;
+      }
+
     // The forces of the initial state, for the first step's work: F_ext +
     // F_support = M a_0 + F_int - F_c, F_int - F_ext being -residual.
     applied_before = apply_mass(a);
@@ -259,35 +270,43 @@ namespace glissade
   void
   BodyInertia::begin_step(const Vector<double> &u_n, const double dt)
   {
-    step        = dt;
+    step    = dt;
+    u_start = u_n;
+    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
+      {
+        const double theta = settings.theta;
+        u_predicted        = u_n;
+        u_predicted.add(dt, v);
+        v_predicted = v;
+        c_a         = 1. / (theta * theta * dt * dt);
+        c_v         = 1. / (theta * dt);
+        return;
+      }
     const double beta = settings.beta, gamma = settings.gamma;
-    u_start     = u_n;
     u_predicted = u_n;
     u_predicted.add(dt, v, dt * dt * (0.5 - beta), a);
     v_predicted = v;
     v_predicted.add((1. - gamma) * dt, a);
+    c_a = 1. / (beta * dt * dt);
+    c_v = gamma / (beta * dt);
   }
 
 
 
   void
-  BodyInertia::add_cell_terms(
-    const unsigned int                          cell,
-    const std::vector<types::global_dof_index> &dofs,
-    const Vector<double>                       &u,
-    FullMatrix<double>                         &cell_matrix,
-    Vector<double>                             &cell_rhs) const
+  BodyInertia::add_cell_terms(const unsigned int                          cell,
+                              const std::vector<types::global_dof_index> &dofs,
+                              const Vector<double>                       &u,
+                              FullMatrix<double> &cell_matrix,
+                              Vector<double>     &cell_rhs) const
   {
     // (no step yet: the assembly of the initial state, whose residual
     // gives the initial acceleration)
     if (step == 0.)
       return;
-    const double beta = settings.beta, gamma = settings.gamma;
-    const double c_a = 1. / (beta * step * step);
-    const double c_v = gamma / (beta * step);
-    const double a_M = settings.mass_damping;
-    const FullMatrix<double> &m = cell_mass[cell];
-    const unsigned int        n = dofs.size();
+    const double              a_M = settings.mass_damping;
+    const FullMatrix<double> &m   = cell_mass[cell];
+    const unsigned int        n   = dofs.size();
     // M (a(u) + a_M v(u)) = M ((c_a + a_M c_v) (u - u~) + a_M v~)
     Vector<double> x(n);
     for (unsigned int j = 0; j < n; ++j)
@@ -307,12 +326,15 @@ namespace glissade
   void
   BodyInertia::accept_step(const Body &body, EnergyAccount &account)
   {
-    const Vector<double> &u    = body.displacement();
-    const double          beta = settings.beta, gamma = settings.gamma;
+    const Vector<double> &u = body.displacement();
+    const bool            moreau_jean =
+      settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean;
+    const Vector<double> v_start = v;
     for (types::global_dof_index i = 0; i < u.size(); ++i)
       {
-        a(i) = (u(i) - u_predicted(i)) / (beta * step * step);
-        v(i) = v_predicted(i) + gamma * step * a(i);
+        v(i) = v_predicted(i) + c_v * (u(i) - u_predicted(i));
+        a(i) = moreau_jean ? (v(i) - v_start(i)) / step :
+                             c_a * (u(i) - u_predicted(i));
       }
     // M a + C v + F_int = F_ext + F_c + F_support, and the last assembly
     // was the converged state's: F_ext + F_support = (F_int + M a + C v -
@@ -320,6 +342,7 @@ namespace glissade
     Vector<double> applied = body.unbalanced_forces();
     applied += body.applied_loads();
     applied -= body.get_contact_forces();
+    applied -= old_forces; // (Moreau-Jean's start-state forces: not loads)
     Vector<double> damping = apply_mass(v);
     damping *= settings.mass_damping;
     Vector<double> du = u;
@@ -335,6 +358,22 @@ namespace glissade
     applied_before = applied;
     contact_before = body.get_contact_forces();
     damping_before = damping;
+    if (moreau_jean)
+      {
+        // f_n+1 = F_ext - F_int at the end state, from the converged
+        // assembly's unbalanced forces F_int + M (a + a_M v) - F_ext -
+        // (1 - theta) / theta f_n, on every dof.
+        const double   theta = settings.theta;
+        Vector<double> inertia(u.size());
+        for (types::global_dof_index i = 0; i < u.size(); ++i)
+          inertia(i) =
+            c_a * (u(i) - u_predicted(i)) + settings.mass_damping * v(i);
+        Vector<double> f = apply_mass(inertia);
+        f -= old_forces;
+        f -= body.unbalanced_forces();
+        old_forces = f;
+        old_forces *= (1. - theta) / theta;
+      }
   }
 
 

@@ -358,7 +358,7 @@ namespace glissade
     for (const auto &node : slave_nodes)
       if (node.active)
         sum += node.force();
-    return sum;
+    return reported_force_scale * sum;
   }
 
 

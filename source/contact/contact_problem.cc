@@ -279,8 +279,9 @@ namespace glissade
       return correct_sparse(increments);
 
     // Nodes that the free step would take behind the master join now,
-    // linearised at the current state like the others (update_state()).
-    if (activate_nodes_crossed_by(increments) > 0)
+    // linearised at the current state like the others (update_state());
+    // under a velocity law the integrator chose the step's nodes.
+    if (!velocity_law && activate_nodes_crossed_by(increments) > 0)
       {
         TimerOutput::Scope scope(timer, timing::detection);
         for (auto &pair : pairs)
@@ -370,7 +371,8 @@ namespace glissade
               active.push_back(&node);
               nodes.friction.push_back(
                 cone_slope(pair->settings().friction, l.vertex_cone));
-              nodes.initial.push_back({{l.slip, l.gap}});
+              nodes.initial.push_back(
+                {{l.slip + node.law_shift[0], l.gap + node.law_shift[1]}});
               nodes.forces.push_back({&l.tangential_force, b});
               nodes.forces.push_back({&l.normal_force, b});
               nodes.rows.push_back({&l.slip_row, b});

@@ -103,7 +103,9 @@ namespace glissade
     for (unsigned int k = 0; k < n; ++k)
       {
         const ContactNode &node = nodes[k];
-        const Tensor<1, 2> f    = node.active ? node.force() : Tensor<1, 2>();
+        const Tensor<1, 2> f =
+          node.active ? pair.reported_force(node) : Tensor<1, 2>();
+        const std::array<double, 2> r = pair.reported_reaction(node);
         table.stream() << node.reference_position[0] << ','
                        << node.reference_position[1] << ',' << x[k][0] << ','
                        << x[k][1] << ',' << node.active << ',';
@@ -111,11 +113,9 @@ namespace glissade
         // stays empty rather than repeating its last projection's.
         if (node.projected)
           table.stream() << node.gap;
-        table.stream() << ',' << node.reaction[0] << ',' << node.reaction[1]
-                       << ',' << f[0] << ',' << f[1] << ','
-                       << status_of(node).first << ','
-                       << per_area(k, node.reaction[1]) << ','
-                       << per_area(k, node.reaction[0]) << ','
+        table.stream() << ',' << r[0] << ',' << r[1] << ',' << f[0] << ','
+                       << f[1] << ',' << status_of(node).first << ','
+                       << per_area(k, r[1]) << ',' << per_area(k, r[0]) << ','
                        << (node.active ? node.linearization.slip : 0.) << ','
                        << length[k] << '\n';
       }
@@ -154,12 +154,13 @@ namespace glissade
         out << value(k) << '\n';
       out << "</DataArray>\n";
     };
-    scalar("pressure",
-           [&](unsigned int k) { return per_area(k, nodes[k].reaction[1]); });
-    scalar("shear",
-           [&](unsigned int k) { return per_area(k, nodes[k].reaction[0]); });
-    scalar("r_n", [&](unsigned int k) { return nodes[k].reaction[1]; });
-    scalar("r_t", [&](unsigned int k) { return nodes[k].reaction[0]; });
+    const auto r = [&](const unsigned int k, const unsigned int c) {
+      return pair.reported_reaction(nodes[k])[c];
+    };
+    scalar("pressure", [&](unsigned int k) { return per_area(k, r(k, 1)); });
+    scalar("shear", [&](unsigned int k) { return per_area(k, r(k, 0)); });
+    scalar("r_n", [&](unsigned int k) { return r(k, 1); });
+    scalar("r_t", [&](unsigned int k) { return r(k, 0); });
     // No gap without a counterpart: 0 there, and status says why.
     scalar("gap", [&](unsigned int k) {
       return nodes[k].projected ? nodes[k].gap : 0.;
@@ -175,7 +176,7 @@ namespace glissade
     for (unsigned int k = 0; k < n; ++k)
       {
         const Tensor<1, 2> f =
-          nodes[k].active ? nodes[k].force() : Tensor<1, 2>();
+          nodes[k].active ? pair.reported_force(nodes[k]) : Tensor<1, 2>();
         out << f[0] << ' ' << f[1] << " 0\n";
       }
     out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"

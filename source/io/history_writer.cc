@@ -132,10 +132,11 @@ namespace glissade
               columns.push_back(identifier(args[0]) + "_" + q + "_" +
                                 location_identifier(args[1]));
             evaluators.emplace_back([pair, X](std::vector<double> &row) {
-              const ContactNode &node = pair->node_at(X);
-              row.push_back(node.reaction[1]);
-              row.push_back(node.reaction[0]);
-              row.push_back(node.force().norm());
+              const ContactNode          &node = pair->node_at(X);
+              const std::array<double, 2> r    = pair->reported_reaction(node);
+              row.push_back(r[1]);
+              row.push_back(r[0]);
+              row.push_back(pair->reported_force(node).norm());
               row.push_back(node.gap);
             });
             continue;

@@ -21,7 +21,7 @@ namespace glissade
     prm.declare_entry(
       "Scheme",
       "quasi-static",
-      Patterns::Selection("quasi-static|newmark"),
+      Patterns::Selection("quasi-static|newmark|moreau-jean"),
       "quasi-static: no inertia, the load program's t a load parameter "
       "(every scene before dynamics). newmark: Newmark's implicit scheme on "
       "the bodies' inertia (Material/Density), the load program's "
@@ -29,7 +29,16 @@ namespace glissade
       "step of the quasi-static scheme on the dynamic tangent K + M / "
       "(beta dt^2); with the contact nodes' mass redistributed (Contact "
       "mass) the contact pressure does not chatter and the energy stays "
-      "under control (doc/theory.md, 'Dynamics').");
+      "under control. moreau-jean: Moreau and Jean's theta-method, the "
+      "contact law (bi-potential, Coulomb) on the end velocities and the "
+      "step's impulses, for the nodes that close within the step "
+      "(doc/theory.md, 'Dynamics').");
+    prm.declare_entry("Theta",
+                      "0.5",
+                      Patterns::Double(0.5, 1.),
+                      "Moreau-Jean's theta, in [1/2, 1]: 1/2 conserves the "
+                      "energy of a smooth motion, 1 (implicit Euler) damps "
+                      "it.");
     prm.declare_entry("Newmark beta",
                       "0.25",
                       Patterns::Double(0., 0.5),
@@ -73,11 +82,16 @@ namespace glissade
   {
     prm.enter_subsection("Time integration");
     const std::string where = prm.file() + ": Time integration/";
-    scheme       = prm.get("Scheme") == "newmark" ? Scheme::newmark :
-                                                    Scheme::quasi_static;
-    beta         = prm.get_double("Newmark beta");
-    gamma        = prm.get_double("Newmark gamma");
-    lumped_mass  = prm.get("Mass") == "lumped";
+    {
+      const std::string name = prm.get("Scheme");
+      scheme                 = name == "newmark"     ? Scheme::newmark :
+                               name == "moreau-jean" ? Scheme::moreau_jean :
+                                                       Scheme::quasi_static;
+    }
+    theta                     = prm.get_double("Theta");
+    beta                      = prm.get_double("Newmark beta");
+    gamma                     = prm.get_double("Newmark gamma");
+    lumped_mass               = prm.get("Mass") == "lumped";
     redistribute_contact_mass = prm.get("Contact mass") == "redistributed";
     mass_damping              = prm.get_double("Mass damping");
     prm.leave_subsection();

@@ -187,7 +187,8 @@ namespace glissade
         // not active (beyond the alert distance at the start of the
         // increment) is not a solution: iterate on with that node.
         const unsigned int newly_active =
-          converged && !contact_problem->empty() ?
+          converged && !contact_problem->empty() &&
+              contact_problem->position_law() ?
             contact_problem->activate_penetrating_nodes() :
             0;
         if (converged && newly_active == 0)

@@ -34,15 +34,17 @@ namespace glissade
 
 
     /**
-     * Newmark's implicit scheme (BodyInertia has the formulas): each body's
-     * inertia terms in its assembly, the contact step unchanged on the
-     * dynamic tangent.
+     * A scheme with inertia: each body gets a BodyInertia (the scheme's
+     * formulas are there), whose terms its assembly adds; the contact step
+     * works unchanged on the dynamic tangent. Newmark (the default law on
+     * positions) and Moreau-Jean (the law on velocities) differ in which
+     * nodes a step enforces and on what (begin_contact_step()).
      */
-    class Newmark : public TimeIntegrator
+    class WithInertia : public TimeIntegrator
     {
     public:
-      Newmark(const SceneDescription                   &scene,
-              const std::vector<std::unique_ptr<Body>> &bodies)
+      WithInertia(const SceneDescription                   &scene,
+                  const std::vector<std::unique_ptr<Body>> &bodies)
         : scene(scene)
         , bodies(bodies)
       {
@@ -59,22 +61,21 @@ namespace glissade
       void
       attach(const ContactProblem &contact_problem) override
       {
-        contact = &contact_problem;
-        const ContactProblem &contact = contact_problem;
+        contact = const_cast<ContactProblem *>(&contact_problem);
         for (const auto &body : bodies)
           {
             // The dofs the contact pairs touch: the redistributed mass
             // takes theirs away.
             std::set<types::global_dof_index> massless;
-            for (const auto &pair :
-                 const_cast<ContactProblem &>(contact).contact_pairs())
+            for (const auto &pair : contact->contact_pairs())
               for (const auto dof : pair->contact_dofs(*body))
                 massless.insert(dof);
-            body->set_inertia(std::make_unique<BodyInertia>(
-              *body,
-              scene.time_integration,
-              massless,
-              scene.source + ": Body " + body->name()));
+            body->set_inertia(
+              std::make_unique<BodyInertia>(*body,
+                                            scene.time_integration,
+                                            massless,
+                                            scene.source + ": Body " +
+                                              body->name()));
           }
       }
 
@@ -101,6 +102,7 @@ namespace glissade
       {
         for (const auto &body : bodies)
           body->inertia()->begin_step(body->displacement(), t - t_start);
+        begin_contact_step(t - t_start);
       }
 
       void
@@ -110,12 +112,11 @@ namespace glissade
           body->inertia()->accept_step(*body, account);
         // Friction dissipates - r_t times the slip of the step at each
         // node in contact (the slip since the step began, along t).
-        for (const auto &pair :
-             const_cast<ContactProblem *>(contact)->contact_pairs())
+        for (const auto &pair : contact->contact_pairs())
           for (const ContactNode &node : pair->nodes())
             if (node.active)
               account.friction_dissipation -=
-                node.reaction[0] * node.linearization.slip;
+                pair->reported_reaction(node)[0] * node.linearization.slip;
         measure_energies();
       }
 
@@ -124,6 +125,15 @@ namespace glissade
       {
         return &account;
       }
+
+    protected:
+      /** After the detection of a step of length dt. */
+      virtual void
+      begin_contact_step(const double dt) = 0;
+
+      const SceneDescription                   &scene;
+      const std::vector<std::unique_ptr<Body>> &bodies;
+      ContactProblem                           *contact = nullptr;
 
     private:
       void
@@ -137,10 +147,95 @@ namespace glissade
           }
       }
 
-      const SceneDescription                   &scene;
-      const std::vector<std::unique_ptr<Body>> &bodies;
-      const ContactProblem                     *contact = nullptr;
-      EnergyAccount                             account;
+      EnergyAccount account;
+    };
+
+
+
+    /**
+     * Newmark's implicit scheme: the contact law on the end positions,
+     * every node within the alert distance (the quasi-static step's).
+     */
+    class Newmark : public WithInertia
+    {
+    public:
+      using WithInertia::WithInertia;
+
+    protected:
+      void
+      begin_contact_step(const double) override
+      {}
+    };
+
+
+
+    /**
+     * Moreau and Jean's theta-method (Jean 1999; Feng, Joli, Cros &
+     * Magnain 2005 with the bi-potential local solver): the contact law on
+     * the end velocities and the step's impulses, for the nodes whose gap
+     * closes by the step's theta point, g_n + (1 - theta) dt U_N <= 0. With
+     * U = H v_n the relative velocity at the start, the end velocity's
+     * law is the position law shifted: U_N,n+1 >= 0 is g(u) - g_n - (1 -
+     * theta) dt U_N,n >= 0 to first order, and the slip velocity is that
+     * of slip - (1 - theta) dt U_T,n. A node that does not close is out of
+     * the step (it may go behind the master within it, by less than dt
+     * times its speed; the next step stops it).
+     */
+    class MoreauJean : public WithInertia
+    {
+    public:
+      MoreauJean(const SceneDescription                   &scene,
+                 const std::vector<std::unique_ptr<Body>> &bodies)
+        : WithInertia(scene, bodies)
+      {}
+
+      void
+      attach(const ContactProblem &contact_problem) override
+      {
+        WithInertia::attach(contact_problem);
+        contact->use_velocity_law();
+        // The local problem's unknown is the step's impulse over theta
+        // dt; the outputs report the mean force, the impulse over dt.
+        for (const auto &pair : contact->contact_pairs())
+          pair->report_forces_scaled_by(scene.time_integration.theta);
+      }
+
+    protected:
+      void
+      begin_contact_step(const double dt) override
+      {
+        const double theta = scene.time_integration.theta;
+        for (const auto &pair : contact->contact_pairs())
+          {
+            const std::array<const Body *, 2> body = {
+              {&pair->slave(), pair->master()}};
+            const auto velocity_along = [&](const DofVector &row) {
+              double value = 0.;
+              for (const DofCoefficient &e : row)
+                if (body[e.body] != nullptr)
+                  value += e.value * body[e.body]->inertia()->velocity()(e.dof);
+              return value;
+            };
+            for (ContactNode &node : pair->nodes())
+              {
+                node.law_shift = {{0., 0.}};
+                if (!node.active)
+                  continue;
+                const ContactLinearization &l   = node.linearization;
+                const double                U_N = velocity_along(l.gap_row);
+                const double                U_T = velocity_along(l.slip_row);
+                if (l.gap + (1. - theta) * dt * U_N > 0.)
+                  {
+                    node.active   = false;
+                    node.reaction = {{0., 0.}};
+                    node.status   = BiPotentialSolver::NodeStatus::open;
+                    continue;
+                  }
+                node.law_shift = {
+                  {-(1. - theta) * dt * U_T, -l.gap - (1. - theta) * dt * U_N}};
+              }
+          }
+      }
     };
   } // namespace
 
@@ -154,6 +249,8 @@ namespace glissade
       {
         case TimeIntegrationSettings::Scheme::newmark:
           return std::make_unique<Newmark>(scene, bodies);
+        case TimeIntegrationSettings::Scheme::moreau_jean:
+          return std::make_unique<MoreauJean>(scene, bodies);
         case TimeIntegrationSettings::Scheme::quasi_static:
           break;
       }

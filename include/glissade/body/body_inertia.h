@@ -4,8 +4,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <glissade/description/scene_description.h>
 #include <glissade/body/energy_account.h>
+#include <glissade/description/scene_description.h>
 
 #include <array>
 #include <set>
@@ -21,6 +21,13 @@ namespace glissade
    * cell by cell, its velocity and acceleration, and the terms Newmark's
    * scheme adds to the body's residual and tangent at each Newton
    * iteration of a time step.
+   *
+   * Moreau-Jean's theta-method, from (u_n, v_n) over a step dt: u_n+1 =
+   * u_n + dt (theta v_n+1 + (1 - theta) v_n) and M (v_n+1 - v_n) = dt
+   * (theta f_n+1 + (1 - theta) f_n) + P, f = F_ext - F_int, divided by
+   * theta dt: the inertia force M (u - u~) / (theta dt)^2 with u~ = u_n +
+   * dt v_n, the start state's forces (1 - theta) / theta f_n as loads
+   * (step_forces()), and the contact force P / (theta dt).
    *
    * Newmark, from the state (u_n, v_n, a_n) over a step dt: with the
    * predictors u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n and v~ = v_n +
@@ -49,10 +56,10 @@ namespace glissade
      * `massless` are the dofs on a contact boundary (redistributed mass);
      * `where` names the body for messages.
      */
-    BodyInertia(const Body                                 &body,
-                const TimeIntegrationSettings              &settings,
+    BodyInertia(const Body                                      &body,
+                const TimeIntegrationSettings                   &settings,
                 const std::set<dealii::types::global_dof_index> &massless,
-                const std::string                          &where);
+                const std::string                               &where);
 
     /**
      * The velocity at t = 0 from the body's Initial velocity, and the
@@ -68,12 +75,22 @@ namespace glissade
     begin_step(const dealii::Vector<double> &u_n, const double dt);
 
     /**
+     * Forces of the start state that the step's equation carries as loads:
+     * Moreau-Jean's (1 - theta) / theta (F_ext - F_int)_n; none for Newmark.
+     */
+    const dealii::Vector<double> &
+    step_forces() const
+    {
+      return old_forces;
+    }
+
+    /**
      * The inertia terms of one cell at the displacement u: the cell's
      * residual loses M (a(u) + a_M v(u)) and its tangent gains (1 / (beta
      * dt^2) + a_M gamma / (beta dt)) M.
      */
     void
-    add_cell_terms(const unsigned int                                 cell,
+    add_cell_terms(const unsigned int                                  cell,
                    const std::vector<dealii::types::global_dof_index> &dofs,
                    const dealii::Vector<double>                       &u,
                    dealii::FullMatrix<double> &cell_matrix,
@@ -125,7 +142,8 @@ namespace glissade
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       // clang-format off
-      archive & v & a & applied_before & contact_before & damping_before;
+      archive & v & a & applied_before & contact_before & damping_before
+              & old_forces;
       // clang-format on
     }
 
@@ -134,7 +152,7 @@ namespace glissade
     dealii::Vector<double>
     apply_mass(const dealii::Vector<double> &x) const;
 
-    const TimeIntegrationSettings                         settings;
+    const TimeIntegrationSettings                             settings;
     std::vector<std::vector<dealii::types::global_dof_index>> cell_dofs;
     /** Each cell's mass matrix (diagonal when lumped or redistributed). */
     std::vector<dealii::FullMatrix<double>> cell_mass;
@@ -142,7 +160,12 @@ namespace glissade
     dealii::Vector<double>                  u_start, u_predicted, v_predicted;
     /** The unit translations along x and y (value dofs at 1). */
     std::array<dealii::Vector<double>, 2> translation;
-    double                                  step = 0.;
+    double                                step = 0.;
+    /** The end state's a and v from its u: a = c_a (u - u~) (Newmark), v =
+     *  v~ + c_v (u - u~) (both schemes). */
+    double c_a = 0., c_v = 0.;
+    /** Moreau-Jean: (1 - theta) / theta (F_ext - F_int)_n. */
+    dealii::Vector<double> old_forces;
     /** The forces of the last accepted state, for the next step's work:
      *  loads and supports, contact, damping. */
     dealii::Vector<double> applied_before, contact_before, damping_before;

@@ -50,6 +50,13 @@ namespace glissade
      * solve augmented (ContactProblem): the next starts from them.
      */
     std::array<bool, 2> augmented = {{false, false}};
+    /**
+     * What the local problem adds to this node's (slip, gap) in the current
+     * step: zero for the position-level law; a velocity-level law (Moreau-
+     * Jean) shifts them so that the law holds on the end velocity
+     * (TimeIntegrator).
+     */
+    std::array<double, 2> law_shift = {{0., 0.}};
 
     /**
      * Gap, slip, their derivatives, the forces of the reaction and the
@@ -218,7 +225,31 @@ namespace glissade
     std::vector<dealii::types::global_dof_index>
     contact_dofs(const Body &body) const;
 
-    /** Sum of the forces on the slave nodes (global frame). */
+    /**
+     * What the outputs report of a node's reaction and force: the local
+     * problem's own (the contact force of the step's equation), times a
+     * scale that a time integrator sets when its unknown is not the
+     * physical force (Moreau-Jean's is the impulse over theta dt: the mean
+     * force of the step is theta times it).
+     */
+    void
+    report_forces_scaled_by(const double scale)
+    {
+      reported_force_scale = scale;
+    }
+    std::array<double, 2>
+    reported_reaction(const ContactNode &node) const
+    {
+      return {{reported_force_scale * node.reaction[0],
+               reported_force_scale * node.reaction[1]}};
+    }
+    dealii::Tensor<1, 2>
+    reported_force(const ContactNode &node) const
+    {
+      return reported_force_scale * node.force();
+    }
+
+    /** Sum of the forces on the slave nodes (global frame), as reported. */
     dealii::Tensor<1, 2>
     total_force() const;
 
@@ -236,6 +267,8 @@ namespace glissade
     contact_forces() const;
 
   private:
+    double reported_force_scale = 1.;
+
     /**
      * Projects one slave node at the current state and linearises it;
      * false if it has no counterpart. With `keep_segment`, the node keeps

@@ -119,7 +119,28 @@ namespace glissade
       return pairs;
     }
 
+    /**
+     * The contact law on the end velocities of a step (Moreau-Jean's, with
+     * each node's law_shift) instead of on its end position: the time
+     * integrator chooses which nodes take part in a step, so a node that
+     * goes behind the master is not pulled in within it.
+     */
+    void
+    use_velocity_law()
+    {
+      velocity_law = true;
+    }
+
+    /** False under a velocity-level law (use_velocity_law()). */
+    bool
+    position_law() const
+    {
+      return !velocity_law;
+    }
+
   private:
+    bool velocity_law = false;
+
     /**
      * The reactions r of the active nodes (warm start on entry), and the
      * condensed problem whose Newton step goes with them; nullptr if the

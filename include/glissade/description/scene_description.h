@@ -196,9 +196,12 @@ namespace glissade
     enum class Scheme
     {
       quasi_static,
-      newmark
+      newmark,
+      moreau_jean
     };
     Scheme scheme = Scheme::quasi_static;
+    /** Moreau-Jean's theta, in [1/2, 1]. */
+    double theta = 0.5;
     /** Newmark's beta and gamma (1/4, 1/2: the trapezoidal rule). */
     double beta  = 0.25;
     double gamma = 0.5;

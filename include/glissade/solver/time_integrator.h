@@ -1,9 +1,9 @@
 #pragma once
 
 #include <glissade/body/body.h>
+#include <glissade/body/energy_account.h>
 #include <glissade/contact/contact_problem.h>
 #include <glissade/description/scene_description.h>
-#include <glissade/body/energy_account.h>
 
 #include <memory>
 #include <vector>
