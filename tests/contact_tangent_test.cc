@@ -52,7 +52,8 @@ namespace
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
       " set Alert distance = 10\n";
-    if (master == "line" || master == "disk" || master == "hole")
+    if (master == "line" || master == "disk" || master == "hole" ||
+        master == "casing")
       {
         text += "subsection Scene\n set Bodies = upper\n"
                 " set Contact pairs = interface\nend\n";
@@ -62,6 +63,13 @@ namespace
           contact += "  set Point = 0, 0.49\n  set Normal = 0.1, 1\n";
         else if (master == "disk")
           contact += "  set Point = 0.5, -1.51\n  set Radius = 2\n";
+        else if (master == "casing")
+          // Two lobes 0.3 deep, turning: below the block the casing is
+          // between lobes, sloped and of changing curvature, its lowest
+          // point r(-pi/2) = 5 + 0.3 cos(0.4) under the centre at 0.49.
+          contact += "  set Point = 0.5, 5.766318\n  set Radius = 5\n"
+                     "  set Lobes = 2\n  set Lobe depth = 0.3\n"
+                     "  set Rotation = 0.2 + 0.05*t\n";
         else
           contact += "  set Point = 0.5, 5.49\n  set Radius = 5\n";
         contact += " end\n";
@@ -325,3 +333,6 @@ CONTACT_TANGENT_TEST(disk, slip)
 CONTACT_TANGENT_TEST(hole, frictionless)
 CONTACT_TANGENT_TEST(hole, stick)
 CONTACT_TANGENT_TEST(hole, slip)
+CONTACT_TANGENT_TEST(casing, frictionless)
+CONTACT_TANGENT_TEST(casing, stick)
+CONTACT_TANGENT_TEST(casing, slip)

@@ -65,7 +65,8 @@ namespace glissade
       d = r;
     else
       {
-        d = slave_motion - point.motion_since_step_start;
+        d       = slave_motion - point.motion_since_step_start;
+        d_prime = -point.motion_derivative;
         for (const auto &e : kinematics)
           if (e.body == 1)
             {

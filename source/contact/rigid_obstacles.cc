@@ -13,10 +13,13 @@ namespace glissade
   namespace
   {
     /**
-     * What the rigid obstacles share: no dofs, and a prescribed
-     * translation m(t) (`Obstacle/Motion`), whose change over the increment
-     * is the motion of the obstacle's material point that the slip is
-     * measured against.
+     * What the rigid obstacles share: no dofs, a prescribed translation
+     * m(t) of their reference point (`Obstacle/Motion`) and a rotation
+     * alpha(t) about it (`Obstacle/Rotation`, counterclockwise). The
+     * material point of the obstacle under a contact point moved, over the
+     * increment, from p_0 + R(alpha_0 - alpha)(x_c - p) to x_c: the motion
+     * the slip is measured against (a turning drum or casing rubs a node
+     * that stands still).
      */
     class RigidObstacle : public MasterSurface
     {
@@ -24,13 +27,16 @@ namespace glissade
       RigidObstacle(const ContactDescription &d)
         : reference_point(d.obstacle_point)
         , motion(d.obstacle_motion, d.entry + "/Obstacle/Motion")
+        , rotation({d.obstacle_rotation}, d.entry + "/Obstacle/Rotation")
       {}
 
       void
       update(const double step_start_time, const double time) override
       {
-        position    = reference_point + translation(time);
-        step_motion = translation(time) - translation(step_start_time);
+        position       = reference_point + translation(time);
+        start_position = reference_point + translation(step_start_time);
+        angle          = rotation_angle(time);
+        turn_in_step   = angle - rotation_angle(step_start_time);
       }
 
       std::vector<types::global_dof_index>
@@ -48,8 +54,9 @@ namespace glissade
     protected:
       /**
        * The point of a curve with the given closest point, normal and
-       * curvature vector c'' (the curve parametrised by arc length times
-       * `speed`): what the linearisation of the slave's sliding needs.
+       * derivatives: c' = `first_derivative` (along t, n = e3 x t) and
+       * c'' = `second_derivative`, what the linearisation of the slave's
+       * sliding needs.
        */
       SurfacePoint
       point(const Point<2>     &x,
@@ -67,13 +74,34 @@ namespace glissade
         p.first_derivative        = speed * p.tangent;
         p.second_derivative       = second_derivative;
         p.gap                     = (x - closest) * normal;
-        p.motion_since_step_start = step_motion;
+        p.motion_since_step_start = material_motion(closest);
+        // d/ds of c - p_0 - R(-turn) (c - p): c' - R(-turn) c'.
+        p.motion_derivative =
+          p.first_derivative - rotated(p.first_derivative, -turn_in_step);
         return p;
       }
 
+      /** x rotated by the angle a about the origin. */
+      static Tensor<1, 2>
+      rotated(const Tensor<1, 2> &x, const double a)
+      {
+        return Tensor<1, 2>({std::cos(a) * x[0] - std::sin(a) * x[1],
+                             std::sin(a) * x[0] + std::cos(a) * x[1]});
+      }
+
+      /** The reference point now, and the rotation angle now. */
       Point<2> position;
+      double   angle = 0.;
 
     private:
+      Tensor<1, 2>
+      material_motion(const Point<2> &closest) const
+      {
+        const Point<2> before =
+          start_position + rotated(closest - position, -turn_in_step);
+        return closest - before;
+      }
+
       Tensor<1, 2>
       translation(const double time) const
       {
@@ -82,10 +110,19 @@ namespace glissade
           {motion.value(Point<2>(), 0), motion.value(Point<2>(), 1)});
       }
 
+      double
+      rotation_angle(const double time) const
+      {
+        rotation.set_time(time);
+        return rotation.value(Point<2>(), 0);
+      }
+
       const Point<2> reference_point;
-      /** m(t), its values checked finite (UserFunction). */
+      /** m(t) and alpha(t), their values checked finite (UserFunction). */
       mutable UserFunction motion;
-      Tensor<1, 2>         step_motion;
+      mutable UserFunction rotation;
+      Point<2>             start_position;
+      double               turn_in_step = 0.;
     };
 
 
@@ -103,8 +140,9 @@ namespace glissade
       SurfacePoint
       project(const Point<2> &x, const SegmentHint &) const override
       {
-        const double gap = (x - position) * normal;
-        return point(x, x - gap * normal, normal, 1., Tensor<1, 2>());
+        const Tensor<1, 2> n   = rotated(normal, angle);
+        const double       gap = (x - position) * n;
+        return point(x, x - gap * n, n, 1., Tensor<1, 2>());
       }
 
     private:
@@ -147,6 +185,81 @@ namespace glissade
       const double radius;
       const bool   hole;
     };
+
+
+    /**
+     * The inside of a casing ovalised into n lobes (`Obstacle/Lobes`) of
+     * depth delta (`Obstacle/Lobe depth`) about a circle of radius R:
+     *   r(phi) = R - delta cos(n (phi - alpha)),
+     * in polar coordinates about `Obstacle/Point`, the lobes (where the
+     * casing comes in furthest) at phi = alpha + 2 pi k / n, alpha the
+     * obstacle's rotation. A blade seen from its own turning frame sees
+     * the casing turn backwards: Rotation = -Omega t. The curve stays
+     * convex (delta < R / (1 + n^2), checked on reading), so that the
+     * closest point is the one Newton's method finds from the node's polar
+     * angle. Parametrised by phi:
+     *   c' = r' e_r + r e_phi,  c'' = (r'' - r) e_r + 2 r' e_phi.
+     */
+    class CasingObstacle : public RigidObstacle
+    {
+    public:
+      CasingObstacle(const SurfaceContext &context)
+        : RigidObstacle(context.description)
+        , radius(context.description.obstacle_radius)
+        , depth(context.description.obstacle_lobe_depth)
+        , lobes(context.description.obstacle_lobes)
+      {}
+
+      SurfacePoint
+      project(const Point<2> &x, const SegmentHint &) const override
+      {
+        const Tensor<1, 2> d   = x - position;
+        double             phi = d.norm() > 0. ? std::atan2(d[1], d[0]) : 0.;
+        // (c - x) . c' = 0 by Newton's method: from the node's own angle
+        // it converges in a few steps, the curve being nearly a circle.
+        for (unsigned int k = 0; k < 50; ++k)
+          {
+            const Curve        c  = at(phi);
+            const Tensor<1, 2> r  = c.point - x;
+            const double       f  = r * c.first;
+            const double       df = c.first * c.first + r * c.second;
+            const double step = df > 0. ? -f / df : -f / (c.first * c.first);
+            phi += std::max(-0.1, std::min(0.1, step));
+            if (std::abs(step) < 1e-15)
+              break;
+          }
+        const Curve        c     = at(phi);
+        const double       speed = c.first.norm();
+        const Tensor<1, 2> normal({-c.first[1] / speed, c.first[0] / speed});
+        return point(x, c.point, normal, speed, c.second);
+      }
+
+    private:
+      struct Curve
+      {
+        Point<2>     point;
+        Tensor<1, 2> first, second;
+      };
+
+      Curve
+      at(const double phi) const
+      {
+        const double       n   = lobes;
+        const double       s   = n * (phi - angle);
+        const double       r   = radius - depth * std::cos(s);
+        const double       dr  = depth * n * std::sin(s);
+        const double       ddr = depth * n * n * std::cos(s);
+        const Tensor<1, 2> e_r({std::cos(phi), std::sin(phi)});
+        const Tensor<1, 2> e_phi({-std::sin(phi), std::cos(phi)});
+        return {position + r * e_r,
+                dr * e_r + r * e_phi,
+                (ddr - r) * e_r + 2. * dr * e_phi};
+      }
+
+      const double       radius;
+      const double       depth;
+      const unsigned int lobes;
+    };
   } // namespace
 
 
@@ -171,5 +284,13 @@ namespace glissade
   make_hole_obstacle(const SurfaceContext &context)
   {
     return std::make_unique<CircleObstacle>(context, true);
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_casing_obstacle(const SurfaceContext &context)
+  {
+    return std::make_unique<CasingObstacle>(context);
   }
 } // namespace glissade

@@ -19,6 +19,8 @@ namespace glissade
   make_disk_obstacle(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
   make_hole_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_casing_obstacle(const SurfaceContext &);
 
 
 
@@ -46,6 +48,11 @@ namespace glissade
        Kind::rigid,
        "the outside of a circular hole",
        make_hole_obstacle},
+      {"casing",
+       Kind::rigid,
+       "the inside of a casing ovalised into lobes (Lobes, Lobe depth), "
+       "e.g. about a turning blade",
+       make_casing_obstacle},
     };
     return list;
   }

@@ -182,11 +182,34 @@ namespace glissade
                       "0, 1",
                       Patterns::Anything(),
                       "line: the normal pointing out of the obstacle.");
-    prm.declare_entry("Radius", "1", Patterns::Double(0.), "disk, hole.");
+    prm.declare_entry("Radius",
+                      "1",
+                      Patterns::Double(0.),
+                      "disk, hole; casing: the mean radius R.");
     prm.declare_entry("Motion",
                       "0, 0",
                       Patterns::Anything(),
                       "Translation of the obstacle as expressions of t.");
+    prm.declare_entry(
+      "Rotation",
+      "0",
+      Patterns::Anything(),
+      "Rotation of the obstacle about its Point, counterclockwise, in "
+      "radians, as an expression of t: it turns a line's normal and a "
+      "casing's lobes, and for every obstacle it moves the material that "
+      "friction rubs against (a turning drum). A blade turning at Omega "
+      "sees its casing turn as '-Omega*t'.");
+    prm.declare_entry("Lobes",
+                      "2",
+                      Patterns::Integer(1),
+                      "casing: the number n of lobes, r(phi) = R - "
+                      "depth cos(n (phi - rotation)).");
+    prm.declare_entry("Lobe depth",
+                      "0",
+                      Patterns::Double(0.),
+                      "casing: how far the lobes come in from the circle "
+                      "of radius R (below R / (1 + n^2), so that the "
+                      "casing stays convex).");
     prm.leave_subsection();
   }
 
@@ -260,9 +283,12 @@ namespace glissade
       entry_format::coordinates(prm.get("Point"), entry + "/Obstacle/Point");
     const Point<2> normal =
       entry_format::coordinates(prm.get("Normal"), entry + "/Obstacle/Normal");
-    obstacle_normal = normal;
-    obstacle_radius = prm.get_double("Radius");
-    obstacle_motion = text::split_top_level(prm.get("Motion"), ',');
+    obstacle_normal     = normal;
+    obstacle_radius     = prm.get_double("Radius");
+    obstacle_motion     = text::split_top_level(prm.get("Motion"), ',');
+    obstacle_rotation   = text::trim(prm.get("Rotation"));
+    obstacle_lobes      = prm.get_integer("Lobes");
+    obstacle_lobe_depth = prm.get_double("Lobe depth");
     prm.leave_subsection();
     if (!(obstacle_radius <= 1e100))
       throw InputError(entry + "/Obstacle/Radius",
@@ -294,6 +320,20 @@ namespace glissade
                        "expected two expressions 'x(t), y(t)'");
     entry_format::check_expressions(obstacle_motion,
                                     entry + "/Obstacle/Motion");
+    entry_format::check_expressions({obstacle_rotation},
+                                    entry + "/Obstacle/Rotation");
+    if (master_body == "rigid" && obstacle == "casing" &&
+        !(obstacle_radius > 0. &&
+          obstacle_lobe_depth * (1. + obstacle_lobes * obstacle_lobes) <
+            obstacle_radius))
+      throw InputError(entry + "/Obstacle/Lobe depth",
+                       "must be below Radius / (1 + Lobes^2) = " +
+                         std::to_string(
+                           obstacle_radius /
+                           (1. + obstacle_lobes * obstacle_lobes)) +
+                         ", and the Radius above 0: a deeper lobe makes the "
+                         "casing concave, where a node has two closest "
+                         "points");
     if (master_body == "rigid" && obstacle == "line" && normal.norm() == 0.)
       throw InputError(entry + "/Obstacle/Normal", "must not be zero");
     // A disk of radius 0 is a point and a hole of radius 0 has no inside:

@@ -88,6 +88,12 @@ namespace glissade
      * dofs). The slip is measured against it.
      */
     dealii::Tensor<1, 2> motion_since_step_start;
+    /**
+     * Its derivative along the curve's parameter: not zero for an
+     * obstacle that turns, whose material points each moved by their own
+     * amount.
+     */
+    dealii::Tensor<1, 2> motion_derivative;
   };
 
   /**

@@ -359,12 +359,15 @@ namespace glissade
     double       tolerance  = 1e-10;
     unsigned int max_sweeps = 10000;
     // Rigid obstacle.
-    std::string              obstacle = "line"; // line | disk | hole
+    std::string              obstacle = "line"; // line | disk | hole | casing
     dealii::Point<2>         obstacle_point; // line: a point; disk/hole: centre
     dealii::Tensor<1, 2>     obstacle_normal; // line: normal pointing out of it
     double                   obstacle_radius = 1.;
     std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
-    std::string              entry;                        // "Contact <name>"
+    std::string  obstacle_rotation   = "0"; // angle(t) about obstacle_point
+    unsigned int obstacle_lobes      = 2;   // casing
+    double       obstacle_lobe_depth = 0.;  // casing
+    std::string  entry;                     // "Contact <name>"
 
     /** The subsection Contact <name> (source/scene/contact_section.cc). */
     static void
