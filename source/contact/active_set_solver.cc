@@ -1,6 +1,7 @@
 // The contact law on the condensed system by a primal-dual active-set
 // iteration: BiPotentialSolver::solve_by_active_set (see its declaration).
 
+#include <glissade/base/debug_log.h>
 #include <glissade/contact/bipotential_solver.h>
 
 #include <algorithm>
@@ -89,13 +90,13 @@ namespace glissade
             if (s != status[k] || sign != slip_sign[k])
               {
                 changed = true;
-                if (const char *debug = std::getenv("GLISSADE_DEBUG");
-                    debug != nullptr && std::string(debug) == "3")
-                  std::cerr << "        update " << update << " node " << k
-                            << ": " << int(status[k]) << " " << slip_sign[k]
-                            << " -> " << int(s) << " " << sign << "  r ("
-                            << r[k][t] << ", " << r[k][n] << ") u (" << u[k][t]
-                            << ", " << u[k][n] << ")" << std::endl;
+                if (debug_log::at(3))
+                  debug_log::stream()
+                    << "        update " << update << " node " << k << ": "
+                    << int(status[k]) << " " << slip_sign[k] << " -> " << int(s)
+                    << " " << sign << "  r (" << r[k][t] << ", " << r[k][n]
+                    << ") u (" << u[k][t] << ", " << u[k][n] << ")"
+                    << std::endl;
               }
             status[k]    = s;
             slip_sign[k] = sign;

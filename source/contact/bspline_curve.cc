@@ -96,14 +96,6 @@ namespace glissade
 
 
 
-  const std::vector<MasterCurve::Point> &
-  BSplineCurve::control_points() const
-  {
-    return control;
-  }
-
-
-
   void
   BSplineCurve::prepare_for_size(const unsigned int n)
   {

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <glissade/base/debug_log.h>
 #include <glissade/base/input_error.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/condensed_problem.h>
@@ -320,13 +321,12 @@ namespace glissade
         active[k]->reaction = {{r[k][0], r[k][1]}};
         active[k]->status   = result.status[k];
       }
-    if (const char *debug = std::getenv("GLISSADE_DEBUG");
-        debug != nullptr && std::string(debug) == "2")
+    if (debug_log::at(2))
       for (const ContactNode *node : active)
-        std::cerr << "      node " << node->vertex << " segment "
-                  << node->segment << " s " << node->s << " gap " << node->gap
-                  << " r " << node->reaction[0] << ' ' << node->reaction[1]
-                  << std::endl;
+        debug_log::stream()
+          << "      node " << node->vertex << " segment " << node->segment
+          << " s " << node->s << " gap " << node->gap << " r "
+          << node->reaction[0] << ' ' << node->reaction[1] << std::endl;
 
     // Corrector: the Newton step.
     std::vector<Vector<double>> contact_forces(bodies.size());
@@ -503,14 +503,14 @@ namespace glissade
               if (d[0] && status != BiPotentialSolver::NodeStatus::stick)
                 d[0] = held[k][0] = false, consistent = false;
             }
-        if (std::getenv("GLISSADE_DEBUG"))
-          std::cerr << "    contact solve: " << augmentation.count()
-                    << " augmented directions (factor " << augmentation.factor
-                    << "), "
-                    << (result.polished ? "active set" : "Gauss-Seidel") << ": "
-                    << (solved ? (consistent ? "solved" : "inconsistent") :
-                                 "failed: " + result.message)
-                    << std::endl;
+        if (debug_log::at(1))
+          debug_log::stream()
+            << "    contact solve: " << augmentation.count()
+            << " augmented directions (factor " << augmentation.factor << "), "
+            << (result.polished ? "active set" : "Gauss-Seidel") << ": "
+            << (solved ? (consistent ? "solved" : "inconsistent") :
+                         "failed: " + result.message)
+            << std::endl;
         if (consistent)
           break;
         if (solved)

@@ -1,5 +1,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <glissade/base/debug_log.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/sparse_contact_step.h>
 
@@ -163,10 +164,11 @@ namespace glissade
     auto fresh = std::make_unique<SparsityPattern>();
     fresh->copy_from(dsp);
     // A new object, so that the factorisation analyses it afresh.
-    if (std::getenv("GLISSADE_DEBUG"))
-      std::cerr << "      sparse system: new pattern, " << fresh->n_rows()
-                << " unknowns, " << fresh->n_nonzero_elements() << " entries"
-                << std::endl;
+    if (debug_log::at(1))
+      debug_log::stream() << "      sparse system: new pattern, "
+                          << fresh->n_rows() << " unknowns, "
+                          << fresh->n_nonzero_elements() << " entries"
+                          << std::endl;
     matrix.reinit(*fresh);
     pattern = std::move(fresh);
     rhs.reinit(n_unknowns);
@@ -405,15 +407,15 @@ namespace glissade
               }
             changed = changed || status[k] != old;
           }
-        if (std::getenv("GLISSADE_DEBUG"))
+        if (debug_log::at(1))
           {
             unsigned int counts[3] = {0, 0, 0};
             for (const NodeStatus st : status)
               ++counts[static_cast<int>(st)];
-            std::cerr << "      sparse pass " << last_passes << ": open "
-                      << counts[0] << " stick " << counts[1] << " slip "
-                      << counts[2] << (changed ? " (changed)" : "")
-                      << std::endl;
+            debug_log::stream()
+              << "      sparse pass " << last_passes << ": open " << counts[0]
+              << " stick " << counts[1] << " slip " << counts[2]
+              << (changed ? " (changed)" : "") << std::endl;
           }
         if (!changed)
           {

@@ -2,6 +2,7 @@
 #include <deal.II/base/thread_management.h>
 #include <deal.II/base/timer.h>
 
+#include <glissade/base/debug_log.h>
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
 #include <glissade/base/progress_text.h>
@@ -197,10 +198,10 @@ namespace glissade
             stats.newton_iterations += iteration;
             return true;
           }
-        if (newly_active > 0 && std::getenv("GLISSADE_DEBUG"))
-          std::cerr << "  it " << iteration << ": " << newly_active
-                    << " slave nodes went behind the master; now active"
-                    << std::endl;
+        if (newly_active > 0 && debug_log::at(1))
+          debug_log::stream()
+            << "  it " << iteration << ": " << newly_active
+            << " slave nodes went behind the master; now active" << std::endl;
         if (iteration == settings.max_iterations)
           break;
         if (criterion.diverges())
@@ -271,16 +272,18 @@ namespace glissade
         criterion.add_correction(last_increment, displacement_norm);
         if (!contact_problem->empty())
           contact_problem->update_state();
-        if (std::getenv("GLISSADE_DEBUG"))
+        if (debug_log::at(1))
           for (unsigned int b = 0; b < all_bodies.size(); ++b)
-            std::cerr << "    body " << b << " |du| " << du[b].l2_norm()
-                      << " max " << du[b].linfty_norm() << " |u| "
-                      << all_bodies[b]->displacement().l2_norm() << std::endl;
-        if (std::getenv("GLISSADE_DEBUG"))
-          std::cerr << "  it " << iteration << " |R|/F " << scaled << " |du| "
-                    << last_increment << " |u| " << displacement_norm
-                    << " active " << contact_problem->n_active() << " sweeps "
-                    << contact_problem->last_result().sweeps << std::endl;
+            debug_log::stream()
+              << "    body " << b << " |du| " << du[b].l2_norm() << " max "
+              << du[b].linfty_norm() << " |u| "
+              << all_bodies[b]->displacement().l2_norm() << std::endl;
+        if (debug_log::at(1))
+          debug_log::stream()
+            << "  it " << iteration << " |R|/F " << scaled << " |du| "
+            << last_increment << " |u| " << displacement_norm << " active "
+            << contact_problem->n_active() << " sweeps "
+            << contact_problem->last_result().sweeps << std::endl;
         if (!std::isfinite(last_increment))
           {
             failure_cause = "the Newton correction is not finite (a singular "

@@ -89,10 +89,6 @@ namespace glissade
     Point
     control_point(int i) const;
 
-    /** The control points Q_0..Q_{N-1}. */
-    const std::vector<Point> &
-    control_points() const;
-
   private:
     /** Index of the stored control point that plays the role of Q_i. */
     unsigned int

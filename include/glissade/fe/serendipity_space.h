@@ -53,16 +53,6 @@ namespace glissade
     std::unique_ptr<CellEvaluator>
     create_evaluator(const unsigned int points_per_direction) const override;
 
-    /**
-     * For each interior node of FE_Q(p) (in deal.II's base numbering), the
-     * coefficients on the boundary nodes: u_interior = sum c_j u_j.
-     */
-    const std::vector<std::vector<std::pair<unsigned int, double>>> &
-    interior_relations() const
-    {
-      return relations;
-    }
-
   private:
     const unsigned int                                        degree;
     dealii::FESystem<2>                                       fe;
