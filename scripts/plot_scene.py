@@ -11,7 +11,8 @@ run wrote into its output directory:
   the directory, each a pair of history.csv columns (or time);
 - deformed-mesh.png: every body in its last written state, deformed at
   true scale and coloured by the von Mises stress (one colour scale for
-  all bodies), over the reference outline, from the <body>.pvd files.
+  all bodies), over the reference outline, from the <body>.pvd files, and
+  the rigid obstacles in their final place (obstacle-<pair>.csv).
 
 Run by glissade with Debian's /usr/bin/python3 (matplotlib); by hand:
 /usr/bin/python3 scripts/plot_scene.py <output directory>."""
@@ -254,6 +255,13 @@ def plot_deformed_mesh():
             cmap="viridis", edgecolors="k", linewidths=0.15)
         collection.set_clim(0.0, highest if highest > 0 else 1.0)
         axis.add_collection(collection)
+    # The rigid obstacles the run wrote (obstacle-<pair>.csv), in their
+    # final place, as thick grey curves.
+    for path in sorted(glob.glob(os.path.join(directory, "obstacle-*.csv"))):
+        rows = read_csv(path)
+        axis.plot([float(r["x"]) for r in rows], [float(r["y"]) for r in rows],
+                  color="0.35", linewidth=2.0, solid_capstyle="butt",
+                  label=os.path.basename(path)[9:-4])
     points = [p for b in bodies for p in b[1] + b[2]]
     xs, ys = [p[0] for p in points], [p[1] for p in points]
     margin = 0.03 * max(max(xs) - min(xs), max(ys) - min(ys))

@@ -362,6 +362,16 @@ GLISSADE_TEST(scene_plots_written)
       check(png.size() > 1000 && png.compare(0, 4, "\x89PNG") == 0,
             file + " is a PNG picture");
     }
+  // The rigid flat that deformed-mesh.png draws: points of the line y = 0
+  // spanning the block (0 <= x <= 1), from obstacle-floor.csv.
+  auto        line = read_csv("scene_plots/obstacle-floor.csv");
+  const auto &x = line["x"], &y = line["y"];
+  double      off_line = 0.;
+  for (const double value : y)
+    off_line = std::max(off_line, std::abs(value));
+  check(x.size() == 2 && std::min(x[0], x[1]) <= 0. &&
+          std::max(x[0], x[1]) >= 1. && off_line <= 1e-12,
+        "obstacle-floor.csv holds the flat y = 0 under the block");
 }
 
 

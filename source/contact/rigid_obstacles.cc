@@ -145,6 +145,15 @@ namespace glissade
         return point(x, x - gap * n, n, 1., Tensor<1, 2>());
       }
 
+      std::vector<Point<2>>
+      outline(const Point<2> &centre, const double reach) const override
+      {
+        const Tensor<1, 2> n    = rotated(normal, angle);
+        const Point<2>     foot = centre - ((centre - position) * n) * n;
+        const Tensor<1, 2> t({n[1], -n[0]});
+        return {foot - reach * t, foot + reach * t};
+      }
+
     private:
       const Tensor<1, 2> normal;
     };
@@ -179,6 +188,19 @@ namespace glissade
                      normal,
                      radius,
                      (hole ? radius : -radius) * normal);
+      }
+
+      std::vector<Point<2>>
+      outline(const Point<2> &, const double) const override
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int k = 0; k <= 360; ++k)
+          {
+            const double phi = 2. * M_PI * k / 360.;
+            points.push_back(
+              position + radius * Tensor<1, 2>({std::cos(phi), std::sin(phi)}));
+          }
+        return points;
       }
 
     private:
@@ -232,6 +254,15 @@ namespace glissade
         const double       speed = c.first.norm();
         const Tensor<1, 2> normal({-c.first[1] / speed, c.first[0] / speed});
         return point(x, c.point, normal, speed, c.second);
+      }
+
+      std::vector<Point<2>>
+      outline(const Point<2> &, const double) const override
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int k = 0; k <= 720; ++k)
+          points.push_back(at(2. * M_PI * k / 720.).point);
+        return points;
       }
 
     private:

@@ -1,9 +1,12 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/timing_sections.h>
+#include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
 #include <glissade/io/scene_output.h>
+
+#include <iomanip>
 
 namespace glissade
 {
@@ -18,7 +21,11 @@ namespace glissade
     , timer(timer)
   {
     for (const auto &pair : contact.contact_pairs())
-      contact_outputs.emplace_back(*pair);
+      {
+        contact_outputs.emplace_back(*pair);
+        if (pair->surface().is_rigid())
+          obstacles.emplace_back(pair->name(), &pair->surface());
+      }
     pvd_records.resize(bodies.size() + contact_outputs.size());
   }
 
@@ -120,6 +127,35 @@ namespace glissade
   {
     if (!settings.plots)
       return;
+    // The rigid obstacles beside the bodies in deformed-mesh.png:
+    // obstacle-<pair>.csv, the curve where the bodies are now.
+    if (!obstacles.empty())
+      {
+        Point<2> lowest(1e300, 1e300), highest(-1e300, -1e300);
+        for (const auto &body : bodies)
+          {
+            const auto &vertices = body->triangulation().get_vertices();
+            const auto  moved    = body->vertex_displacements();
+            for (unsigned int v = 0; v < vertices.size(); ++v)
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  lowest[d] = std::min(lowest[d], vertices[v][d] + moved[v][d]);
+                  highest[d] =
+                    std::max(highest[d], vertices[v][d] + moved[v][d]);
+                }
+          }
+        const Point<2> centre = 0.5 * (lowest + highest);
+        const double   reach  = 0.6 * (highest - lowest).norm();
+        for (const auto &[name, surface] : obstacles)
+          {
+            AtomicFile file(settings.directory + "/obstacle-" + name + ".csv");
+            file.write_and_commit([&](std::ostream &out) {
+              out << "x,y\n" << std::setprecision(10);
+              for (const Point<2> &p : surface->outline(centre, reach))
+                out << p[0] << ',' << p[1] << '\n';
+            });
+          }
+      }
     // plot_scene.py's arguments for Output/Plot curves: "x:y" each.
     std::vector<std::string> curves;
     for (const auto &[x, y] : settings.plot_curves)

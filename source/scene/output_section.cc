@@ -42,17 +42,17 @@ namespace glissade
                       Patterns::Selection("fast|small|none"),
                       "zlib compression of the bodies' VTU files: fast "
                       "(zlib level 1), small (level 9, deal.II's default: "
-                      "0.6 % smaller, written 5.6 times slower on the 160 x "
-                      "16 rings), none (3.4 times larger).");
+                      "a little smaller, written several times slower; "
+                      "doc/performance.md), none (uncompressed).");
     prm.declare_entry("VTU fields",
                       "displacement, stress",
                       Patterns::MultipleSelection("displacement|stress"),
                       "The fields of the bodies' VTU files: displacement, "
                       "and stress (sigma_xx, sigma_yy, sigma_xy, sigma_zz "
                       "and von_Mises, computed at the output; Plots colours "
-                      "the deformed mesh by it). Only displacement: the Hertz "
-                      "run at 18,000 dofs writes its VTU in 16 ms instead of "
-                      "57 ms.");
+                      "the deformed mesh by it). Only displacement writes "
+                      "the VTU files several times faster "
+                      "(doc/performance.md).");
     prm.declare_entry("Contact table interval",
                       "0",
                       Patterns::Integer(0),

@@ -165,5 +165,16 @@ namespace glissade
     /** True for an obstacle without dofs. */
     virtual bool
     is_rigid() const = 0;
+
+    /**
+     * A rigid obstacle's curve as a polyline, for pictures: the part that
+     * a box of half-diagonal `reach` about `centre` sees. Empty for a
+     * deformable master, whose body draws itself.
+     */
+    virtual std::vector<dealii::Point<2>>
+    outline(const dealii::Point<2> & /*centre*/, const double /*reach*/) const
+    {
+      return {};
+    }
   };
 } // namespace glissade

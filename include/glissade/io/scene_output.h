@@ -92,6 +92,8 @@ namespace glissade
     const std::vector<std::unique_ptr<Body>> &bodies;
     dealii::TimerOutput                      &timer;
     std::vector<ContactSurfaceOutput>         contact_outputs;
+    /** The rigid obstacles, by pair name, that the pictures draw. */
+    std::vector<std::pair<std::string, const MasterSurface *>> obstacles;
     /** (time, file) of every VTU written, per body then per contact pair. */
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
   };
