@@ -371,3 +371,46 @@ GLISSADE_TEST(dynamics_rolling_disk_moreau_jean)
   check_relative(v_end, v_star, 0.02, "the rolling speed");
   check_relative(friction, lost, 0.03, "the energy friction dissipated");
 }
+
+// The bar at rest struck by the wall moving towards it at w (Obstacle/
+// Motion = w t): seen from the wall, the bar of the first test hitting a
+// wall at rest, so the bar leaves at w plus that bar's rebound velocity
+// (Galilean invariance, to 1e-9 of w: the obstacle's motion enters the
+// slip, the gap and, for Moreau-Jean, the start velocity of the law), and
+// at 2 w within 2 % (the closed form); the contact lasts 2 L / c.
+GLISSADE_TEST(dynamics_bar_struck_by_moving_wall)
+{
+  const double w = 0.001, mass = 0.1;
+  for (const std::string scheme : {"newmark", "moreau-jean"})
+    {
+      const std::vector<std::string> common = {
+        "Time integration/Scheme=" + scheme,
+        "Load program/Stage end times=4",
+        "Load program/Stage increments=400"};
+      std::vector<std::string> moving = common;
+      moving.push_back("Body bar/Initial velocity=0, 0");
+      moving.push_back("Contact wall/Obstacle/Motion=" + std::to_string(w) +
+                       "*t, 0");
+      const auto   struck   = run_bar(moving, "struck_" + scheme);
+      const auto   still    = run_bar(common, "still_" + scheme);
+      const double v_struck = struck.back().momentum / mass;
+      const double v_still  = still.back().momentum / mass;
+      double       first = -1., last = -1.;
+      for (const Step &s : struck)
+        if (std::abs(s.force) > 1e-12)
+          {
+            if (first < 0.)
+              first = s.t;
+            last = s.t;
+          }
+      std::cout << std::setprecision(12) << "  " << scheme
+                << ": struck bar leaves at " << v_struck << ", w + the "
+                << "still wall's rebound " << w + v_still << "; contact "
+                << last - first + 0.01 << std::endl;
+      check(std::abs(v_struck - (w + v_still)) <= 1e-9 * w,
+            scheme + ": the struck bar is not the moving bar seen from the "
+                     "wall");
+      check_relative(v_struck, 2. * w, 0.02, scheme + ": leaves at 2 w");
+      check_relative(last - first + 0.01, 2., 0.02, scheme + ": lasts 2 L / c");
+    }
+}

@@ -51,6 +51,22 @@ namespace glissade
         return true;
       }
 
+      /**
+       * m'(t) + alpha'(t) e3 x (x - p(t)), the derivatives of the user's
+       * expressions by central differences (step 1e-6 of the time scale).
+       */
+      Tensor<1, 2>
+      velocity_at(const Point<2> &x, const double t) const override
+      {
+        const double       h = 1e-6 * std::max(1., std::abs(t));
+        const Tensor<1, 2> translation_rate =
+          (translation(t + h) - translation(t - h)) / (2. * h);
+        const double turn_rate =
+          (rotation_angle(t + h) - rotation_angle(t - h)) / (2. * h);
+        const Tensor<1, 2> r = x - (reference_point + translation(t));
+        return translation_rate + turn_rate * Tensor<1, 2>({-r[1], r[0]});
+      }
+
     protected:
       /**
        * The point of a curve with the given closest point, normal and

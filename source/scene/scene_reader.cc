@@ -275,24 +275,6 @@ namespace glissade
                              "integration/Scheme (body '" +
                                body.name + "' would have no inertia)");
         });
-    // Moreau-Jean's velocity law takes the relative velocity at the start
-    // of the step from the bodies' velocities alone: a moving obstacle's
-    // would be missing from it.
-    if (scene.time_integration.scheme ==
-        TimeIntegrationSettings::Scheme::moreau_jean)
-      for (const auto &c : scene.contacts)
-        prm.check([&]() {
-          const bool moving =
-            c.obstacle_rotation != "0" ||
-            c.obstacle_motion != std::vector<std::string>{"0", "0"};
-          if (c.master_body == "rigid" && moving)
-            throw InputError(c.entry + "/Obstacle/Motion",
-                             "a moving obstacle (Motion or Rotation) is "
-                             "not implemented with the moreau-jean scheme, "
-                             "whose velocity law would miss the obstacle's "
-                             "velocity: use Time integration/Scheme = "
-                             "newmark");
-        });
     for (const auto &body : scene.bodies)
       prm.check([&]() {
         if (!body.gravity.empty() && !(body.material.density > 0.))

@@ -102,7 +102,7 @@ namespace glissade
       {
         for (const auto &body : bodies)
           body->inertia()->begin_step(body->displacement(), t - t_start);
-        begin_contact_step(t - t_start);
+        begin_contact_step(t_start, t - t_start);
       }
 
       void
@@ -127,9 +127,9 @@ namespace glissade
       }
 
     protected:
-      /** After the detection of a step of length dt. */
+      /** After the detection of a step from t_start of length dt. */
       virtual void
-      begin_contact_step(const double dt) = 0;
+      begin_contact_step(const double t_start, const double dt) = 0;
 
       const SceneDescription                   &scene;
       const std::vector<std::unique_ptr<Body>> &bodies;
@@ -163,7 +163,7 @@ namespace glissade
 
     protected:
       void
-      begin_contact_step(const double) override
+      begin_contact_step(const double, const double) override
       {}
     };
 
@@ -202,7 +202,7 @@ namespace glissade
 
     protected:
       void
-      begin_contact_step(const double dt) override
+      begin_contact_step(const double t_start, const double dt) override
       {
         const double theta = scene.time_integration.theta;
         for (const auto &pair : contact->contact_pairs())
@@ -222,17 +222,34 @@ namespace glissade
                 if (!node.active)
                   continue;
                 const ContactLinearization &l   = node.linearization;
-                const double                U_N = velocity_along(l.gap_row);
-                const double                U_T = velocity_along(l.slip_row);
-                if (l.gap + (1. - theta) * dt * U_N > 0.)
+                double                      U_N = velocity_along(l.gap_row);
+                double                      U_T = velocity_along(l.slip_row);
+                // Relative to a moving obstacle's material under the node;
+                // the detection's gap is to the obstacle at the step's end:
+                // its gap at the start adds back the obstacle's motion.
+                double start_gap = l.gap;
+                if (body[1] == nullptr)
+                  {
+                    Point<2> x = node.reference_position;
+                    for (unsigned int d = 0; d < 2; ++d)
+                      x[d] += pair->slave().displacement()(node.dofs[d]);
+                    const MasterSurface &obstacle = pair->surface();
+                    const Tensor<1, 2>   w = obstacle.velocity_at(x, t_start);
+                    U_N -= node.normal * w;
+                    U_T -= node.tangent * w;
+                    start_gap +=
+                      dt * (node.normal *
+                            obstacle.velocity_at(x, t_start + 0.5 * dt));
+                  }
+                if (start_gap + (1. - theta) * dt * U_N > 0.)
                   {
                     node.active   = false;
                     node.reaction = {{0., 0.}};
                     node.status   = BiPotentialSolver::NodeStatus::open;
                     continue;
                   }
-                node.law_shift = {
-                  {-(1. - theta) * dt * U_T, -l.gap - (1. - theta) * dt * U_N}};
+                node.law_shift = {{-(1. - theta) * dt * U_T,
+                                   -start_gap - (1. - theta) * dt * U_N}};
               }
           }
       }

@@ -167,6 +167,17 @@ namespace glissade
     is_rigid() const = 0;
 
     /**
+     * The velocity at time t of the obstacle's material at x (a rigid
+     * obstacle's prescribed motion); zero for a deformable master, whose
+     * velocity is its dofs'.
+     */
+    virtual dealii::Tensor<1, 2>
+    velocity_at(const dealii::Point<2> & /*x*/, const double /*t*/) const
+    {
+      return {};
+    }
+
+    /**
      * A rigid obstacle's curve as a polyline, for pictures: the part that
      * a box of half-diagonal `reach` about `centre` sees. Empty for a
      * deformable master, whose body draws itself.
