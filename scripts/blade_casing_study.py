@@ -111,10 +111,10 @@ def main():
         futures = [pool.submit(sweep_point, args.glissade, args.output, w)
                    for w in omegas]
         for k, future in enumerate(concurrent.futures.as_completed(futures)):
-            omega, amplitude, _ = future.result()
-            print(f"  [{k + 1}/{len(omegas)}] Omega = {omega:g} rad/s: "
-                  f"tip amplitude {amplitude:.4g} mm", flush=True)
-            results.append(future.result())
+            result = future.result()
+            print(f"  [{k + 1}/{len(omegas)}] Omega = {result[0]:g} rad/s: "
+                  f"tip amplitude {result[1]:.4g} mm", flush=True)
+            results.append(result)
     results.sort(key=lambda r: r[0])
     with open(os.path.join(args.output, "sweep.csv"), "w") as f:
         f.write("omega,omega_over_omega_1,tip_amplitude\n")

@@ -135,9 +135,10 @@ namespace glissade
         for (const auto &body : bodies)
           {
             const auto &vertices = body->triangulation().get_vertices();
+            const auto &used     = body->triangulation().get_used_vertices();
             const auto  moved    = body->vertex_displacements();
             for (unsigned int v = 0; v < vertices.size(); ++v)
-              for (unsigned int d = 0; d < 2; ++d)
+              for (unsigned int d = 0; d < 2 && used[v]; ++d)
                 {
                   lowest[d] = std::min(lowest[d], vertices[v][d] + moved[v][d]);
                   highest[d] =
