@@ -6,6 +6,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/user_function.h>
 #include <glissade/body/body.h>
+#include <glissade/body/viscous_stress.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/mesh_diameter.h>
 
@@ -184,6 +185,7 @@ namespace glissade
     system_rhs             = 0.;
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
+    Vector<double> viscous_forces(inertia_terms ? dofs.n_dofs() : 0);
 
     const double thickness = description.material.thickness;
     const bool   axisymmetric =
@@ -231,18 +233,22 @@ namespace glissade
       // stress variation dS_33 it causes)
       std::vector<double> dE33 = std::vector<double>(grad.size()),
                           dS33 = std::vector<double>(grad.size());
+      // (stiffness damping: the cell's velocity dofs)
+      std::vector<double> cell_velocity = std::vector<double>(grad.size());
     };
     struct CellContribution
     {
       explicit CellContribution(const unsigned int n_local)
         : cell_matrix(n_local, n_local)
         , cell_rhs(n_local)
+        , viscous_force(n_local)
         , local_dofs(n_local)
       {}
       // The surface loads are added to them in the (sequential) copier,
       // which WorkStream hands a const reference.
       mutable FullMatrix<double>           cell_matrix;
       mutable Vector<double>               cell_rhs;
+      Vector<double>                       viscous_force;
       std::vector<types::global_dof_index> local_dofs;
       std::string                          rejection; // why, if inadmissible
       typename DoFHandler<2>::active_cell_iterator cell;
@@ -264,10 +270,22 @@ namespace glissade
         data.rejection.clear();
         evaluator.reinit(cell);
         cell->get_dof_indices(data.local_dofs);
-        cell_matrix = 0.;
-        cell_rhs    = 0.;
+        cell_matrix        = 0.;
+        cell_rhs           = 0.;
+        data.viscous_force = 0.;
         const Material &cell_material =
           materials_of_cells->of_cell(cell->material_id());
+        // Stiffness damping: the material at rest and the cell's velocity.
+        const double damping_a_K =
+          inertia_terms ? inertia_terms->stiffness_damping() : 0.;
+        MaterialPointResponse at_rest;
+        if (damping_a_K > 0.)
+          {
+            at_rest = cell_material.evaluate(Tensor<2, 2>(), 0.);
+            inertia_terms->cell_velocity(data.local_dofs,
+                                         solution,
+                                         scratch.cell_velocity);
+          }
 
         for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
           {
@@ -370,6 +388,21 @@ namespace glissade
                     cell_matrix(i, j) += k * dV;
                   }
               }
+            if (damping_a_K > 0.)
+              add_viscous_stress_terms(
+                damping_a_K,
+                inertia_terms->velocity_factor(),
+                ViscousStressPoint{at_rest, F, 1. + hoop, r, axisymmetric, dV},
+                evaluator,
+                q,
+                component,
+                grad,
+                dE,
+                dE33,
+                scratch.cell_velocity,
+                cell_matrix,
+                cell_rhs,
+                data.viscous_force);
           }
         for (unsigned int i = 0; i < n_local; ++i)
           for (unsigned int j = i + 1; j < n_local; ++j)
@@ -403,6 +436,9 @@ namespace glissade
         }
       for (unsigned int i = 0; i < n_local; ++i)
         internal_forces(data.local_dofs[i]) -= cell_rhs(i);
+      if (viscous_forces.size() > 0)
+        for (unsigned int i = 0; i < n_local; ++i)
+          viscous_forces(data.local_dofs[i]) += data.viscous_force(i);
 
       if (cell->at_boundary())
         assemble_surface_loads(
@@ -422,6 +458,9 @@ namespace glissade
                     add,
                     Scratch(*element_space, n_local),
                     CellContribution(n_local));
+
+    if (inertia_terms)
+      inertia_terms->set_viscous_forces(viscous_forces);
 
     Vector<double> point_loads(dofs.n_dofs());
     boundary_conditions->add_point_loads(dofs,

@@ -153,7 +153,7 @@ namespace glissade
 
 
   void
-  BodyInertia::initialize(const Body &body, const Vector<double> &residual)
+  BodyInertia::set_initial_velocity(const Body &body)
   {
     // The initial velocity at each dof's support point: a value dof takes
     // v there, a Hermite derivative dof the derivative of v (by a central
@@ -210,7 +210,13 @@ namespace glissade
           }
       }
     body.dof_constraints().distribute(v);
+  }
 
+
+
+  void
+  BodyInertia::initialize(const Body &body, const Vector<double> &residual)
+  {
     // M a_0 = R_0 on the dofs that have mass and are free: the mass
     // condensed by the body's constraints without their values (element
     // relations, supports), a massless dof's row the identity.
@@ -231,7 +237,10 @@ namespace glissade
     SparseMatrix<double> M(sparsity);
     for (unsigned int c = 0; c < cell_dofs.size(); ++c)
       homogeneous.distribute_local_to_global(cell_mass[c], cell_dofs[c], M);
+    damping_before = apply_mass(v);
+    damping_before *= settings.mass_damping;
     Vector<double> rhs = residual;
+    rhs -= damping_before;
     homogeneous.condense(rhs);
     for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
       if (!homogeneous.is_constrained(i) && !(M.diag_element(i) > 0.))
@@ -255,14 +264,29 @@ namespace glissade
       }
 
     // The forces of the initial state, for the first step's work: F_ext +
-    // F_support = M a_0 + F_int - F_c, F_int - F_ext being -residual.
+    // F_support = M a_0 + a_M M v_0 + F_int + F_v - F_c, F_int + F_v -
+    // F_ext being -residual.
     applied_before = apply_mass(a);
+    applied_before += damping_before;
     applied_before -= residual;
     applied_before += body.applied_loads();
     applied_before -= body.get_contact_forces();
     contact_before = body.get_contact_forces();
-    damping_before = apply_mass(v);
-    damping_before *= settings.mass_damping;
+    if (viscous_forces.size() == damping_before.size())
+      damping_before += viscous_forces;
+  }
+
+
+
+  void
+  BodyInertia::cell_velocity(const std::vector<types::global_dof_index> &dofs,
+                             const Vector<double>                       &u,
+                             std::vector<double> &velocity) const
+  {
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      velocity[j] = step > 0. ? v_predicted(dofs[j]) +
+                                  c_v * (u(dofs[j]) - u_predicted(dofs[j])) :
+                                v(dofs[j]);
   }
 
 
@@ -345,6 +369,8 @@ namespace glissade
     applied -= old_forces; // (Moreau-Jean's start-state forces: not loads)
     Vector<double> damping = apply_mass(v);
     damping *= settings.mass_damping;
+    if (viscous_forces.size() == damping.size())
+      damping += viscous_forces;
     Vector<double> du = u;
     du -= u_start;
     const auto trapezoid = [&](const Vector<double> &before,

@@ -71,7 +71,17 @@ namespace glissade
                       "0",
                       Patterns::Double(0.),
                       "Rayleigh damping proportional to the mass, C = a_M "
-                      "M (1/s).");
+                      "M (1/s): a mode of frequency omega is damped at the "
+                      "ratio a_M / (2 omega).");
+    prm.declare_entry(
+      "Stiffness damping",
+      "0",
+      Patterns::Double(0.),
+      "Rayleigh damping proportional to the stiffness, a_K (s): a viscous "
+      "stress a_K D_0 : dE/dt on the rate of the Green-Lagrange strain (D_0 "
+      "the material's tangent at rest), which is C = a_K K for small "
+      "motions and brakes no rigid motion at any rotation; a mode of "
+      "frequency omega is damped at the ratio a_K omega / 2.");
     prm.leave_subsection();
   }
 
@@ -94,6 +104,7 @@ namespace glissade
     lumped_mass               = prm.get("Mass") == "lumped";
     redistribute_contact_mass = prm.get("Contact mass") == "redistributed";
     mass_damping              = prm.get_double("Mass damping");
+    stiffness_damping         = prm.get_double("Stiffness damping");
     prm.leave_subsection();
     if (!(beta > 0.))
       throw InputError(where + "Newmark beta",

@@ -83,9 +83,11 @@ namespace glissade
       initialize() override
       {
         // The acceleration that balances the loads at t = 0 (no inertia
-        // terms yet: the inertia has no step).
+        // terms yet: the inertia has no step; the viscous stress of the
+        // initial velocity is assembled).
         for (const auto &body : bodies)
           {
+            body->inertia()->set_initial_velocity(*body);
             body->set_time(0.);
             body->assemble();
             Vector<double> residual = body->unbalanced_forces();

@@ -61,11 +61,15 @@ namespace glissade
                 const std::set<dealii::types::global_dof_index> &massless,
                 const std::string                               &where);
 
+    /** The velocity at t = 0 from the body's Initial velocity. */
+    void
+    set_initial_velocity(const Body &body);
+
     /**
-     * The velocity at t = 0 from the body's Initial velocity, and the
-     * acceleration that balances `residual` (F_ext - F_int at t = 0 on
-     * every dof, unconstrained: M a_0 = R_0 on the free dofs, condensed
-     * by the body's constraints; zero on the massless ones).
+     * The acceleration at t = 0 that balances `residual` (F_ext - F_int -
+     * the viscous force at t = 0 on every dof, unconstrained: M a_0 = R_0
+     * - a_M M v_0 on the free dofs, condensed by the body's constraints;
+     * zero on the massless ones).
      */
     void
     initialize(const Body &body, const dealii::Vector<double> &residual);
@@ -95,6 +99,37 @@ namespace glissade
                    const dealii::Vector<double>                       &u,
                    dealii::FullMatrix<double> &cell_matrix,
                    dealii::Vector<double>     &cell_rhs) const;
+
+    /** Stiffness damping's a_K (Time integration/Stiffness damping). */
+    double
+    stiffness_damping() const
+    {
+      return settings.stiffness_damping;
+    }
+
+    /** dv/du of the step's end state (0 before the first step). */
+    double
+    velocity_factor() const
+    {
+      return step > 0. ? c_v : 0.;
+    }
+
+    /**
+     * The velocity v(u) of the dofs `dofs` at the displacement u: the
+     * scheme's end-state velocity in a step, the initial one before.
+     */
+    void
+    cell_velocity(const std::vector<dealii::types::global_dof_index> &dofs,
+                  const dealii::Vector<double>                       &u,
+                  std::vector<double> &velocity) const;
+
+    /** The viscous forces (stiffness damping) of the body's last assembly,
+     *  on every dof. */
+    void
+    set_viscous_forces(const dealii::Vector<double> &forces)
+    {
+      viscous_forces = forces;
+    }
 
     /**
      * After a converged step to the body's displacement: a and v of the
@@ -169,5 +204,7 @@ namespace glissade
     /** The forces of the last accepted state, for the next step's work:
      *  loads and supports, contact, damping. */
     dealii::Vector<double> applied_before, contact_before, damping_before;
+    /** The last assembly's viscous forces (stiffness damping). */
+    dealii::Vector<double> viscous_forces;
   };
 } // namespace glissade

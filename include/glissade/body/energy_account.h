@@ -13,7 +13,7 @@ namespace glissade
    * - by the contact forces, split into what friction dissipates (- r_t
    *   times the slip of each step, at each slave node) and the rest, what
    *   the normal contact dissipates (at impacts and releases),
-   * - by the mass-proportional damping (dissipated).
+   * - by the damping, mass and stiffness proportional (dissipated).
    * The balance K + U - K_0 - U_0 - W_loads - W_contact + D_damping is zero
    * for an exact integration; Newmark's trapezoidal rule makes it so for a
    * linear body, and its departure measures the scheme's energy error.

@@ -215,6 +215,11 @@ namespace glissade
     bool redistribute_contact_mass = true;
     /** Rayleigh damping C = a_M M (mass-proportional). */
     double mass_damping = 0.;
+    /**
+     * Rayleigh damping proportional to the stiffness, a_K: a Kelvin-Voigt
+     * stress a_K D_0 : dE/dt (ViscousStressPoint).
+     */
+    double stiffness_damping = 0.;
 
     bool
     dynamic() const
