@@ -190,6 +190,10 @@ namespace glissade
     const double thickness = description.material.thickness;
     const bool   axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    // Small strain: the virtual strains and the equilibrium on the
+    // undeformed body (F = I in them, no geometric stiffness).
+    const bool small_strain =
+      description.material.kinematics == Kinematics::small_strain;
     const auto         boundary_evaluator = element_space->create_evaluator();
     const unsigned int n_local            = boundary_evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n_local);
@@ -298,7 +302,9 @@ namespace glissade
                 grad[i] = evaluator.shape_grad(i, q);
                 H[component[i]] += solution(data.local_dofs[i]) * grad[i];
               }
-            const Tensor<2, 2> F = unit_symmetric_tensor<2>() + H;
+            const Tensor<2, 2> F = small_strain ?
+                                     Tensor<2, 2>(unit_symmetric_tensor<2>()) :
+                                     unit_symmetric_tensor<2>() + H;
             // Axisymmetric: the hoop stretch F_33 = 1 + u_r / r, r the
             // reference radius of the point (> 0 at every quadrature point
             // of a mesh in r >= 0), and the volume of the ring 2 pi r dA.
@@ -312,7 +318,8 @@ namespace glissade
                             evaluator.shape_value(i, q);
                 hoop /= r;
               }
-            const double J = determinant(F) * (1. + hoop);
+            const double J =
+              determinant(unit_symmetric_tensor<2>() + H) * (1. + hoop);
             if (!(J > 0.) || !std::isfinite(J) || !(1. + hoop > 0.))
               {
                 std::ostringstream why;
@@ -358,9 +365,9 @@ namespace glissade
                 if (axisymmetric)
                   {
                     // dE_33 = F_33 du_r / r; the hoop stress works on it.
-                    dE33[i] = c == 0 ?
-                                (1. + hoop) * evaluator.shape_value(i, q) / r :
-                                0.;
+                    dE33[i] = c == 0 ? (small_strain ? 1. : 1. + hoop) *
+                                         evaluator.shape_value(i, q) / r :
+                                       0.;
                     D_dE[i] += response.hoop_coupling * dE33[i];
                     dS33[i] = response.hoop_coupling * dE[i] +
                               response.hoop_stiffness * dE33[i];
@@ -374,13 +381,14 @@ namespace glissade
                 for (unsigned int j = 0; j <= i; ++j)
                   {
                     double k = dE[j] * D_dE[i];
-                    if (component[i] == component[j])
+                    if (component[i] == component[j] && !small_strain)
                       k += S_grad_i * grad[j];
                     if (axisymmetric)
                       {
                         k += dE33[j] * dS33[i];
                         // d(dE_33)/du_r = N_i N_j / r^2 (radial dofs)
-                        if (component[i] == 0 && component[j] == 0)
+                        if (component[i] == 0 && component[j] == 0 &&
+                            !small_strain)
                           k += response.hoop_stress *
                                evaluator.shape_value(i, q) *
                                evaluator.shape_value(j, q) / (r * r);
@@ -389,20 +397,27 @@ namespace glissade
                   }
               }
             if (damping_a_K > 0.)
-              add_viscous_stress_terms(
-                damping_a_K,
-                inertia_terms->velocity_factor(),
-                ViscousStressPoint{at_rest, F, 1. + hoop, r, axisymmetric, dV},
-                evaluator,
-                q,
-                component,
-                grad,
-                dE,
-                dE33,
-                scratch.cell_velocity,
-                cell_matrix,
-                cell_rhs,
-                data.viscous_force);
+              add_viscous_stress_terms(damping_a_K,
+                                       inertia_terms->velocity_factor(),
+                                       ViscousStressPoint{at_rest,
+                                                          F,
+                                                          small_strain ?
+                                                            1. :
+                                                            1. + hoop,
+                                                          r,
+                                                          axisymmetric,
+                                                          small_strain,
+                                                          dV},
+                                       evaluator,
+                                       q,
+                                       component,
+                                       grad,
+                                       dE,
+                                       dE33,
+                                       scratch.cell_velocity,
+                                       cell_matrix,
+                                       cell_rhs,
+                                       data.viscous_force);
           }
         for (unsigned int i = 0; i < n_local; ++i)
           for (unsigned int j = i + 1; j < n_local; ++j)
@@ -510,6 +525,8 @@ namespace glissade
     const double thickness = description.material.thickness;
     const bool   axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
+    const bool small_strain =
+      description.material.kinematics == Kinematics::small_strain;
     const unsigned int n_local = evaluator.dofs_per_cell();
 
     for (const unsigned int f : cell->face_indices())
@@ -548,14 +565,17 @@ namespace glissade
                 // with cof(F) linear in F in 2D, hence the simple tangent.
                 // Axisymmetric: da is the current ring, 2 pi x_r ds, that
                 // is F_33 = x_r / R times the reference one (3D Nanson).
-                const Tensor<2, 2> F = unit_symmetric_tensor<2>() +
-                                       evaluator.gradient(cell_values, q);
+                // (small strain: on the undeformed body, a dead load)
+                const Tensor<2, 2> F =
+                  small_strain ? Tensor<2, 2>(unit_symmetric_tensor<2>()) :
+                                 unit_symmetric_tensor<2>() +
+                                   evaluator.gradient(cell_values, q);
                 const double       p = load.function->value(X);
                 const Tensor<1, 2> cof_F_N0(
                   {F[1][1] * N0[0] - F[1][0] * N0[1],
                    -F[0][1] * N0[0] + F[0][0] * N0[1]});
                 const double hoop_stretch =
-                  axisymmetric ?
+                  axisymmetric && !small_strain ?
                     1. + evaluator.value(cell_values, q)[0] / X[0] :
                     1.;
                 for (unsigned int i = 0; i < n_local; ++i)
@@ -563,7 +583,7 @@ namespace glissade
                     const unsigned int ci = evaluator.displacement_component(i);
                     const double       Ni = evaluator.shape_value(i, q);
                     cell_rhs(i) -= p * Ni * cof_F_N0[ci] * hoop_stretch * dA;
-                    for (unsigned int j = 0; j < n_local; ++j)
+                    for (unsigned int j = 0; j < n_local && !small_strain; ++j)
                       {
                         const unsigned int cj =
                           evaluator.displacement_component(j);
@@ -711,12 +731,15 @@ namespace glissade
             diagonal += k;
           }
       }
-    factorization.factorize(tangent);
+    const bool refactored = factorization.factorize(tangent);
     for (unsigned int s = 0; s < springs.size(); ++s)
       tangent.diag_element(springs[s].first) = assembled[s];
-    // The compliance of the previous factorisation is stale.
-    contact_rows_resolved.clear();
-    compliance_columns.clear();
+    // The compliance of a previous factorisation is stale.
+    if (refactored)
+      {
+        contact_rows_resolved.clear();
+        compliance_columns.clear();
+      }
   }
 
 

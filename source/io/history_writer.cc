@@ -252,7 +252,18 @@ namespace glissade
     for (const auto &evaluate : evaluators)
       evaluate(row);
     rows.push_back(row);
+    if (std::chrono::steady_clock::now() - last_write >=
+        std::chrono::seconds(1))
+      write();
+  }
 
+
+
+  void
+  HistoryWriter::write()
+  {
+    if (rows_written == rows.size() && rows_written > 0)
+      return;
     AtomicFile file(filename);
     auto      &out = file.stream();
     for (unsigned int c = 0; c < columns.size(); ++c)
@@ -265,5 +276,7 @@ namespace glissade
         out << '\n';
       }
     file.commit();
+    rows_written = rows.size();
+    last_write   = std::chrono::steady_clock::now();
   }
 } // namespace glissade

@@ -74,7 +74,8 @@ namespace glissade
           << " LU (a tangent that is not positive definite, or not "
              "symmetric); "
           << s.n_reused_factorizations
-          << " last corrections with the previous one\n";
+          << " last corrections with the previous one; "
+          << s.n_unchanged_tangents << " tangents unchanged (kept)\n";
     return table.str();
   }
 } // namespace glissade

@@ -49,7 +49,7 @@ namespace glissade
 
 
 
-  void
+  bool
   DirectSolver::factorize(const SparseMatrix<double> &matrix)
   {
     // deal.II stores rows (diagonal first); UMFPACK wants sorted columns.
@@ -65,7 +65,8 @@ namespace glissade
         column_index.resize(matrix.n_nonzero_elements());
         values.resize(matrix.n_nonzero_elements());
       }
-    long                                 k = 0;
+    long                                 k         = 0;
+    bool                                 unchanged = same_pattern;
     std::vector<std::pair<long, double>> row;
     for (long i = 0; i < n; ++i)
       {
@@ -78,6 +79,7 @@ namespace glissade
         row_start[i] = k;
         for (const auto &[j, v] : row)
           {
+            unchanged = unchanged && values[k] == v && column_index[k] == j;
             column_index[k] = j;
             values[k]       = v;
             ++k;
@@ -85,6 +87,12 @@ namespace glissade
       }
     row_start[n] = k;
     pattern      = &sp;
+    if (unchanged && factorization_current)
+      {
+        ++n_reused;
+        return false;
+      }
+    factorization_current = true;
     if (!same_pattern && symbolic != nullptr)
       umfpack_dl_free_symbolic(&symbolic);
 
@@ -104,10 +112,11 @@ namespace glissade
             cholesky_used = true;
             ++n_cholesky;
             free_numeric();
-            return;
+            return true;
           }
       }
     factorize_lu();
+    return true;
   }
 
 
@@ -154,7 +163,15 @@ namespace glissade
   DirectSolver::use_cholesky(const bool               symmetric_matrices,
                              const std::vector<long> &last_unknowns)
   {
-    symmetric = symmetric_matrices;
+    std::vector<long> sorted = last_unknowns;
+    std::sort(sorted.begin(), sorted.end());
+    sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+    // (another elimination order, or method: the held factorisation is not
+    // the one asked for)
+    if (symmetric_matrices != symmetric || sorted != last_unknowns_sorted)
+      factorization_current = false;
+    last_unknowns_sorted = sorted;
+    symmetric            = symmetric_matrices;
     schur.set_last_unknowns(last_unknowns);
   }
 

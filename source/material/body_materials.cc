@@ -14,7 +14,8 @@ namespace glissade
     : body_material{Material::create(description.law,
                                      description.young_modulus,
                                      description.poisson_ratio,
-                                     description.hypothesis),
+                                     description.hypothesis,
+                                     description.kinematics),
                     description.young_modulus,
                     "Material",
                     description.density}
@@ -40,7 +41,8 @@ namespace glissade
                                  Entry{Material::create(region.law,
                                                         region.young_modulus,
                                                         region.poisson_ratio,
-                                                        description.hypothesis),
+                                                        description.hypothesis,
+                                                        description.kinematics),
                                        region.young_modulus,
                                        "Material " + region.name,
                                        region.density});

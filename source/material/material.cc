@@ -42,10 +42,15 @@ namespace glissade
 
 
   Material::Material(std::unique_ptr<HyperelasticLaw> law,
-                     const PlaneHypothesis            hypothesis)
+                     const PlaneHypothesis            hypothesis,
+                     const Kinematics                 kinematics)
     : law(std::move(law))
     , plane_hypothesis(hypothesis)
-  {}
+    , kinematics(kinematics)
+  {
+    SymmetricTensor<2, 3> S;
+    this->law->evaluate(SymmetricTensor<2, 3>(), S, tangent_at_rest);
+  }
 
 
 
@@ -53,7 +58,8 @@ namespace glissade
   Material::create(const std::string    &law_name,
                    const double          young_modulus,
                    const double          poisson_ratio,
-                   const PlaneHypothesis hypothesis)
+                   const PlaneHypothesis hypothesis,
+                   const Kinematics      kinematics)
   {
     const double E      = young_modulus;
     const double nu     = poisson_ratio;
@@ -61,7 +67,7 @@ namespace glissade
     const double mu     = E / (2. * (1. + nu));
     for (const auto &[name, create_law] : laws())
       if (name == law_name)
-        return Material(create_law(lambda, mu), hypothesis);
+        return Material(create_law(lambda, mu), hypothesis, kinematics);
     throw InputError("Material/Law",
                      "unknown law '" + law_name +
                        "' (known: " + text::joined(law_names(), ", ") + ")");
@@ -84,15 +90,45 @@ namespace glissade
 
 
   SymmetricTensor<2, 3>
-  Material::strain(const Tensor<2, 2> &H, const double e33)
+  Material::strain(const Tensor<2, 2> &H, const double e33) const
   {
+    const bool            quadratic = kinematics == Kinematics::large_strain;
     SymmetricTensor<2, 3> E;
     for (unsigned int i = 0; i < 2; ++i)
       for (unsigned int j = i; j < 2; ++j)
         E[i][j] =
-          0.5 * (H[i][j] + H[j][i] + H[0][i] * H[0][j] + H[1][i] * H[1][j]);
+          0.5 * (H[i][j] + H[j][i] +
+                 (quadratic ? H[0][i] * H[0][j] + H[1][i] * H[1][j] : 0.));
     E[2][2] = e33;
     return E;
+  }
+
+
+
+  double
+  Material::hoop_strain(const double hoop_strain_ratio) const
+  {
+    // E_33 = ((1 + h)^2 - 1) / 2 with h = u_r / r, without cancellation
+    // for a small h; h itself at small strain.
+    return kinematics == Kinematics::large_strain ?
+             hoop_strain_ratio + 0.5 * hoop_strain_ratio * hoop_strain_ratio :
+             hoop_strain_ratio;
+  }
+
+
+
+  void
+  Material::stress(const SymmetricTensor<2, 3> &E,
+                   SymmetricTensor<2, 3>       &S,
+                   SymmetricTensor<4, 3>       &D) const
+  {
+    if (kinematics == Kinematics::large_strain)
+      law->evaluate(E, S, D);
+    else
+      {
+        D = tangent_at_rest;
+        S = D * E;
+      }
   }
 
 
@@ -109,7 +145,7 @@ namespace glissade
     double e33 = 0.;
     for (unsigned int it = 0; it < 50; ++it)
       {
-        law->evaluate(strain(H, e33), S, D);
+        stress(strain(H, e33), S, D);
         double next = e33 - S[2][2] / D[2][2][2][2];
         if (!(1. + 2. * next > 0.))
           next = 0.5 * (e33 - 0.5); // halfway to C_33 = 0
@@ -119,7 +155,7 @@ namespace glissade
         if (done)
           break;
       }
-    law->evaluate(strain(H, e33), S, D);
+    stress(strain(H, e33), S, D);
     return e33;
   }
 
@@ -136,20 +172,19 @@ namespace glissade
     switch (plane_hypothesis)
       {
         case PlaneHypothesis::plane_strain:
-          law->evaluate(strain(H, 0.), S, D);
+          stress(strain(H, 0.), S, D);
           break;
         case PlaneHypothesis::plane_stress:
-          response.out_of_plane_stretch =
-            std::sqrt(1. + 2. * solve_out_of_plane(H, S, D));
+          {
+            const double e33 = solve_out_of_plane(H, S, D);
+            response.out_of_plane_stretch =
+              kinematics == Kinematics::large_strain ?
+                std::sqrt(1. + 2. * e33) :
+                1. + e33;
+          }
           break;
         case PlaneHypothesis::axisymmetric:
-          // E_33 = ((1 + h)^2 - 1) / 2 with h = u_r / r, without
-          // cancellation for a small h.
-          law->evaluate(strain(H,
-                               hoop_strain_ratio +
-                                 0.5 * hoop_strain_ratio * hoop_strain_ratio),
-                        S,
-                        D);
+          stress(strain(H, hoop_strain(hoop_strain_ratio)), S, D);
           response.out_of_plane_stretch = 1. + hoop_strain_ratio;
           response.hoop_stress          = S[2][2];
           response.hoop_stiffness       = D[2][2][2][2];
@@ -186,8 +221,11 @@ namespace glissade
     if (plane_hypothesis == PlaneHypothesis::plane_stress)
       e33 = solve_out_of_plane(H, S, D);
     else if (plane_hypothesis == PlaneHypothesis::axisymmetric)
-      e33 = hoop_strain_ratio + 0.5 * hoop_strain_ratio * hoop_strain_ratio;
-    return law->energy(strain(H, e33));
+      e33 = hoop_strain(hoop_strain_ratio);
+    const SymmetricTensor<2, 3> E = strain(H, e33);
+    return kinematics == Kinematics::large_strain ?
+             law->energy(E) :
+             0.5 * (E * (tangent_at_rest * E));
   }
 
 
@@ -204,9 +242,11 @@ namespace glissade
     else
       {
         if (plane_hypothesis == PlaneHypothesis::axisymmetric)
-          e33 = hoop_strain_ratio + 0.5 * hoop_strain_ratio * hoop_strain_ratio;
-        law->evaluate(strain(H, e33), S, D);
+          e33 = hoop_strain(hoop_strain_ratio);
+        stress(strain(H, e33), S, D);
       }
+    if (kinematics == Kinematics::small_strain)
+      return S;
 
     Tensor<2, 3> F;
     for (unsigned int i = 0; i < 2; ++i)

@@ -74,6 +74,18 @@ namespace glissade
                         "and contact forces are for the full turn, 2 pi r "
                         "times a force per unit length of the circle; "
                         "Thickness is not used).");
+      prm.declare_entry(
+        "Kinematics",
+        "large strain",
+        Patterns::Selection("large strain|small strain"),
+        "large strain: total Lagrangian, the Green-Lagrange strain and the "
+        "Law at any rotation. small strain: linear elasticity, epsilon = "
+        "sym(grad u) and sigma = D_0 : epsilon with D_0 the Law's tangent "
+        "at rest (its Lame constants), equilibrium and pressures on the "
+        "undeformed body: a Newton step solves it exactly (contact aside), "
+        "and a dynamic run keeps one factorisation; valid while strains and "
+        "rotations stay small (contact is still detected on the deformed "
+        "body).");
       prm.declare_entry("Density",
                         "0",
                         Patterns::Double(0.),
@@ -95,8 +107,8 @@ namespace glissade
         "have a material of their own, each set in a subsection "
         "'Material <name>' beside this one (Law, Young modulus, Poisson "
         "ratio; an entry left unset is this subsection's). Cells of other "
-        "Physical Surfaces take this subsection's material. Hypothesis and "
-        "Thickness belong to the body.");
+        "Physical Surfaces take this subsection's material. Hypothesis, "
+        "Kinematics and Thickness belong to the body.");
     }
     prm.leave_subsection();
     for (const std::string &region : regions)
@@ -124,7 +136,10 @@ namespace glissade
                    name == "axisymmetric" ? PlaneHypothesis::axisymmetric :
                                             PlaneHypothesis::plane_strain;
     }
-    thickness = prm.get_double("Thickness");
+    kinematics = prm.get("Kinematics") == "small strain" ?
+                   Kinematics::small_strain :
+                   Kinematics::large_strain;
+    thickness  = prm.get_double("Thickness");
     const std::vector<std::string> region_names =
       Utilities::split_string_list(prm.get("Regions"), ',');
     prm.leave_subsection();

@@ -463,6 +463,7 @@ namespace glissade
               }
             catch (...)
               {
+                history->write();
                 write_last_converged_state(increment - 1);
                 throw;
               }
@@ -494,6 +495,7 @@ namespace glissade
                          increment % scene.checkpoint.interval == 0))
               {
                 stats.wall_seconds = wall_before + wall.wall_time();
+                history->write();
                 write_checkpoint(increment);
                 if (scene.output.progress)
                   std::cout << "checkpoint after increment " << increment
@@ -506,6 +508,7 @@ namespace glissade
               }
             if (const int signal = interruption::signal_received())
               {
+                history->write();
                 stats.wall_seconds = wall_before + wall.wall_time();
                 if (!(scene.checkpoint.interval > 0 &&
                       increment % scene.checkpoint.interval == 0))
@@ -526,6 +529,7 @@ namespace glissade
           }
         t_begin = t_end;
       }
+    history->write();
     stats.wall_seconds = wall_before + wall.wall_time();
 
     write_summary_file(
@@ -563,6 +567,7 @@ namespace glissade
       {
         total.n_cholesky += body->direct_solver().n_cholesky;
         total.n_lu += body->direct_solver().n_lu;
+        total.n_unchanged_tangents += body->direct_solver().n_reused;
       }
     return total;
   }

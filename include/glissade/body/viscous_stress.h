@@ -43,6 +43,8 @@ namespace glissade
     /** The reference radius of the point (axisymmetric only). */
     double radius;
     bool   axisymmetric;
+    /** Small strain: no geometric term (F = I in the virtual strains). */
+    bool small_strain;
     /** The volume the point stands for (2 pi r dA or thickness dA). */
     double dV;
   };

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <glissade/description/kinematics.h>
 #include <glissade/description/plane_hypothesis.h>
 
 #include <string>
@@ -122,6 +123,7 @@ namespace glissade
     double          young_modulus = 1.;
     double          poisson_ratio = 0.3;
     PlaneHypothesis hypothesis    = PlaneHypothesis::plane_strain;
+    Kinematics      kinematics    = Kinematics::large_strain;
     double          thickness     = 1.;
     /** Mass per unit reference volume: inertia (Time integration) and
      *  Gravity need it; 0 (the default) for a scene without either. */

@@ -31,6 +31,9 @@ namespace glissade
     /** Last corrections solved with the previous factorisation
      *  (Newton/Last correction with previous tangent). */
     unsigned int n_reused_factorizations = 0;
+    /** Tangents equal to the one last factorised, kept (a linear body at
+     *  a constant time step). */
+    unsigned int n_unchanged_tangents = 0;
   };
 
   /** "N increments, M Newton iterations, ... s wall (assembly ...)";

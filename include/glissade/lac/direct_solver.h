@@ -56,8 +56,14 @@ namespace glissade
       unsymmetric_ordering = true;
     }
 
-    /** Cholesky or LU of A (analysis reused while the pattern is the same). */
-    void
+    /**
+     * Cholesky or LU of A (analysis reused while the pattern is the same).
+     * A matrix equal, entry for entry, to the one last factorised (a linear
+     * body's dynamic tangent at a constant time step, step after step) is
+     * not factorised again: returns false then, true after a new
+     * factorisation.
+     */
+    bool
     factorize(const dealii::SparseMatrix<double> &matrix);
 
     /** x <- A^-1 x. */
@@ -92,6 +98,8 @@ namespace glissade
     double numeric_seconds  = 0.;
     /** Factorisations by each method (LU counts the Cholesky fall-backs). */
     unsigned int n_cholesky = 0, n_lu = 0;
+    /** Matrices found equal to the last factorised one (kept). */
+    unsigned int n_reused = 0;
 
   private:
     void
@@ -107,9 +115,13 @@ namespace glissade
     void                          *numeric  = nullptr;
     mutable std::vector<double>    solution;
 
-    bool          symmetric            = false;
-    bool          unsymmetric_ordering = false;
-    bool          cholesky_used        = false;
-    SchurCholesky schur;
+    bool symmetric = false;
+    /** Whether a factorisation of `values` in the current elimination
+     *  order (the last unknowns) is held. */
+    bool              factorization_current = false;
+    std::vector<long> last_unknowns_sorted;
+    bool              unsymmetric_ordering = false;
+    bool              cholesky_used        = false;
+    SchurCholesky     schur;
   };
 } // namespace glissade

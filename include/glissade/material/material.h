@@ -3,6 +3,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <glissade/description/kinematics.h>
 #include <glissade/description/plane_hypothesis.h>
 #include <glissade/material/hyperelastic_law.h>
 
@@ -44,12 +45,18 @@ namespace glissade
    * kinematic, F_33 = 1 + u_r / r, so E_33 = u_r / r + (u_r / r)^2 / 2 is
    * given and S_33 with its tangent terms returned beside the in-plane
    * ones.
+   *
+   * Small strain (Kinematics): the strain is epsilon = sym(H) (E_33 = u_r
+   * / r, axisymmetric) and the stress D_0 : epsilon, D_0 the law's tangent
+   * at rest; the same hypotheses reduce it to the plane, and the Cauchy
+   * stress is that stress (no push-forward).
    */
   class Material
   {
   public:
     Material(std::unique_ptr<HyperelasticLaw> law,
-             const PlaneHypothesis            hypothesis);
+             const PlaneHypothesis            hypothesis,
+             const Kinematics kinematics = Kinematics::large_strain);
 
     /** The names create() knows, for the .prm's patterns and checks. */
     static const std::vector<std::string> &
@@ -60,7 +67,8 @@ namespace glissade
     create(const std::string    &law_name,
            const double          young_modulus,
            const double          poisson_ratio,
-           const PlaneHypothesis hypothesis);
+           const PlaneHypothesis hypothesis,
+           const Kinematics      kinematics = Kinematics::large_strain);
 
     /**
      * `hoop_strain_ratio` is u_r / r at the point (axisymmetric bodies
@@ -89,6 +97,12 @@ namespace glissade
       return plane_hypothesis;
     }
 
+    bool
+    small_strain() const
+    {
+      return kinematics == Kinematics::small_strain;
+    }
+
     std::string
     law_name() const
     {
@@ -96,9 +110,20 @@ namespace glissade
     }
 
   private:
-    /** The 3D Green-Lagrange strain for an in-plane H and a given E_33. */
-    static dealii::SymmetricTensor<2, 3>
-    strain(const dealii::Tensor<2, 2> &H, const double e33);
+    /** The 3D strain for an in-plane H and a given E_33: Green-Lagrange's,
+     *  or sym(H) at small strain. */
+    dealii::SymmetricTensor<2, 3>
+    strain(const dealii::Tensor<2, 2> &H, const double e33) const;
+
+    /** E_33 of the hoop strain ratio u_r / r (axisymmetric). */
+    double
+    hoop_strain(const double hoop_strain_ratio) const;
+
+    /** S and D = dS/dE at the strain E: the law's, or D_0 : E and D_0. */
+    void
+    stress(const dealii::SymmetricTensor<2, 3> &E,
+           dealii::SymmetricTensor<2, 3>       &S,
+           dealii::SymmetricTensor<4, 3>       &D) const;
 
     /** Solves S_33 = 0 for E_33 (plane stress); returns E_33. */
     double
@@ -108,5 +133,8 @@ namespace glissade
 
     std::shared_ptr<const HyperelasticLaw> law;
     PlaneHypothesis                        plane_hypothesis;
+    Kinematics                             kinematics;
+    /** The law's tangent at rest (small strain). */
+    dealii::SymmetricTensor<4, 3> tangent_at_rest;
   };
 } // namespace glissade
