@@ -194,6 +194,8 @@ namespace glissade
     // undeformed body (F = I in them, no geometric stiffness).
     const bool small_strain =
       description.material.kinematics == Kinematics::small_strain;
+    if (small_strain && kept_linear_stiffness.empty())
+      kept_linear_stiffness.resize(dofs.get_triangulation().n_active_cells());
     const auto         boundary_evaluator = element_space->create_evaluator();
     const unsigned int n_local            = boundary_evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n_local);
@@ -239,6 +241,10 @@ namespace glissade
                           dS33 = std::vector<double>(grad.size());
       // (stiffness damping: the cell's velocity dofs)
       std::vector<double> cell_velocity = std::vector<double>(grad.size());
+      // (small strain: the cell's displacement or velocity dofs, and K_e
+      // times them)
+      Vector<double> cell_values  = Vector<double>(grad.size()),
+                     cell_product = Vector<double>(grad.size());
     };
     struct CellContribution
     {
@@ -272,7 +278,6 @@ namespace glissade
         auto          &cell_rhs    = data.cell_rhs;
         data.cell                  = cell;
         data.rejection.clear();
-        evaluator.reinit(cell);
         cell->get_dof_indices(data.local_dofs);
         cell_matrix        = 0.;
         cell_rhs           = 0.;
@@ -285,13 +290,25 @@ namespace glissade
         MaterialPointResponse at_rest;
         if (damping_a_K > 0.)
           {
-            at_rest = cell_material.evaluate(Tensor<2, 2>(), 0.);
+            if (!small_strain)
+              at_rest = cell_material.evaluate(Tensor<2, 2>(), 0.);
             inertia_terms->cell_velocity(data.local_dofs,
                                          solution,
                                          scratch.cell_velocity);
           }
+        // A small-strain cell's stiffness K_e does not depend on u: it is
+        // integrated once and kept, and its forces are K_e u_e (each cell
+        // writes its own slot: safe on every thread).
+        FullMatrix<double> &kept =
+          small_strain ? kept_linear_stiffness[cell->active_cell_index()] :
+                         cell_matrix;
+        const bool integrate_points = !small_strain || kept.empty();
+        if (integrate_points)
+          evaluator.reinit(cell);
 
-        for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
+        for (unsigned int q = 0;
+             integrate_points && q < evaluator.n_quadrature_points();
+             ++q)
           {
             // Every shape function is primitive: Grad N_i has a single
             // non-zero row (its component c_i), which makes every
@@ -396,7 +413,7 @@ namespace glissade
                     cell_matrix(i, j) += k * dV;
                   }
               }
-            if (damping_a_K > 0.)
+            if (damping_a_K > 0. && !small_strain)
               add_viscous_stress_terms(damping_a_K,
                                        inertia_terms->velocity_factor(),
                                        ViscousStressPoint{at_rest,
@@ -419,9 +436,36 @@ namespace glissade
                                        cell_rhs,
                                        data.viscous_force);
           }
-        for (unsigned int i = 0; i < n_local; ++i)
-          for (unsigned int j = i + 1; j < n_local; ++j)
-            cell_matrix(i, j) = cell_matrix(j, i);
+        if (integrate_points)
+          for (unsigned int i = 0; i < n_local; ++i)
+            for (unsigned int j = i + 1; j < n_local; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+        if (small_strain)
+          {
+            if (integrate_points)
+              kept = cell_matrix;
+            else
+              {
+                // F_int = K_e u_e, exactly (linear elasticity).
+                cell_matrix = kept;
+                for (unsigned int i = 0; i < n_local; ++i)
+                  scratch.cell_values(i) = solution(data.local_dofs[i]);
+                kept.vmult(scratch.cell_product, scratch.cell_values);
+                cell_rhs -= scratch.cell_product;
+              }
+            // The viscous stress a_K D_0 : d(epsilon)/dt: a_K K_e v_e, its
+            // tangent a_K c_v K_e.
+            if (damping_a_K > 0.)
+              {
+                for (unsigned int i = 0; i < n_local; ++i)
+                  scratch.cell_values(i) = scratch.cell_velocity[i];
+                kept.vmult(data.viscous_force, scratch.cell_values);
+                data.viscous_force *= damping_a_K;
+                cell_rhs -= data.viscous_force;
+                cell_matrix.add(damping_a_K * inertia_terms->velocity_factor(),
+                                kept);
+              }
+          }
         // A dynamic scheme's inertia (BodyInertia: read only, so shared by
         // the threads).
         if (inertia_terms)

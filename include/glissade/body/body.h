@@ -434,6 +434,9 @@ namespace glissade
     dealii::DoFHandler<2>          dofs;
     std::unique_ptr<BodyMaterials> materials_of_cells;
     std::unique_ptr<BodyInertia>   inertia_terms;
+    /** Small strain: each cell's stiffness K_e, integrated once (empty
+     *  until then; at large strain unused). */
+    std::vector<dealii::FullMatrix<double>> kept_linear_stiffness;
     /** Boundary conditions/Gravity: an acceleration of x, y, t, or none. */
     std::unique_ptr<dealii::Function<2>> gravity;
     std::unique_ptr<BoundaryConditions>  boundary_conditions;
