@@ -10,7 +10,18 @@ namespace glissade
 
   namespace
   {
-    using VertexRule = ContactDescription::VertexRule;
+    /**
+     * How a faceted master resolves the normal a vertex lacks (its own
+     * entry, Faceted vertex rule; contact.md, "The faceted master at a
+     * vertex"): the segment kept over the increment, the closest point,
+     * or the vertex's mean normal.
+     */
+    enum class VertexRule
+    {
+      kept_segment,
+      closest_point,
+      vertex_normal
+    };
 
     /**
      * The element edges themselves (the paper's Q4): a piecewise linear
@@ -26,7 +37,10 @@ namespace glissade
         : CurveSurface(*context.master,
                        context.description.master_boundary,
                        context.description.entry + "/Master boundary")
-        , rule(context.description.vertex_rule)
+        , rule(
+            context.description.surface_settings.has_value() ?
+              std::any_cast<VertexRule>(context.description.surface_settings) :
+              VertexRule::vertex_normal)
       {
         curve = std::make_unique<FacetedCurve>(chain.closed);
       }
@@ -163,5 +177,43 @@ namespace glissade
   make_faceted_surface(const SurfaceContext &context)
   {
     return std::make_unique<FacetedSurface>(context);
+  }
+
+
+
+  // The faceted surface's own entry, in the pair's subsection.
+  void
+  declare_faceted_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Faceted vertex rule",
+      "vertex normal",
+      Patterns::Selection("kept segment|closest point|vertex normal"),
+      "What a faceted master does at a vertex, where its normal jumps "
+      "(doc/contact.md). vertex normal: a node on a vertex (to 1e-9 of "
+      "the segment), in the corner's wedge, kept on a facet that it has "
+      "just passed the end of, or held there by the last iteration meets "
+      "the vertex with the mean normal of the two facets and their cone: "
+      "it stays at the vertex while its reaction lies between the facets' "
+      "normals (widened by friction's angle) and leaves it along a facet "
+      "otherwise. Objective under a rigid turn, with or without friction. "
+      "closest point: the closest point at every iteration, a node exactly "
+      "on a vertex taking the segment leaving it. kept segment (the first "
+      "rule, the default of older versions): a node keeps its segment over "
+      "the increment, up to half its length past either end. These two "
+      "pick one facet at a vertex, which no rigid turn leaves alone: they "
+      "are kept so that scenes that ask for them give the answers they "
+      "gave. Other surfaces ignore this entry.");
+  }
+
+
+
+  std::any
+  parse_faceted_parameters(const ParameterHandler &prm, const std::string &)
+  {
+    const std::string rule = prm.get("Faceted vertex rule");
+    return rule == "closest point" ? VertexRule::closest_point :
+           rule == "vertex normal" ? VertexRule::vertex_normal :
+                                     VertexRule::kept_segment;
   }
 } // namespace glissade

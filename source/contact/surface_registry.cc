@@ -9,6 +9,10 @@ namespace glissade
   // Each surface's factory, defined in the surface's own file.
   std::unique_ptr<MasterSurface>
   make_faceted_surface(const SurfaceContext &);
+  void
+  declare_faceted_parameters(ParameterHandler &);
+  std::any
+  parse_faceted_parameters(const ParameterHandler &, const std::string &);
   std::unique_ptr<MasterSurface>
   make_bspline_surface(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
@@ -32,7 +36,9 @@ namespace glissade
       {"faceted",
        Kind::deformable,
        "the element edges (the paper's Q4)",
-       make_faceted_surface},
+       make_faceted_surface,
+       declare_faceted_parameters,
+       parse_faceted_parameters},
       {"bspline",
        Kind::deformable,
        "cubic uniform interpolating B-spline through the master nodes, "
@@ -74,6 +80,30 @@ namespace glissade
                                                     "/Obstacle/Type"),
                      "unknown surface '" + name +
                        "' (known: " + names_as_pattern(kind) + ")");
+  }
+
+
+
+  void
+  SurfaceRegistry::declare_parameters(ParameterHandler &prm, const Kind kind)
+  {
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.declare_parameters)
+        entry.declare_parameters(prm);
+  }
+
+
+
+  std::any
+  SurfaceRegistry::parse_parameters(const ParameterHandler &prm,
+                                    const Kind              kind,
+                                    const std::string      &name,
+                                    const std::string      &where)
+  {
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.name == name && entry.parse_parameters)
+        return entry.parse_parameters(prm, where);
+    return {};
   }
 
 

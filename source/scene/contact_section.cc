@@ -114,25 +114,8 @@ namespace glissade
       "How a B-spline master receives the reaction: segment hands it to "
       "the two nodes of the underlying straight segment (the paper); "
       "spline uses the spline's own weights (consistent, symmetric W).");
-    prm.declare_entry(
-      "Faceted vertex rule",
-      "vertex normal",
-      Patterns::Selection("kept segment|closest point|vertex normal"),
-      "What a faceted master does at a vertex, where its normal jumps "
-      "(doc/contact.md). vertex normal: a node on a vertex (to 1e-9 of "
-      "the segment), in the corner's wedge, kept on a facet that it has "
-      "just passed the end of, or held there by the last iteration meets "
-      "the vertex with the mean normal of the two facets and their cone: "
-      "it stays at the vertex while its reaction lies between the facets' "
-      "normals (widened by friction's angle) and leaves it along a facet "
-      "otherwise. Objective under a rigid turn, with or without friction. "
-      "closest point: the closest point at every iteration, a node exactly "
-      "on a vertex taking the segment leaving it. kept segment (the first "
-      "rule, the default of older versions): a node keeps its segment over the increment, up to "
-      "half its length past either end. These two pick one facet at a "
-      "vertex, which no rigid turn leaves alone: they are kept so that "
-      "scenes that ask for them give the answers they gave. Other surfaces "
-      "ignore this entry.");
+    // The master surfaces' own entries (Faceted vertex rule, ...).
+    SurfaceRegistry::declare_parameters(prm, SurfaceRegistry::Kind::deformable);
     prm.declare_entry("Alert distance",
                       "0",
                       Patterns::Double(0.),
@@ -210,6 +193,8 @@ namespace glissade
                       "casing: how far the lobes come in from the circle "
                       "of radius R (below R / (1 + n^2), so that the "
                       "casing stays convex).");
+    // The rigid obstacles' own entries.
+    SurfaceRegistry::declare_parameters(prm, SurfaceRegistry::Kind::rigid);
     prm.leave_subsection();
   }
 
@@ -227,17 +212,12 @@ namespace glissade
     master_body     = prm.get("Master body");
     master_boundary = prm.get("Master boundary");
     surface         = prm.get("Surface");
-    force_transfer  = prm.get("Force transfer") == "spline" ?
-                        ContactDescription::ForceTransfer::spline :
-                        ContactDescription::ForceTransfer::segment;
-    {
-      const std::string rule = prm.get("Faceted vertex rule");
-      vertex_rule            = rule == "closest point" ?
-                                 ContactDescription::VertexRule::closest_point :
-                               rule == "vertex normal" ?
-                                 ContactDescription::VertexRule::vertex_normal :
-                                 ContactDescription::VertexRule::kept_segment;
-    }
+    if (master_body != "rigid")
+      surface_settings = SurfaceRegistry::parse_parameters(
+        prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);
+    force_transfer = prm.get("Force transfer") == "spline" ?
+                       ContactDescription::ForceTransfer::spline :
+                       ContactDescription::ForceTransfer::segment;
     alert_distance = prm.get_double("Alert distance");
     if (prm.get("Frame update") == "increment")
       throw InputError(
@@ -289,6 +269,12 @@ namespace glissade
     obstacle_rotation   = text::trim(prm.get("Rotation"));
     obstacle_lobes      = prm.get_integer("Lobes");
     obstacle_lobe_depth = prm.get_double("Lobe depth");
+    if (master_body == "rigid")
+      surface_settings =
+        SurfaceRegistry::parse_parameters(prm.handler(),
+                                          SurfaceRegistry::Kind::rigid,
+                                          obstacle,
+                                          entry + "/Obstacle");
     prm.leave_subsection();
     if (!(obstacle_radius <= 1e100))
       throw InputError(entry + "/Obstacle/Radius",

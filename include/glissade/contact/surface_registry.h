@@ -1,8 +1,11 @@
 #pragma once
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <glissade/contact/master_surface.h>
 #include <glissade/description/scene_description.h>
 
+#include <any>
 #include <functional>
 #include <memory>
 #include <string>
@@ -25,6 +28,14 @@ namespace glissade
    * body (deformable), `Obstacle/Type` of a pair with `Master body = rigid`.
    * Adding a surface is one file that defines its factory and one line in
    * surface_registry.cc (doc/adding_a_surface.md).
+   *
+   * A surface with options of its own declares and reads them itself, as
+   * ASPECT's plug-ins do: its entry's `declare_parameters` declares them
+   * in the pair's subsection (a deformable surface) or in its Obstacle
+   * subsection (a rigid one), for every pair, and `parse_parameters` reads
+   * them for a pair that chose it, into the settings its factory finds in
+   * ContactDescription::surface_settings. The generic description never
+   * sees them.
    */
   class SurfaceRegistry
   {
@@ -42,6 +53,16 @@ namespace glissade
       std::string description;
       std::function<std::unique_ptr<MasterSurface>(const SurfaceContext &)>
         create;
+      /** Declares the surface's own entries (none if empty). */
+      std::function<void(dealii::ParameterHandler &)> declare_parameters = {};
+      /**
+       * Reads them for a pair that chose the surface (in the subsection
+       * they were declared in); `where` names the subsection for messages
+       * ("file.prm: Contact <pair>"). Returns the surface's settings.
+       */
+      std::function<std::any(const dealii::ParameterHandler &,
+                             const std::string &where)>
+        parse_parameters = {};
     };
 
     static const std::vector<Entry> &
@@ -50,6 +71,18 @@ namespace glissade
     /** The surface of a contact pair (the kind follows from its master). */
     static std::unique_ptr<MasterSurface>
     create(const SurfaceContext &context);
+
+    /** Every surface's own entries, of one kind, in the current subsection. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm, Kind kind);
+
+    /** The settings of the surface `name` from its own entries (empty if it
+     *  has none). */
+    static std::any
+    parse_parameters(const dealii::ParameterHandler &prm,
+                     Kind                            kind,
+                     const std::string              &name,
+                     const std::string              &where);
 
     /** "faceted|bspline|..." for Patterns::Selection. */
     static std::string

@@ -5,6 +5,7 @@
 #include <glissade/description/kinematics.h>
 #include <glissade/description/plane_hypothesis.h>
 
+#include <any>
 #include <string>
 #include <utility>
 #include <vector>
@@ -347,19 +348,13 @@ namespace glissade
     };
     ForceTransfer force_transfer = ForceTransfer::segment;
     /**
-     * How a faceted master resolves the normal a vertex lacks (contact.md,
-     * "The faceted master at a vertex"): the segment kept over the
-     * increment, the closest point, or the vertex's mean normal.
+     * The chosen surface's own settings (Faceted vertex rule, ...), read
+     * by its plug-in (SurfaceRegistry::Entry::parse_parameters) and
+     * handed back to its factory; empty for a surface without options.
      */
-    enum class VertexRule
-    {
-      kept_segment,
-      closest_point,
-      vertex_normal
-    };
-    VertexRule vertex_rule    = VertexRule::vertex_normal;
-    double     alert_distance = 0.;
-    double     friction       = 0.;
+    std::any surface_settings;
+    double   alert_distance = 0.;
+    double   friction       = 0.;
     // The local solver's settings in effect for this pair: the scene's
     // Contact solver section, or the pair's own entries of an old scene.
     double       beta       = 1.;

@@ -31,6 +31,14 @@ namespace glissade
       , source(source)
     {}
 
+    /** The parsed file, for the parts that read their own entries (the
+     *  master surfaces' plug-ins). */
+    const dealii::ParameterHandler &
+    handler() const
+    {
+      return prm;
+    }
+
     /** The file read, for messages ("scene.prm"). */
     const std::string &
     file() const
