@@ -58,25 +58,6 @@ namespace glissade
           body->set_contact_dofs(dofs);
       }
 
-    // The active nodes of all pairs form one local problem, solved with
-    // one set of settings: pairs that ask for different ones would have
-    // all but the first silently ignored, so they are refused.
-    for (const auto &pair : pairs)
-      {
-        const auto &a = pairs[0]->settings(), &b = pair->settings();
-        for (const auto &[name, differs] :
-             {std::pair<const char *, bool>{"Beta", a.beta != b.beta},
-              {"Tolerance", a.tolerance != b.tolerance},
-              {"Maximum sweeps", a.max_sweeps != b.max_sweeps}})
-          if (differs)
-            throw InputError(b.entry + "/" + name,
-                             std::string("differs from ") + a.entry + "/" +
-                               name +
-                               ": the active nodes of all pairs form one "
-                               "local problem, solved with one set of "
-                               "settings; set Contact solver/" +
-                               name + " once for all pairs");
-      }
     for (const auto &pair : pairs)
       for (const Body *body : {&pair->slave(), pair->master()})
         if (body != nullptr &&
@@ -109,11 +90,13 @@ namespace glissade
 
     if (!pairs.empty())
       {
-        const auto &first                  = pairs[0]->settings();
-        solver_settings.beta               = first.beta;
-        solver_settings.residual_tolerance = first.tolerance;
-        solver_settings.change_tolerance   = first.tolerance;
-        solver_settings.max_sweeps         = first.max_sweeps;
+        // (the active nodes of all pairs form one local problem, solved
+        // with the section Contact solver's settings)
+        const ContactSolverSettings &solver = scene.contact_solver;
+        solver_settings.beta                = solver.beta;
+        solver_settings.residual_tolerance  = solver.tolerance;
+        solver_settings.change_tolerance    = solver.tolerance;
+        solver_settings.max_sweeps          = solver.max_sweeps;
         solver_settings.rho_choice =
           BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
       }

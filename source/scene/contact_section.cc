@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -201,10 +202,56 @@ namespace glissade
 
 
   void
+  ContactSolverSettings::take_pair_entries(SectionReader     &prm,
+                                           const std::string &pair_entry)
+  {
+    // Each pair's value is its own entry or the section's; the active nodes
+    // of all pairs form one local problem, so the values must agree.
+    const auto take = [&](const std::string &setting, auto &value) {
+      const auto   first = set_by_pair.find(setting);
+      const double section =
+        first == set_by_pair.end() ? double(value) : section_values.at(setting);
+      const double given = prm.number_or_inherited(
+        setting,
+        section,
+        pair_entry,
+        " (this entry is kept for old scenes: set Contact solver/" + setting +
+          " instead, once for all pairs)");
+      if (first != set_by_pair.end() && given != double(value))
+        throw InputError(pair_entry + "/" + setting,
+                         "differs from " + first->second + "/" + setting +
+                           ": the active nodes of all pairs form one local "
+                           "problem, solved with one set of settings; set "
+                           "Contact solver/" +
+                           setting + " once for all pairs");
+      if (setting == "Maximum sweeps" &&
+          !(given >= 1. && given <= 1e9 && given == std::floor(given)))
+        throw InputError(pair_entry + "/" + setting,
+                         "must be a whole number of at least 1");
+      if (first == set_by_pair.end())
+        {
+          section_values[setting] = section;
+          set_by_pair.emplace(setting, pair_entry);
+        }
+      value = static_cast<std::decay_t<decltype(value)>>(given);
+    };
+    take("Beta", beta);
+    take("Tolerance", tolerance);
+    take("Maximum sweeps", max_sweeps);
+    if (!(beta > 0. && beta < 2.))
+      throw InputError(pair_entry + "/Beta", "must lie in (0, 2)");
+    if (!(tolerance > 0.))
+      throw InputError(pair_entry + "/Tolerance",
+                       "must be > 0: the local solver's residual is never "
+                       "exactly zero (1e-10 is the default)");
+  }
+
+
+
+  void
   ContactDescription::parse_parameters(
     SectionReader                  &prm,
-    const std::vector<std::string> &body_names,
-    const ContactSolverSettings    &solver)
+    const std::vector<std::string> &body_names)
   {
     entry           = prm.file() + ": Contact " + name;
     slave_body      = prm.get("Slave body");
@@ -228,29 +275,6 @@ namespace glissade
         "quadratically in the true frame (doc/contact.md); delete this "
         "line");
     friction = prm.get_double("Friction coefficient");
-    // A pair's own value of a Contact solver entry (old scenes)
-    // replaces the section's.
-    const auto solver_entry = [&](const std::string &setting,
-                                  const double       section_value) {
-      return prm.number_or_inherited(setting,
-                                     section_value,
-                                     entry,
-                                     " (this entry is kept for old scenes: set "
-                                     "Contact solver/" +
-                                       setting +
-                                       " instead, once for all pairs)");
-    };
-    beta                = solver_entry("Beta", solver.beta);
-    tolerance           = solver_entry("Tolerance", solver.tolerance);
-    const double sweeps = solver_entry("Maximum sweeps", solver.max_sweeps);
-    if (!(sweeps >= 1. && sweeps <= 1e9 && sweeps == std::floor(sweeps)))
-      throw InputError(entry + "/Maximum sweeps",
-                       "must be a whole number of at least 1");
-    max_sweeps = static_cast<unsigned int>(sweeps);
-    if (!(tolerance > 0.))
-      throw InputError(entry + "/Tolerance",
-                       "must be > 0: the local solver's residual is never "
-                       "exactly zero (1e-10 is the default)");
     if (friction > 100.)
       throw InputError(entry + "/Friction coefficient",
                        "is " + std::to_string(friction) +
@@ -299,8 +323,6 @@ namespace glissade
       throw InputError(entry + "/Slave boundary", "must be given");
     if (master_body != "rigid" && master_boundary.empty())
       throw InputError(entry + "/Master boundary", "must be given");
-    if (!(beta > 0. && beta < 2.))
-      throw InputError(entry + "/Beta", "must lie in (0, 2)");
     if (obstacle_motion.size() != 2)
       throw InputError(entry + "/Obstacle/Motion",
                        "expected two expressions 'x(t), y(t)'");

@@ -231,7 +231,8 @@ namespace glissade
         ContactDescription contact;
         contact.name = name;
         prm.enter_subsection("Contact " + name);
-        contact.parse_parameters(prm, body_names, scene.contact_solver);
+        contact.parse_parameters(prm, body_names);
+        scene.contact_solver.take_pair_entries(prm, contact.entry);
         prm.leave_subsection();
         scene.contacts.push_back(contact);
       });

@@ -6,6 +6,7 @@
 #include <glissade/description/plane_hypothesis.h>
 
 #include <any>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -263,6 +264,19 @@ namespace glissade
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(SectionReader &prm);
+
+    /**
+     * Old scenes: a pair's own Beta, Tolerance or Maximum sweeps (read in
+     * the pair's subsection, `pair_entry` naming it) replaces the
+     * section's; each pair's value (its own, or the section's) must be
+     * the same, since all pairs form one local problem.
+     */
+    void
+    take_pair_entries(SectionReader &prm, const std::string &pair_entry);
+    /** The first pair read, for the message of a pair that disagrees, and
+     *  the section's own values (old scenes). */
+    std::map<std::string, std::string> set_by_pair;
+    std::map<std::string, double>      section_values;
   };
 
   struct NewtonSettings
@@ -355,11 +369,6 @@ namespace glissade
     std::any surface_settings;
     double   alert_distance = 0.;
     double   friction       = 0.;
-    // The local solver's settings in effect for this pair: the scene's
-    // Contact solver section, or the pair's own entries of an old scene.
-    double       beta       = 1.;
-    double       tolerance  = 1e-10;
-    unsigned int max_sweeps = 10000;
     // Rigid obstacle.
     std::string              obstacle = "line"; // line | disk | hole | casing
     dealii::Point<2>         obstacle_point; // line: a point; disk/hole: centre
@@ -374,15 +383,10 @@ namespace glissade
     /** The subsection Contact <name> (source/scene/contact_section.cc). */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
-    /**
-     * `name` is set before; `body_names` are the scene's bodies, `solver`
-     * the section Contact solver, which a pair's own entries of an old
-     * scene replace.
-     */
+    /** `name` is set before; `body_names` are the scene's bodies. */
     void
     parse_parameters(SectionReader                  &prm,
-                     const std::vector<std::string> &body_names,
-                     const ContactSolverSettings    &solver);
+                     const std::vector<std::string> &body_names);
   };
 
   /** Everything a .prm file describes. */
