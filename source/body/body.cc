@@ -26,15 +26,15 @@ namespace glissade
     const std::string where = source + ": Body " + description.name;
     const MeshLabels  labels =
       MeshFactory::create(description.mesh, mesh, where);
-    boundary_names = labels.boundaries;
-    reference_size = mesh_diameter(mesh);
-    materials_of_cells =
-      std::make_unique<BodyMaterials>(description.material,
-                                      labels.regions,
-                                      description.mesh.type == "gmsh" ?
-                                        description.mesh.file :
-                                        "",
-                                      where);
+    boundary_names     = labels.boundaries;
+    reference_size     = mesh_diameter(mesh);
+    materials_of_cells = std::make_unique<BodyMaterials>(
+      description.material,
+      labels.regions,
+      MeshFactory::type(description.mesh.type).from_file ?
+        description.mesh.file :
+        "",
+      where);
 
     element_space = ElementSpaceRegistry::create(description.element_space);
     const bool axisymmetric =

@@ -27,30 +27,8 @@ namespace glissade
                       Triangulation<2>      &triangulation,
                       const std::string     &where)
   {
-    MeshLabels     labels;
-    BoundaryNames &names = labels.boundaries;
-    if (description.type == "rectangle")
-      names = create_rectangle(description.corner_1,
-                               description.corner_2,
-                               description,
-                               triangulation);
-    else if (description.type == "square")
-      {
-        const Tensor<1, 2> half({description.side / 2, description.side / 2});
-        names = create_rectangle(description.center - half,
-                                 description.center + half,
-                                 description,
-                                 triangulation);
-      }
-    else if (description.type == "half ring")
-      names = create_ring(description, false, triangulation);
-    else if (description.type == "ring")
-      names = create_ring(description, true, triangulation);
-    else if (description.type == "gmsh")
-      labels = read_gmsh(description.file, triangulation, where + "/Mesh/File");
-    else
-      throw InputError(where + "/Mesh/Type",
-                       "unknown mesh type '" + description.type + "'");
+    MeshLabels labels =
+      type(description.type).create(description, triangulation, where);
 
     if (description.distortion > 0. && labels.second_order)
       throw InputError(where + "/Mesh/Distortion",
@@ -60,9 +38,128 @@ namespace glissade
     if (description.distortion > 0.)
       GridTools::distort_random(description.distortion, triangulation, true);
     check_cells_are_not_folded(triangulation, where);
-    if (description.type == "gmsh")
+    if (type(description.type).from_file)
       check_mesh_is_conforming(triangulation, where);
     return labels;
+  }
+
+
+
+  const std::vector<MeshFactory::MeshType> &
+  MeshFactory::types()
+  {
+    const auto rings_radii = [](const MeshDescription &d,
+                                const std::string     &where) {
+      if (!(d.outer_radius > d.inner_radius && d.inner_radius > 0))
+        throw InputError(where + "/Mesh/Outer radius",
+                         "rings need 0 < Inner radius < Outer radius");
+    };
+    // One line per kind of mesh.
+    static const std::vector<MeshType> list = {
+      {"rectangle",
+       "from Corner 1 to Corner 2, boundaries left, right, bottom, top",
+       false,
+       [](const MeshDescription &d, const std::string &where) {
+         if (!(d.corner_2[0] > d.corner_1[0] && d.corner_2[1] > d.corner_1[1]))
+           throw InputError(where + "/Mesh/Corner 2",
+                            "must lie above and to the right of Corner 1");
+       },
+       [](const MeshDescription &d, Triangulation<2> &t, const std::string &) {
+         MeshLabels labels;
+         labels.boundaries = create_rectangle(d.corner_1, d.corner_2, d, t);
+         return labels;
+       }},
+      {"square",
+       "centred at Center with side Side, same boundary names",
+       false,
+       [](const MeshDescription &, const std::string &) {},
+       [](const MeshDescription &d, Triangulation<2> &t, const std::string &) {
+         const Tensor<1, 2> half({d.side / 2, d.side / 2});
+         MeshLabels         labels;
+         labels.boundaries =
+           create_rectangle(d.center - half, d.center + half, d, t);
+         return labels;
+       }},
+      {"half ring",
+       "centred at Center between Inner radius and Outer radius, "
+       "boundaries inner, outer, start and end at the Start/End angle",
+       false,
+       [rings_radii](const MeshDescription &d, const std::string &where) {
+         rings_radii(d, where);
+         if (!(d.end_angle > d.start_angle &&
+               d.end_angle - d.start_angle < 360.))
+           throw InputError(where + "/Mesh/End angle",
+                            "must be larger than Start angle, by less than "
+                            "360");
+       },
+       [](const MeshDescription &d, Triangulation<2> &t, const std::string &) {
+         MeshLabels labels;
+         labels.boundaries = create_ring(d, false, t);
+         return labels;
+       }},
+      {"ring",
+       "the same closed, boundaries inner and outer",
+       false,
+       [rings_radii](const MeshDescription &d, const std::string &where) {
+         rings_radii(d, where);
+         if (d.subdivisions[0] < 3)
+           throw InputError(where + "/Mesh/Subdivisions",
+                            "a ring needs at least 3 elements around");
+       },
+       [](const MeshDescription &d, Triangulation<2> &t, const std::string &) {
+         MeshLabels labels;
+         labels.boundaries = create_ring(d, true, t);
+         return labels;
+       }},
+      {"gmsh",
+       "the .msh file File, whose named physical lines become boundaries",
+       true,
+       [](const MeshDescription &d, const std::string &where) {
+         if (d.file.empty())
+           throw InputError(where + "/Mesh/File", "gmsh meshes need a File");
+       },
+       [](const MeshDescription &d,
+          Triangulation<2>      &t,
+          const std::string     &where) {
+         return read_gmsh(d.file, t, where + "/Mesh/File");
+       }}};
+    return list;
+  }
+
+
+
+  const MeshFactory::MeshType &
+  MeshFactory::type(const std::string &name)
+  {
+    for (const MeshType &entry : types())
+      if (entry.name == name)
+        return entry;
+    throw InputError("Mesh/Type",
+                     "unknown mesh type '" + name +
+                       "' (known: " + names_as_pattern() + ")");
+  }
+
+
+
+  std::string
+  MeshFactory::names_as_pattern()
+  {
+    std::string names;
+    for (const MeshType &entry : types())
+      names += (names.empty() ? "" : "|") + entry.name;
+    return names;
+  }
+
+
+
+  std::string
+  MeshFactory::documentation()
+  {
+    std::string text;
+    for (const MeshType &entry : types())
+      text +=
+        (text.empty() ? "" : "; ") + entry.name + ": " + entry.documentation;
+    return text + ".";
   }
 
 

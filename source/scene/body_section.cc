@@ -7,6 +7,7 @@
 #include <glissade/base/text.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space_registry.h>
+#include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/section_reader.h>
 
 #include <string>
@@ -323,7 +324,7 @@ namespace glissade
       entry_format::check_expressions(initial_velocity,
                                       where + "/Initial velocity");
     });
-    if (mesh.type == "gmsh")
+    if (MeshFactory::type(mesh.type).from_file)
       mesh.file = text::path_beside(prm.file(), mesh.file);
   }
 } // namespace glissade

@@ -5,6 +5,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/description/scene_description.h>
+#include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/section_reader.h>
 
 #include <string>
@@ -20,14 +21,9 @@ namespace glissade
     prm.declare_entry(
       "Type",
       "rectangle",
-      Patterns::Selection("rectangle|square|half ring|ring|gmsh"),
-      "The mesh generator. rectangle: from Corner 1 to Corner 2, "
-      "boundaries left, right, bottom, top. square: centred at Center with "
-      "side Side, same boundary names. half ring / ring: centred at "
-      "Center between Inner radius and Outer radius, boundaries inner, "
-      "outer and (half ring) start, end at the Start/End angle. gmsh: "
-      "the .msh file File, whose named physical lines become boundaries. "
-      "Must be set: it is how a body's subsection is known to exist.",
+      Patterns::Selection(MeshFactory::names_as_pattern()),
+      "The mesh generator. " + MeshFactory::documentation() +
+        " Must be set: it is how a body's subsection is known to exist.",
       true);
     prm.declare_entry("Corner 1",
                       "0, 0",
@@ -107,18 +103,6 @@ namespace glissade
     distortion = prm.get_double("Distortion");
     prm.leave_subsection();
 
-    if (type == "rectangle" &&
-        !(corner_2[0] > corner_1[0] && corner_2[1] > corner_1[1]))
-      throw InputError(where + "/Mesh/Corner 2",
-                       "must lie above and to the right of Corner 1");
-    if ((type == "ring" || type == "half ring") &&
-        !(outer_radius > inner_radius && inner_radius > 0))
-      throw InputError(where + "/Mesh/Outer radius",
-                       "rings need 0 < Inner radius < Outer radius");
-    if (type == "half ring" &&
-        !(end_angle > start_angle && end_angle - start_angle < 360.))
-      throw InputError(where + "/Mesh/End angle",
-                       "must be larger than Start angle, by less than 360");
     if (type != "half ring" && (start_angle != 0. || end_angle != 180.))
       throw InputError(where + "/Mesh/" +
                          (start_angle != 0. ? "Start angle" : "End angle"),
@@ -126,6 +110,7 @@ namespace glissade
                          type +
                          "); to turn a body, use Boundary conditions/"
                          "Prescribed rotation");
+    MeshFactory::type(type).check(*this, where);
     {
       // A generated mesh is allocated before anything else happens: a
       // typing slip (100000, 100000) would take every byte of memory.
@@ -137,17 +122,12 @@ namespace glissade
                              "every count must be at least 1");
           cells *= n;
         }
-      if (type != "gmsh" && cells > 4e6)
+      if (!MeshFactory::type(type).from_file && cells > 4e6)
         throw InputError(where + "/Mesh/Subdivisions",
                          "asks for " + std::to_string(cells) +
                            " cells; more than 4 million (about 8 million "
                            "dofs and 10 GB for one body) is refused as a "
                            "probable slip");
     }
-    if (type == "ring" && subdivisions[0] < 3)
-      throw InputError(where + "/Mesh/Subdivisions",
-                       "a ring needs at least 3 elements around");
-    if (type == "gmsh" && file.empty())
-      throw InputError(where + "/Mesh/File", "gmsh meshes need a File");
   }
 } // namespace glissade

@@ -5,8 +5,10 @@
 #include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_labels.h>
 
+#include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
@@ -23,6 +25,43 @@ namespace glissade
   class MeshFactory
   {
   public:
+    /**
+     * One kind of mesh a .prm may name (Mesh/Type): the registry that the
+     * entry's pattern and help, the checks of its entries and the
+     * construction all read. A new kind is one line in types().
+     */
+    struct MeshType
+    {
+      std::string name;
+      /** One sentence for the parameter documentation. */
+      std::string documentation;
+      /** Read from a file (its regions and cell order come from there),
+       *  rather than generated from the entries. */
+      bool from_file;
+      /** Refuses entries the type cannot use, naming `where`/Mesh/<entry>. */
+      std::function<void(const MeshDescription &, const std::string &where)>
+        check;
+      std::function<MeshLabels(const MeshDescription &,
+                               dealii::Triangulation<2> &,
+                               const std::string &where)>
+        create;
+    };
+
+    static const std::vector<MeshType> &
+    types();
+
+    /** The type named `name` (one of types(): the pattern checked it). */
+    static const MeshType &
+    type(const std::string &name);
+
+    /** "rectangle|square|..." for Patterns::Selection. */
+    static std::string
+    names_as_pattern();
+
+    /** "rectangle: ...; square: ..." for the parameter documentation. */
+    static std::string
+    documentation();
+
     /** `where` names the .prm subsection, for messages. */
     static MeshLabels
     create(const MeshDescription    &description,
