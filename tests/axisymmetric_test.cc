@@ -194,18 +194,8 @@ GLISSADE_TEST(axisymmetric_cylinder_large_strain_is_the_plane_strain_ring)
     "Body cylinder/Boundary conditions/Pressure=left: 150*t");
   const auto cylinder =
     run("prm/thick_cylinder.prm", cylinder_overrides, "large_cylinder");
-  auto ring_overrides = large;
-  for (const std::string o :
-       {"Body cylinder/Material/Hypothesis=plane strain",
-        "Body cylinder/Mesh/Type=half ring",
-        "Body cylinder/Mesh/Inner radius=1",
-        "Body cylinder/Mesh/Outer radius=2",
-        "Body cylinder/Mesh/Start angle=0",
-        "Body cylinder/Mesh/End angle=90",
-        "Body cylinder/Mesh/Subdivisions=32, 16",
-        "Body cylinder/Boundary conditions/Fixed=start: y; end: x",
-        "Body cylinder/Boundary conditions/Pressure=inner: 150*t"})
-    ring_overrides.push_back(o);
+  auto ring_overrides = thick_cylinder_as_plane_ring("150*t");
+  ring_overrides.insert(ring_overrides.end(), large.begin(), large.end());
   const auto ring = run("prm/thick_cylinder.prm", ring_overrides, "large_ring");
   for (const double r : {1., 2.})
     {

@@ -28,15 +28,11 @@ using namespace glissade_tests;
 // after n = 8.5 periods, within 3 %.
 GLISSADE_TEST(dynamics_rayleigh_damping_ratio)
 {
-  const double E = 110000., rho = 4.4e-9, h = 5., L = 100.;
-  const double omega_1 =
-    1.8751 * 1.8751 * h / (L * L) * std::sqrt(E / (12. * rho));
-  const double zeta_each = 0.01;
+  const BladeFirstMode mode      = blade_first_mode(110000., 4.4e-9, 5.);
+  const double         omega_1   = mode.omega_1;
+  const double         zeta_each = 0.01;
   const double a_M = 2. * zeta_each * omega_1, a_K = 2. * zeta_each / omega_1;
-  const std::string b    = "1.8751*(y-200)/100",
-                    mode = "100*(cosh(" + b + ")-cos(" + b + ")-0.7341*(sinh(" +
-                           b + ")-sin(" + b + ")))";
-  const double       period = 2. * M_PI / omega_1;
+  const double period = 2. * M_PI / omega_1;
   std::ostringstream a_M_text, a_K_text;
   a_M_text << std::setprecision(17) << a_M;
   a_K_text << std::setprecision(17) << a_K;
@@ -47,7 +43,7 @@ GLISSADE_TEST(dynamics_rayleigh_damping_ratio)
               "Output/Directory=dynamics_blade_rayleigh_damping",
               "Contact tip/Obstacle/Lobe depth=0",
               "Contact tip/Obstacle/Radius=320",
-              "Body blade/Initial velocity=" + mode + ", 0",
+              "Body blade/Initial velocity=" + mode.shape + ", 0",
               "Time integration/Mass damping=" + a_M_text.str(),
               "Time integration/Stiffness damping=" + a_K_text.str(),
               "Time integration/Newmark gamma=0.5",
@@ -169,20 +165,10 @@ GLISSADE_TEST(dynamics_stiffness_damping_axisymmetric_is_the_plane_ring)
         "Body cylinder/Boundary conditions/Pressure=left: 0",
         "Body cylinder/Initial velocity=0.1*x, 0"})
     cylinder_overrides.push_back(o);
-  auto ring_overrides = common;
-  for (const std::string o :
-       {"Output/Directory=dynamics_breathing_ring",
-        "Body cylinder/Material/Hypothesis=plane strain",
-        "Body cylinder/Mesh/Type=half ring",
-        "Body cylinder/Mesh/Inner radius=1",
-        "Body cylinder/Mesh/Outer radius=2",
-        "Body cylinder/Mesh/Start angle=0",
-        "Body cylinder/Mesh/End angle=90",
-        "Body cylinder/Mesh/Subdivisions=32, 16",
-        "Body cylinder/Boundary conditions/Fixed=start: y; end: x",
-        "Body cylinder/Boundary conditions/Pressure=inner: 0",
-        "Body cylinder/Initial velocity=0.1*x, 0.1*y"})
-    ring_overrides.push_back(o);
+  auto ring_overrides = thick_cylinder_as_plane_ring("0");
+  ring_overrides.insert(ring_overrides.end(), common.begin(), common.end());
+  ring_overrides.push_back("Output/Directory=dynamics_breathing_ring");
+  ring_overrides.push_back("Body cylinder/Initial velocity=0.1*x, 0.1*y");
 
   const auto run = [](const std::vector<std::string> &overrides) {
     auto simulation = std::make_unique<Simulation>(

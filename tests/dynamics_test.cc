@@ -344,30 +344,26 @@ GLISSADE_TEST(dynamics_sphere_impact_hertz)
 // crossings over ten periods.
 GLISSADE_TEST(dynamics_blade_first_bending_frequency)
 {
-  const double E = 110000., rho = 4.4e-9, h = 5., L = 100.;
-  const double omega_1 =
-    1.8751 * 1.8751 * h / (L * L) * std::sqrt(E / (12. * rho));
-  const std::string b    = "1.8751*(y-200)/100",
-                    mode = "100*(cosh(" + b + ")-cos(" + b + ")-0.7341*(sinh(" +
-                           b + ")-sin(" + b + ")))";
-  const double        period = 2. * M_PI / omega_1;
-  Simulation          simulation(SceneReader::read_file(
+  const BladeFirstMode mode    = blade_first_mode(110000., 4.4e-9, 5.);
+  const double         omega_1 = mode.omega_1;
+  const double         period  = 2. * M_PI / omega_1;
+  Simulation           simulation(SceneReader::read_file(
     source_path("prm/blade_casing.prm"),
     {"Output/Progress=false",
-              "Output/VTU interval=0",
-              "Output/Directory=dynamics_blade_free_vibration",
-              "Contact tip/Obstacle/Lobe depth=0",
-              "Contact tip/Obstacle/Radius=320",
-              "Body blade/Initial velocity=" + mode + ", 0",
-              "Time integration/Mass damping=0",
-              "Time integration/Newmark gamma=0.5",
-              "Time integration/Newmark beta=0.25",
-              "Load program/Stage end times=" + std::to_string(10.5 * period),
-              "Load program/Stage increments=420"}));
-  const Body         &blade      = simulation.body("blade");
-  const auto          tip        = blade.vertex_value_dofs(Point<2>(0., 300.));
-  double              previous_t = 0., previous_u = 0.;
-  std::vector<double> crossings;
+               "Output/VTU interval=0",
+               "Output/Directory=dynamics_blade_free_vibration",
+               "Contact tip/Obstacle/Lobe depth=0",
+               "Contact tip/Obstacle/Radius=320",
+               "Body blade/Initial velocity=" + mode.shape + ", 0",
+               "Time integration/Mass damping=0",
+               "Time integration/Newmark gamma=0.5",
+               "Time integration/Newmark beta=0.25",
+               "Load program/Stage end times=" + std::to_string(10.5 * period),
+               "Load program/Stage increments=420"}));
+  const Body          &blade      = simulation.body("blade");
+  const auto           tip        = blade.vertex_value_dofs(Point<2>(0., 300.));
+  double               previous_t = 0., previous_u = 0.;
+  std::vector<double>  crossings;
   simulation.on_increment = [&](unsigned int, double t) {
     const double u = blade.displacement()(tip[0]);
     if (t > 0. && (previous_u < 0.) != (u < 0.))

@@ -56,16 +56,7 @@ namespace
     return worst;
   }
 
-  const std::vector<std::string> ring = {
-    "Body cylinder/Material/Hypothesis=plane strain",
-    "Body cylinder/Mesh/Type=half ring",
-    "Body cylinder/Mesh/Inner radius=1",
-    "Body cylinder/Mesh/Outer radius=2",
-    "Body cylinder/Mesh/Start angle=0",
-    "Body cylinder/Mesh/End angle=90",
-    "Body cylinder/Mesh/Subdivisions=32, 16",
-    "Body cylinder/Boundary conditions/Fixed=start: y; end: x",
-    "Body cylinder/Boundary conditions/Pressure=inner: 150*t"};
+  const std::vector<std::string> ring = thick_cylinder_as_plane_ring("150*t");
 } // namespace
 
 GLISSADE_TEST(small_strain_is_lame_at_any_load)

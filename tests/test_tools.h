@@ -5,6 +5,7 @@
 // program prints why and exits non-zero. Every test prints the figures it
 // checks, so a ctest log is also a record of what was measured.
 
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -94,6 +95,48 @@ namespace glissade_tests
   /** The path of a file in the source tree (set by CMake). */
   std::string
   source_path(const std::string &relative);
+
+  /**
+   * prm/thick_cylinder.prm's cylinder as its plane-strain cross-section: a
+   * quarter ring (radii 1 and 2, q2, 32 x 16 cells, symmetry supports)
+   * under the bore pressure `pressure` (an expression of t), the overrides
+   * that turn the axisymmetric section into it.
+   */
+  inline std::vector<std::string>
+  thick_cylinder_as_plane_ring(const std::string &pressure)
+  {
+    return {"Body cylinder/Material/Hypothesis=plane strain",
+            "Body cylinder/Mesh/Type=half ring",
+            "Body cylinder/Mesh/Inner radius=1",
+            "Body cylinder/Mesh/Outer radius=2",
+            "Body cylinder/Mesh/Start angle=0",
+            "Body cylinder/Mesh/End angle=90",
+            "Body cylinder/Mesh/Subdivisions=32, 16",
+            "Body cylinder/Boundary conditions/Fixed=start: y; end: x",
+            "Body cylinder/Boundary conditions/Pressure=inner: " + pressure};
+  }
+
+  /**
+   * The first bending mode of prm/blade_casing.prm's cantilever blade
+   * (clamped at y = 200, L = 100): Euler-Bernoulli's omega_1 = 1.8751^2 h
+   * / L^2 sqrt(E / (12 rho)), and its shape with a tip value of about 200
+   * as an Initial velocity expression of y.
+   */
+  struct BladeFirstMode
+  {
+    double      omega_1;
+    std::string shape;
+  };
+
+  inline BladeFirstMode
+  blade_first_mode(const double E, const double rho, const double h)
+  {
+    const double      L = 100.;
+    const std::string b = "1.8751*(y-200)/100";
+    return {1.8751 * 1.8751 * h / (L * L) * std::sqrt(E / (12. * rho)),
+            "100*(cosh(" + b + ")-cos(" + b + ")-0.7341*(sinh(" + b + ")-sin(" +
+              b + ")))"};
+  }
 } // namespace glissade_tests
 
 #define GLISSADE_TEST(name)                                                    \

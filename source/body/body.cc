@@ -414,27 +414,20 @@ namespace glissade
                   }
               }
             if (damping_a_K > 0. && !small_strain)
-              add_viscous_stress_terms(damping_a_K,
-                                       inertia_terms->velocity_factor(),
-                                       ViscousStressPoint{at_rest,
-                                                          F,
-                                                          small_strain ?
-                                                            1. :
-                                                            1. + hoop,
-                                                          r,
-                                                          axisymmetric,
-                                                          small_strain,
-                                                          dV},
-                                       evaluator,
-                                       q,
-                                       component,
-                                       grad,
-                                       dE,
-                                       dE33,
-                                       scratch.cell_velocity,
-                                       cell_matrix,
-                                       cell_rhs,
-                                       data.viscous_force);
+              add_viscous_stress_terms(
+                damping_a_K,
+                inertia_terms->velocity_factor(),
+                ViscousStressPoint{at_rest, F, 1. + hoop, r, axisymmetric, dV},
+                evaluator,
+                q,
+                component,
+                grad,
+                dE,
+                dE33,
+                scratch.cell_velocity,
+                cell_matrix,
+                cell_rhs,
+                data.viscous_force);
           }
         if (integrate_points)
           for (unsigned int i = 0; i < n_local; ++i)

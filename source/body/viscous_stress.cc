@@ -67,15 +67,14 @@ namespace glissade
         for (unsigned int j = 0; j <= i; ++j)
           {
             double k = stiffness * (dE[j] * D_dE_i);
-            if (component[i] == component[j] && !point.small_strain)
+            if (component[i] == component[j])
               k += S_grad_i * grad[j];
             if (point.axisymmetric)
               {
                 k += stiffness * (dE33[j] * (D0.hoop_coupling * dE[i]) +
                                   dE33[i] * (D0.hoop_coupling * dE[j]) +
                                   D0.hoop_stiffness * dE33[i] * dE33[j]);
-                if (component[i] == 0 && component[j] == 0 &&
-                    !point.small_strain)
+                if (component[i] == 0 && component[j] == 0)
                   k += S_v33 * evaluator.shape_value(i, q) *
                        evaluator.shape_value(j, q) /
                        (point.radius * point.radius);

@@ -31,7 +31,8 @@ namespace glissade
    * order of the strain increment of a step against the first; the
    * geometric term Grad N_i . S_v Grad N_j is kept. Newton then converges
    * linearly at that small rate, and the bodies' Cholesky factorisation
-   * is kept.
+   * is kept. (A small-strain body takes a_K K_e v_e from its kept cell
+   * stiffness instead: Body::assemble.)
    */
   struct ViscousStressPoint
   {
@@ -43,8 +44,6 @@ namespace glissade
     /** The reference radius of the point (axisymmetric only). */
     double radius;
     bool   axisymmetric;
-    /** Small strain: no geometric term (F = I in the virtual strains). */
-    bool small_strain;
     /** The volume the point stands for (2 pi r dA or thickness dA). */
     double dV;
   };
