@@ -92,7 +92,9 @@ namespace glissade
         ++n_reused;
         return false;
       }
-    factorization_current = true;
+    // (set again once a factorisation has succeeded: a failed one, which
+    // throws, must not be kept for the same matrix)
+    factorization_current = false;
     if (!same_pattern && symbolic != nullptr)
       umfpack_dl_free_symbolic(&symbolic);
 
@@ -112,10 +114,12 @@ namespace glissade
             cholesky_used = true;
             ++n_cholesky;
             free_numeric();
+            factorization_current = true;
             return true;
           }
       }
     factorize_lu();
+    factorization_current = true;
     return true;
   }
 
