@@ -97,6 +97,8 @@ namespace
             " set Surface = bspline\n set Force transfer = " +
             std::string(master == "bspline_segment" ? "segment" : "spline") +
             "\n";
+        else if (master == "mortar")
+          contact += " set Surface = faceted\n set Discretisation = mortar\n";
         else
           contact += " set Surface = " + master + "\n";
       }
@@ -195,13 +197,18 @@ namespace
     };
     for (const auto &node : pair.nodes())
       if (node.active)
-        for (const DofVector *v : {&node.linearization.gap_row,
-                                   &node.linearization.slip_row,
-                                   &node.linearization.sliding_row,
-                                   &node.linearization.rotation_row,
-                                   &node.linearization.tangential_force,
-                                   &node.linearization.normal_force})
-          add(*v);
+        {
+          for (const DofVector *v : {&node.linearization.gap_row,
+                                     &node.linearization.slip_row,
+                                     &node.linearization.tangential_force,
+                                     &node.linearization.normal_force})
+            add(*v);
+          for (const auto &term : node.linearization.tangent_terms)
+            {
+              add(term.load);
+              add(term.row);
+            }
+        }
     std::vector<std::pair<unsigned int, types::global_dof_index>> dofs;
     for (auto &[key, i] : index)
       {
@@ -217,11 +224,9 @@ namespace
       if (node.active)
         {
           const auto &l = node.linearization;
-          for (const auto &[load, row] :
-               {std::make_pair(&l.sliding_load, &l.sliding_row),
-                std::make_pair(&l.rotation_load, &l.rotation_row)})
-            for (const auto &a : *load)
-              for (const auto &b : *row)
+          for (const auto &term : l.tangent_terms)
+            for (const auto &a : term.load)
+              for (const auto &b : term.row)
                 tangent(index[{a.body, a.dof}], index[{b.body, b.dof}]) +=
                   a.value * b.value;
           for (const auto &e : l.gap_row)
@@ -324,6 +329,9 @@ CONTACT_TANGENT_TEST(bspline_spline, slip)
 CONTACT_TANGENT_TEST(hermite, frictionless)
 CONTACT_TANGENT_TEST(hermite, stick)
 CONTACT_TANGENT_TEST(hermite, slip)
+CONTACT_TANGENT_TEST(mortar, frictionless)
+CONTACT_TANGENT_TEST(mortar, stick)
+CONTACT_TANGENT_TEST(mortar, slip)
 CONTACT_TANGENT_TEST(line, frictionless)
 CONTACT_TANGENT_TEST(line, stick)
 CONTACT_TANGENT_TEST(line, slip)

@@ -11,7 +11,11 @@ top (the equatorial plane), sphere.
 - hertz_sphere_lower.msh: its mirror below, centre (0, -1);
 - hertz_sphere_whole.msh: the whole sphere's meridian, the half disk
   x >= 0 of centre (0, 1) (prm/sphere_impact.prm), its arc the whole
-  surface.
+  surface;
+- hertz_flat_block.msh: a block [0, 1] x [-1, 0] under the contact point
+  (the plane-strain cylinder on a deformable flat of tests/mortar_test.cc),
+  graded to 0.0021 at the contact, so that its nodes do not match the
+  upper sphere's 0.0025 (physical groups top, axis, bottom, right, block).
 
 Needs Gmsh's Python module (Debian: python3-gmsh, in /usr/bin/python3).
 Run from prm/meshes: /usr/bin/python3 make_hertz_sphere_meshes.py
@@ -23,14 +27,14 @@ import gmsh
 H_CONTACT, FINE, FAR, COARSE = 0.0025, 0.08, 1.5, 0.08
 
 
-def mesh_and_write(contact, path):
+def mesh_and_write(contact, path, h_contact=H_CONTACT):
     """Meshes the model, graded from the contact point, and writes it."""
     field = gmsh.model.mesh.field
     distance = field.add("Distance")
     field.setNumbers(distance, "PointsList", [contact])
     size = field.add("Threshold")
     field.setNumber(size, "InField", distance)
-    field.setNumber(size, "SizeMin", H_CONTACT)
+    field.setNumber(size, "SizeMin", h_contact)
     field.setNumber(size, "SizeMax", COARSE)
     field.setNumber(size, "DistMin", FINE)
     field.setNumber(size, "DistMax", FAR)
@@ -102,6 +106,32 @@ def write_whole(path):
     mesh_and_write(contact, path)
 
 
+def write_flat_block(path):
+    """A block [0, 1] x [-1, 0], its top the flat under the contact point."""
+    gmsh.initialize(readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add("block")
+    geo = gmsh.model.geo
+    contact = geo.addPoint(0, 0, 0)
+    corner = geo.addPoint(1, 0, 0)
+    low_right = geo.addPoint(1, -1, 0)
+    low_left = geo.addPoint(0, -1, 0)
+    top = geo.addLine(corner, contact)
+    axis = geo.addLine(contact, low_left)
+    bottom = geo.addLine(low_left, low_right)
+    right = geo.addLine(low_right, corner)
+    block = geo.addPlaneSurface([geo.addCurveLoop([top, axis, bottom, right])])
+    geo.synchronize()
+    for dim, tag, name, number in ((1, top, "top", 1), (1, axis, "axis", 2),
+                                   (1, bottom, "bottom", 3),
+                                   (1, right, "right", 4),
+                                   (2, block, "block", 5)):
+        gmsh.model.addPhysicalGroup(dim, [tag], number)
+        gmsh.model.setPhysicalName(dim, number, name)
+    mesh_and_write(contact, path, 0.0021)
+
+
 write("hertz_sphere_upper.msh", 1.0)
 write("hertz_sphere_lower.msh", -1.0)
 write_whole("hertz_sphere_whole.msh")
+write_flat_block("hertz_flat_block.msh")

@@ -85,6 +85,7 @@ namespace glissade
     // and d theta/dU from the turn of c' = delta c'|_s + c'' ds. At a
     // corner node the point does not slide and the surface gives theta.
     const double D = dc * dc - r * point.second_derivative;
+    DofVector    sliding_row, rotation_row;
     const bool   slides =
       !point.on_vertex && std::abs(D) > 1e-12 * (dc * dc) && speed > 0.;
     const double n_ddc = n * point.second_derivative;
@@ -97,13 +98,13 @@ namespace glissade
         const double dtheta =
           slides ? (-e.derivative * n[e.component] + n_ddc * ds) / speed : 0.;
         if (ds != 0.)
-          result.sliding_row.push_back({e.body, e.dof, ds});
+          sliding_row.push_back({e.body, e.dof, ds});
         if (dtheta != 0.)
-          result.rotation_row.push_back({e.body, e.dof, dtheta});
+          rotation_row.push_back({e.body, e.dof, dtheta});
       }
     if (point.on_vertex)
       for (const auto &w : point.vertex_rotation)
-        result.rotation_row.push_back({1, w.dof, w.value});
+        rotation_row.push_back({1, w.dof, w.value});
 
     // dg = n . (delta(x - c)|_s - c' ds) + (x - c) . delta n, and
     // du_t = t . (delta(x - c)|_s + d' ds) + d . delta t, with
@@ -115,13 +116,13 @@ namespace glissade
         result.slip_row.push_back({e.body, e.dof, e.weight * t[e.component]});
       }
     const double n_dc = n * dc, r_t = r * t, d_t = d_prime * t, d_n = d * n;
-    for (const auto &e : result.sliding_row)
+    for (const auto &e : sliding_row)
       {
         if (n_dc != 0.)
           result.gap_row.push_back({e.body, e.dof, -n_dc * e.value});
         result.slip_row.push_back({e.body, e.dof, d_t * e.value});
       }
-    for (const auto &e : result.rotation_row)
+    for (const auto &e : rotation_row)
       {
         if (r_t != 0.)
           result.gap_row.push_back({e.body, e.dof, -r_t * e.value});
@@ -133,19 +134,23 @@ namespace glissade
     // lambda = r_t t + r_n n and mu = r_t n - r_n t (d lambda = theta mu).
     const Tensor<1, 2> lambda = reaction[0] * t + reaction[1] * n;
     const Tensor<1, 2> mu     = reaction[0] * n - reaction[1] * t;
+    DofVector          sliding_load, rotation_load;
     for (const auto &e : forces)
       {
         result.tangential_force.push_back(
           {e.body, e.dof, e.weight * t[e.component]});
         result.normal_force.push_back(
           {e.body, e.dof, e.weight * n[e.component]});
-        if (e.derivative != 0. && !result.sliding_row.empty())
-          result.sliding_load.push_back(
+        if (e.derivative != 0. && !sliding_row.empty())
+          sliding_load.push_back(
             {e.body, e.dof, e.derivative * lambda[e.component]});
-        if (!result.rotation_row.empty())
-          result.rotation_load.push_back(
-            {e.body, e.dof, e.weight * mu[e.component]});
+        if (!rotation_row.empty())
+          rotation_load.push_back({e.body, e.dof, e.weight * mu[e.component]});
       }
+    if (!sliding_load.empty())
+      result.tangent_terms.push_back({sliding_load, sliding_row});
+    if (!rotation_load.empty())
+      result.tangent_terms.push_back({rotation_load, rotation_row});
     return result;
   }
 } // namespace glissade

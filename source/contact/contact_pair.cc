@@ -3,6 +3,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/contact/contact_discretisation.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/mesh/boundary_normals.h>
@@ -79,6 +80,9 @@ namespace glissade
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
       check_obstacle_faces_slave(slave_outward_normal);
+    discretisation = ContactDiscretisation::create(
+      description.discretisation,
+      {description, slave, master, *master_surface, slave_nodes, slave_ids});
   }
 
 
@@ -123,39 +127,7 @@ namespace glissade
   bool
   ContactPair::project(ContactNode &node, const bool keep_segment) const
   {
-    const Vector<double> &u  = slave_body.displacement();
-    const Vector<double> &u0 = slave_body.stored_displacement();
-    const Tensor<1, 2>    motion(
-      {u(node.dofs[0]) - u0(node.dofs[0]), u(node.dofs[1]) - u0(node.dofs[1])});
-    const Point<2> x({node.reference_position[0] + u(node.dofs[0]),
-                      node.reference_position[1] + u(node.dofs[1])});
-
-    SegmentHint keep;
-    if (keep_segment)
-      keep = {node.segment,
-              node.s,
-              node.segment_switches >= 2,
-              node.at_vertex,
-              node.status == BiPotentialSolver::NodeStatus::stick};
-    const SurfacePoint point = master_surface->project(x, keep);
-    if (!point.valid)
-      return false;
-    if (keep_segment && node.segment >= 0 && point.segment != node.segment)
-      ++node.segment_switches;
-
-    node.segment                = point.segment;
-    node.s                      = point.s;
-    node.at_vertex              = point.vertex_cone > 0.;
-    node.tangent                = point.tangent;
-    node.normal                 = point.normal;
-    node.gap                    = point.gap;
-    const auto master_increment = [this](const types::global_dof_index dof) {
-      return master_body->displacement()(dof) -
-             master_body->stored_displacement()(dof);
-    };
-    node.linearization = linearize_contact(
-      x, node.dofs, motion, point, master_increment, node.reaction);
-    return true;
+    return discretisation->project(node, keep_segment);
   }
 
 
@@ -266,6 +238,7 @@ namespace glissade
   {
     TimerOutput::Scope scope(timer, timing::surface);
     master_surface->update(step_start, step_end);
+    discretisation->update();
   }
 
 
@@ -278,13 +251,18 @@ namespace glissade
     // master) has no compliance at all, W_kk = 0: no reaction can change
     // its gap. It is left out rather than handed to the local solver, which
     // would refuse it. The dofs are those of the node's last projection.
+    // A mortar node's row can hold round-off where biorthogonality zeroes
+    // a weight exactly (a slave corner against a supported master
+    // corner): the free part must be more than round-off of the whole.
+    double free = 0., whole = 0.;
     for (const auto &e : node.linearization.gap_row)
       {
         const Body &b = e.body == 0 ? slave_body : *master_body;
-        if (e.value != 0. && !b.dof_is_prescribed(e.dof))
-          return true;
+        whole += std::abs(e.value);
+        if (!b.dof_is_prescribed(e.dof))
+          free += std::abs(e.value);
       }
-    return false;
+    return free > 1e-12 * whole;
   }
 
 
@@ -332,6 +310,16 @@ namespace glissade
           node.segment_switches = std::max(node.segment_switches, 2u);
           if (project(node, true))
             continue;
+          node.active   = false;
+          node.reaction = {{0., 0.}};
+          node.status   = BiPotentialSolver::NodeStatus::open;
+        }
+      else if (node.active && !can_react(node))
+        {
+          // Activated at a trial state where its gap depended on free
+          // dofs, and here no longer does (a mortar node at a supported
+          // corner, whose weight on the free master node vanishes on a
+          // flat master): no reaction can move it.
           node.active   = false;
           node.reaction = {{0., 0.}};
           node.status   = BiPotentialSolver::NodeStatus::open;

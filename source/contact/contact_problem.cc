@@ -147,13 +147,17 @@ namespace glissade
         for (const auto &node : pair->nodes())
           if (node.active)
             {
-              const ContactLinearization &l = node.linearization;
-              for (const DofVector *v : {&l.gap_row,
-                                         &l.slip_row,
-                                         &l.tangential_force,
-                                         &l.normal_force,
-                                         &l.sliding_row,
-                                         &l.rotation_row})
+              const ContactLinearization    &l       = node.linearization;
+              std::vector<const DofVector *> vectors = {&l.gap_row,
+                                                        &l.slip_row,
+                                                        &l.tangential_force,
+                                                        &l.normal_force};
+              for (const auto &term : l.tangent_terms)
+                {
+                  vectors.push_back(&term.load);
+                  vectors.push_back(&term.row);
+                }
+              for (const DofVector *v : vectors)
                 for (const auto &e : *v)
                   if (b[e.body] != numbers::invalid_unsigned_int)
                     touching[b[e.body]].push_back(e.dof);
@@ -360,11 +364,9 @@ namespace glissade
               nodes.forces.push_back({&l.normal_force, b});
               nodes.rows.push_back({&l.slip_row, b});
               nodes.rows.push_back({&l.gap_row, b});
-              for (const auto &[load, row] :
-                   {std::make_pair(&l.sliding_load, &l.sliding_row),
-                    std::make_pair(&l.rotation_load, &l.rotation_row)})
-                if (!load->empty() && !row->empty())
-                  nodes.terms.push_back({{load, b}, {row, b}});
+              for (const auto &term : l.tangent_terms)
+                if (!term.load.empty() && !term.row.empty())
+                  nodes.terms.push_back({{&term.load, b}, {&term.row, b}});
             }
       }
     return nodes;

@@ -5,6 +5,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/contact/contact_discretisation.h>
 #include <glissade/contact/surface_registry.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
@@ -115,6 +116,13 @@ namespace glissade
       "How a B-spline master receives the reaction: segment hands it to "
       "the two nodes of the underlying straight segment (the paper); "
       "spline uses the spline's own weights (consistent, symmetric W).");
+    prm.declare_entry("Discretisation",
+                      "node-to-segment",
+                      Patterns::Selection(
+                        ContactDiscretisation::names_as_pattern()),
+                      "How the contact constraint is written per slave "
+                      "node: " +
+                        ContactDiscretisation::documentation());
     // The master surfaces' own entries (Faceted vertex rule, ...).
     SurfaceRegistry::declare_parameters(prm, SurfaceRegistry::Kind::deformable);
     prm.declare_entry("Alert distance",
@@ -259,6 +267,7 @@ namespace glissade
     master_body     = prm.get("Master body");
     master_boundary = prm.get("Master boundary");
     surface         = prm.get("Surface");
+    discretisation  = prm.get("Discretisation");
     if (master_body != "rigid")
       surface_settings = SurfaceRegistry::parse_parameters(
         prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);

@@ -38,10 +38,9 @@ namespace glissade
    * u_t = t . d, d = (x - x_0) - (the displacement of the master's material
    * point c(s) since then). The reaction r = (r_t, r_n) acts as the force
    * lambda = r_t t + r_n n on the slave node and -phi_j lambda on the
-   * master dofs that receive it. The contact tangent at fixed r,
-   * dF/dU = sliding_load (x) sliding_row + rotation_load (x) rotation_row,
-   * has rank two: the point slides along the master (ds) and the frame
-   * turns (d theta).
+   * master dofs that receive it. The contact tangent at fixed r has rank
+   * two: the point slides along the master (ds) and the frame turns
+   * (d theta).
    */
   struct ContactLinearization
   {
@@ -62,11 +61,17 @@ namespace glissade
     /** The dof forces of a unit tangential and a unit normal reaction. */
     DofVector tangential_force, normal_force;
 
-    /** ds / dU and d theta / dU (delta t = theta n, delta n = -theta t). */
-    DofVector sliding_row, rotation_row;
-
-    /** The columns of the contact tangent at the node's reaction. */
-    DofVector sliding_load, rotation_load;
+    /**
+     * The contact tangent at the node's reaction, dF/dU = sum load (x)
+     * row: node-to-segment has two terms (the point slides along the
+     * master, ds/dU, and the frame turns, d theta/dU); mortar has one per
+     * master node its weights reach, and the turn of the nodal normal.
+     */
+    struct Term
+    {
+      DofVector load, row;
+    };
+    std::vector<Term> tangent_terms;
   };
 
   /**

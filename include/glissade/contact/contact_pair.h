@@ -4,8 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/body/body.h>
-#include <glissade/contact/bipotential_solver.h>
-#include <glissade/contact/contact_linearization.h>
+#include <glissade/contact/contact_node.h>
 #include <glissade/contact/master_surface.h>
 #include <glissade/description/scene_description.h>
 
@@ -16,82 +15,12 @@
 
 namespace glissade
 {
-  /** A slave node and its contact state. */
-  struct ContactNode
-  {
-    unsigned int                                   vertex;
-    std::array<dealii::types::global_dof_index, 2> dofs;
-    dealii::Point<2>                               reference_position;
-
-    bool active    = false;
-    bool projected = false; // has a counterpart on the master
-    /** Master segment and s of the last projection (-1: none or rigid). */
-    int                  segment = -1;
-    double               s       = 0.;
-    double               gap     = 0.;
-    dealii::Tensor<1, 2> tangent, normal;
-    /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
-    std::array<double, 2>         reaction = {{0., 0.}};
-    BiPotentialSolver::NodeStatus status = BiPotentialSolver::NodeStatus::open;
-    /**
-     * Segment changes within the current increment. From the second on,
-     * the node keeps its segment (along its extension) for the rest of the
-     * increment: on a C1 curve whose curvature jumps at a node, a slave
-     * node whose equilibrium sits at that node would otherwise switch
-     * sides at every Newton iteration, each side's tangent pointing to the
-     * other. The point, the normal and the gap agree on both sides, so
-     * this changes how Newton gets there, not where.
-     */
-    unsigned int segment_switches = 0;
-    /** The last projection met a vertex with its cone (a faceted master). */
-    bool at_vertex = false;
-    /**
-     * The directions (tangential, normal) of this node that the last local
-     * solve augmented (ContactProblem): the next starts from them.
-     */
-    std::array<bool, 2> augmented = {{false, false}};
-    /**
-     * What the local problem adds to this node's (slip, gap) in the current
-     * step: zero for the position-level law; a velocity-level law (Moreau-
-     * Jean) shifts them so that the law holds on the end velocity
-     * (TimeIntegrator).
-     */
-    std::array<double, 2> law_shift = {{0., 0.}};
-
-    /**
-     * Gap, slip, their derivatives, the forces of the reaction and the
-     * contact tangent at the last projection (rebuilt by every one).
-     */
-    ContactLinearization linearization;
-
-    /**
-     * The state a checkpoint holds (Boost serialization): the reactions and
-     * statuses warm-start the local solver of the next increment, so a
-     * restart needs them to continue bit for bit; the linearisation is
-     * rebuilt by the next detection.
-     */
-    template <class Archive>
-    void
-    serialize(Archive &archive, const unsigned int /*version*/)
-    {
-      int status_code = static_cast<int>(status);
-      archive &active &projected &segment &s &gap &tangent &normal
-          &reaction[0] &
-        reaction[1] & status_code;
-      status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
-    }
-
-    dealii::Tensor<1, 2>
-    force() const
-    {
-      return reaction[0] * tangent + reaction[1] * normal;
-    }
-  };
+  class ContactDiscretisation;
 
   /**
    * A contact pair: the nodes of a slave boundary against a master surface
    * (a MasterSurface: another body's boundary seen through a smoothing, or
-   * a rigid obstacle), node-to-segment.
+   * a rigid obstacle), node-to-segment or mortar (ContactDiscretisation).
    *
    * At the start of each increment begin_step() builds the master surface
    * from the current positions and keeps, as the active set, the slave
@@ -295,14 +224,16 @@ namespace glissade
     bool
     can_react(const ContactNode &node) const;
 
-    const ContactDescription             description;
-    Body                                &slave_body;
-    Body                                *master_body;
-    dealii::TimerOutput                 &timer;
-    std::unique_ptr<MasterSurface>       master_surface;
-    std::vector<ContactNode>             slave_nodes;
-    std::vector<InitialContact>          contacts_at_start;
-    std::set<dealii::types::boundary_id> slave_ids;
+    const ContactDescription       description;
+    Body                          &slave_body;
+    Body                          *master_body;
+    dealii::TimerOutput           &timer;
+    std::unique_ptr<MasterSurface> master_surface;
+    /** Node-to-segment or mortar (Discretisation). */
+    std::unique_ptr<ContactDiscretisation> discretisation;
+    std::vector<ContactNode>               slave_nodes;
+    std::vector<InitialContact>            contacts_at_start;
+    std::set<dealii::types::boundary_id>   slave_ids;
     /** The slave boundary's outward normal at each slave vertex (not unit). */
     std::map<unsigned int, dealii::Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */

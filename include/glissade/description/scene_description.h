@@ -367,8 +367,10 @@ namespace glissade
      * handed back to its factory; empty for a surface without options.
      */
     std::any surface_settings;
-    double   alert_distance = 0.;
-    double   friction       = 0.;
+    /** node-to-segment | mortar (ContactDiscretisation). */
+    std::string discretisation = "node-to-segment";
+    double      alert_distance = 0.;
+    double      friction       = 0.;
     // Rigid obstacle.
     std::string              obstacle = "line"; // line | disk | hole | casing
     dealii::Point<2>         obstacle_point; // line: a point; disk/hole: centre

@@ -1,0 +1,373 @@
+// Mortar contact (Discretisation = mortar): the contact patch test on
+// non-matching meshes, which one-pass node-to-segment fails (test
+// contact_patch_two_blocks: up to 25 %), and Newton's rate in a sliding
+// increment. The consistent linearisation is checked against finite
+// differences with the node-to-segment ones (contact_tangent_test.cc,
+// contact_tangent_mortar_*).
+
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "source_tree.h"
+#include "test_tools.h"
+
+using namespace glissade;
+using namespace dealii;
+using namespace glissade_tests;
+
+namespace
+{
+  std::string
+  mortar_block(const std::string &name,
+               const std::string &corner_1,
+               const std::string &corner_2,
+               const std::string &subdivisions,
+               const std::string &conditions)
+  {
+    return "subsection Body " + name +
+           "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
+           corner_1 + "\n  set Corner 2 = " + corner_2 +
+           "\n  set Subdivisions = " + subdivisions +
+           "\n end\n subsection Material\n  set Young modulus = 1000\n"
+           "  set Poisson ratio = 0.3\n end\n subsection Boundary conditions\n" +
+           conditions + "\n end\nend\n";
+  }
+
+  /**
+   * Two blocks, upper on lower, `upper_cells` and `lower_cells` along the
+   * interface; the slave is the upper block or the lower one.
+   *
+   * frictionless: the upper block's top pushed down, the sides free: a
+   * uniform uniaxial stress in both blocks (the same material expands
+   * sideways the same), so the contact pressure is uniform.
+   *
+   * friction: every outer side of both blocks moved with the homogeneous
+   * deformation x = F X, F = [1, gamma; 0, 1 - eps]: the same uniform
+   * stress in both blocks solves the problem when the interface sticks,
+   * with a shear traction below mu times the pressure.
+   */
+  std::string
+  patch_scene(const unsigned int upper_cells,
+              const unsigned int lower_cells,
+              const bool         upper_is_slave,
+              const bool         friction,
+              const std::string &method = "condensed")
+  {
+    const std::string motion = "xy: 0.004*y*t, -0.02*y*t";
+    const std::string upper_conditions =
+      friction ? "  set Prescribed displacement = top: " + motion +
+                   "; left: " + motion + "; right: " + motion :
+                 "  set Fixed = left: x\n"
+                 "  set Prescribed displacement = top: y: -0.02*t";
+    const std::string lower_conditions =
+      friction ? "  set Prescribed displacement = bottom: " + motion +
+                   "; left: " + motion + "; right: " + motion :
+                 "  set Fixed = left: x; bottom: y";
+    const std::string slave  = upper_is_slave ? "upper" : "lower";
+    const std::string master = upper_is_slave ? "lower" : "upper";
+    return "subsection Scene\n set Bodies = upper, lower\n"
+           " set Contact pairs = interface\nend\n" +
+           mortar_block("upper",
+                        "0, 0.5",
+                        "1, 1",
+                        std::to_string(upper_cells) + ", 3",
+                        upper_conditions) +
+           mortar_block("lower",
+                        "0, 0",
+                        "1, 0.5",
+                        std::to_string(lower_cells) + ", 4",
+                        lower_conditions) +
+           "subsection Contact interface\n set Slave body = " + slave +
+           "\n set Slave boundary = " + (upper_is_slave ? "bottom" : "top") +
+           "\n set Master body = " + master +
+           "\n set Master boundary = " + (upper_is_slave ? "top" : "bottom") +
+           "\n set Discretisation = mortar\n set Alert distance = 0.05\n" +
+           (friction ? " set Friction coefficient = 0.5\n" : "") +
+           "end\nsubsection Contact solver\n set Tolerance = 1e-13\n set Method = " +
+           method +
+           "\nend\n"
+           "subsection Output\n set Progress = false\nend\n"
+           "subsection Newton\n set Residual tolerance = 1e-11\n"
+           " set Displacement tolerance = 1e-11\nend\n";
+  }
+
+  /**
+   * The traction of each active slave node (its force over its current
+   * tributary length: the mortar reaction is D_j lambda_j, D_j the
+   * integral of the node's shape function) against the traction the
+   * upper block's top support applies (its reaction over the top's
+   * current width): the largest relative difference.
+   */
+  double
+  largest_traction_error(Simulation        &simulation,
+                         const bool         upper_is_slave,
+                         unsigned int      &n_checked,
+                         const std::string &label)
+  {
+    const Body        &upper   = simulation.body("upper");
+    const Tensor<1, 2> support = upper.reaction("top");
+    const auto        &u       = upper.displacement();
+    // The top's current width, from its two corners.
+    double left = 1e300, right = -1e300;
+    for (const auto &cell : upper.dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (std::abs(cell->vertex(v)[1] - 1.) < 1e-12)
+          {
+            const auto dofs =
+              BoundaryConditions::cell_vertex_dofs(cell, v, upper.space());
+            left  = std::min(left, cell->vertex(v)[0] + u(dofs[0]));
+            right = std::max(right, cell->vertex(v)[0] + u(dofs[0]));
+          }
+    // The traction on the upper block's bottom is minus the top's; on the
+    // lower block's top it is the top's.
+    const Tensor<1, 2> applied =
+      (upper_is_slave ? -1. : 1.) * support / (right - left);
+
+    const auto &pair  = *simulation.contact().contact_pairs()[0];
+    const Body &slave = pair.slave();
+    const auto &us    = slave.displacement();
+    std::vector<std::pair<double, const ContactNode *>> along;
+    for (const auto &node : pair.nodes())
+      along.emplace_back(node.reference_position[0], &node);
+    std::sort(along.begin(), along.end());
+    const auto x = [&](const ContactNode &node) {
+      return node.reference_position[0] + us(node.dofs[0]);
+    };
+    double error = 0.;
+    n_checked    = 0;
+    for (unsigned int k = 0; k < along.size(); ++k)
+      {
+        const ContactNode &node = *along[k].second;
+        if (!node.active)
+          continue;
+        const double tributary =
+          0.5 * ((k + 1 < along.size() ? x(*along[k + 1].second) : x(node)) -
+                 (k > 0 ? x(*along[k - 1].second) : x(node)));
+        const Tensor<1, 2> traction = pair.reported_force(node) / tributary;
+        error = std::max(error, (traction - applied).norm() / applied.norm());
+        ++n_checked;
+      }
+    std::cout << "  " << label << ": applied traction (" << applied << "), "
+              << n_checked << " active slave nodes, largest relative error "
+              << error << std::endl;
+    return error;
+  }
+} // namespace
+
+// The contact patch test (Taylor and Papadopoulos 1991; for mortar,
+// Farah, Popp and Wall 2015): on non-matching meshes, each side as slave,
+// a uniform stress crosses the interface exactly: every slave node's
+// traction is the applied one to 1e-8.
+// Both contact steps (condensed, sparse) take the mortar constraints.
+GLISSADE_TEST(mortar_patch_test)
+{
+  for (const std::string method : {"condensed", "sparse"})
+    for (const bool friction : {false, true})
+      for (const auto &[upper_cells, lower_cells] :
+           std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
+        for (const bool upper_is_slave : {true, false})
+          {
+            const std::string label =
+              method + ", " +
+              std::string(friction ? "friction, " : "frictionless, ") +
+              std::to_string(upper_cells) + " cells on " +
+              std::to_string(lower_cells) + ", slave " +
+              (upper_is_slave ? "upper" : "lower");
+            Simulation simulation(SceneReader::read_string(
+              patch_scene(
+                upper_cells, lower_cells, upper_is_slave, friction, method),
+              "mortar patch"));
+            for (unsigned int k = 1; k <= 2; ++k)
+              simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
+            unsigned int       n_checked = 0;
+            const double       error     = largest_traction_error(simulation,
+                                                        upper_is_slave,
+                                                        n_checked,
+                                                        label);
+            const unsigned int slave_cells =
+              upper_is_slave ? upper_cells : lower_cells;
+            // Every slave node in contact, but (with friction, where the
+            // sides of both blocks are moved) a corner whose weighted gap
+            // depends on supported dofs only: biorthogonality zeroes its
+            // weight on the free master node, and no reaction can move it.
+            check(n_checked + (friction ? 2 : 0) >= slave_cells + 1,
+                  label + ": every slave node in contact");
+            check(error <= 1e-8, label + ": the traction is not uniform");
+            if (friction)
+              for (const auto &node :
+                   simulation.contact().contact_pairs()[0]->nodes())
+                check(!node.active ||
+                        node.status == BiPotentialSolver::NodeStatus::stick,
+                      label + ": every node sticks");
+          }
+}
+
+
+
+namespace
+{
+  /**
+   * A cylinder R = 1 pressed on a deformable flat block, plane strain,
+   * the quarter x >= 0 (prm/meshes: the cylinder's arc graded to 0.0025
+   * at the contact, the block's top to 0.0021: non-matching), E = 200,
+   * nu = 0.3 for both, the cylinder's top driven down by `drive`.
+   */
+  std::string
+  hertz_scene(const std::string &discretisation, const double drive)
+  {
+    const std::string meshes =
+      std::string(GLISSADE_SOURCE_DIR) + "/prm/meshes/";
+    const auto body = [&](const std::string &name,
+                          const std::string &file,
+                          const std::string &conditions) {
+      return "subsection Body " + name +
+             "\n subsection Mesh\n  set Type = gmsh\n  set File = " + meshes +
+             file +
+             "\n end\n subsection Material\n  set Young modulus = 200\n"
+             "  set Poisson ratio = 0.3\n end\n"
+             " subsection Boundary conditions\n" +
+             conditions + "\n end\nend\n";
+    };
+    return "subsection Scene\n set Bodies = cylinder, block\n"
+           " set Contact pairs = touch\nend\n" +
+           body("cylinder",
+                "hertz_sphere_upper.msh",
+                "  set Fixed = axis: x\n  set Prescribed displacement = top: "
+                "y: -" +
+                  std::to_string(drive) + "*t") +
+           body("block",
+                "hertz_flat_block.msh",
+                "  set Fixed = axis: x; bottom: y") +
+           "subsection Contact touch\n set Slave body = cylinder\n"
+           " set Slave boundary = arc\n set Master body = block\n"
+           " set Master boundary = top\n set Discretisation = " +
+           discretisation +
+           "\n set Alert distance = 0.02\nend\n"
+           "subsection Load program\n set Stage increments = 2\nend\n"
+           "subsection Newton\n set Residual tolerance = 1e-10\n"
+           " set Displacement tolerance = 1e-10\nend\n"
+           "subsection Output\n set Progress = false\nend\n";
+  }
+
+  struct CylinderFigures
+  {
+    double load, half_width, peak_pressure, profile_error, oscillation;
+  };
+
+  /**
+   * Hertz's figures of a plane contact read off the slave nodes (the
+   * quarter model: the node on the axis carries half its full force):
+   * the load per unit length P = 2 sum f_k; the half-width from the
+   * second moment, sum f_k x_k^2 / sum f_k = a^2 / 4 for
+   * p = p0 sqrt(1 - x^2 / a^2); the peak pressure at the axis node (its
+   * force over its tributary length); inside 0.9 a, the largest
+   * |p_k - Hertz| / p0 and the largest node-to-node oscillation of that
+   * error, |e_k - (e_k-1 + e_k+1) / 2| / p0 (Hertz's own curvature taken
+   * out), with Hertz's a and p0 of the measured load.
+   */
+  CylinderFigures
+  cylinder_figures(const ContactPair &pair,
+                   const double       reduced_modulus,
+                   CylinderFigures   &hertz)
+  {
+    const Body                                         &body = pair.slave();
+    const auto                                         &u = body.displacement();
+    std::vector<std::pair<double, const ContactNode *>> along;
+    for (const ContactNode &node : pair.nodes())
+      along.emplace_back(node.reference_position[0] + u(node.dofs[0]), &node);
+    std::sort(along.begin(), along.end());
+    CylinderFigures measured{0., 0., 0., 0., 0.};
+    double          sum = 0., moment = 0.;
+    for (const auto &[x, node] : along)
+      if (node->active)
+        {
+          sum += node->force()[1];
+          moment += node->force()[1] * x * x;
+        }
+    measured.load       = 2. * sum;
+    measured.half_width = 2. * std::sqrt(moment / sum);
+    hertz.load          = measured.load;
+    hertz.half_width    = std::sqrt(4. * hertz.load / (M_PI * reduced_modulus));
+    hertz.peak_pressure = 2. * hertz.load / (M_PI * hertz.half_width);
+    const double        a = hertz.half_width;
+    std::vector<double> x, error;
+    for (unsigned int k = 0; k + 1 < along.size(); ++k)
+      {
+        const double left      = k > 0 ? along[k - 1].first : -along[1].first;
+        const double tributary = 0.5 * (along[k + 1].first - left);
+        // (the axis node: twice its force over the mirrored tributary)
+        const double p =
+          (k == 0 ? 2. : 1.) * along[k].second->force()[1] / tributary;
+        if (k == 0)
+          measured.peak_pressure = p;
+        if (along[k].first > 1.2 * a)
+          break;
+        x.push_back(along[k].first);
+        error.push_back(
+          p - hertz.peak_pressure *
+                std::sqrt(std::max(0., 1. - std::pow(along[k].first / a, 2))));
+      }
+    for (unsigned int k = 0; k < x.size(); ++k)
+      if (x[k] < 0.9 * a)
+        {
+          measured.profile_error =
+            std::max(measured.profile_error,
+                     std::abs(error[k]) / hertz.peak_pressure);
+          // (the axis node's mirror image has the same error)
+          const double before = k > 0 ? error[k - 1] : error[1];
+          measured.oscillation =
+            std::max(measured.oscillation,
+                     std::abs(error[k] - 0.5 * (before + error[k + 1])) /
+                       hertz.peak_pressure);
+        }
+    return measured;
+  }
+} // namespace
+
+// Hertz, a cylinder on a deformable flat (plane strain, non-matching
+// meshes), a / R about 0.05: with mortar, p0 and a within 1 % of Hertz's
+// at the load the contact carries, and no node-to-node oscillation of the
+// pressure above 2 % of p0 inside 0.9 a. Node-to-segment on the faceted
+// master is printed beside it.
+GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
+{
+  const double E_star = 200. / (2. * (1. - 0.3 * 0.3));
+  for (const std::string discretisation : {"mortar", "node-to-segment"})
+    {
+      Simulation simulation(
+        SceneReader::read_string(hertz_scene(discretisation, 0.0045), "hertz"));
+      simulation.run();
+      const ContactPair    &pair = *simulation.contact().contact_pairs()[0];
+      CylinderFigures       hertz{};
+      const CylinderFigures measured = cylinder_figures(pair, E_star, hertz);
+      const double reaction = simulation.body("cylinder").reaction("top")[1];
+      std::cout << "  " << discretisation << ": P = " << measured.load
+                << " (support " << -2. * reaction
+                << "), a = " << measured.half_width << " (Hertz "
+                << hertz.half_width << ", a / R " << hertz.half_width
+                << "), p0 = " << measured.peak_pressure << " (Hertz "
+                << hertz.peak_pressure
+                << "); inside 0.9 a: largest |p - Hertz| / p0 "
+                << measured.profile_error << ", largest oscillation / p0 "
+                << measured.oscillation << std::endl;
+      check_relative(measured.load,
+                     -2. * reaction,
+                     1e-9,
+                     discretisation + ": contact load against the support");
+      if (discretisation == "mortar")
+        {
+          check(hertz.half_width > 0.04 && hertz.half_width < 0.06,
+                "a / R is not about 0.05");
+          check_relative(measured.half_width, hertz.half_width, 1e-2, "a");
+          check_relative(measured.peak_pressure,
+                         hertz.peak_pressure,
+                         1e-2,
+                         "p0");
+          check(measured.oscillation <= 0.02,
+                "the pressure oscillates by more than 2 % of p0");
+        }
+    }
+}
