@@ -69,10 +69,12 @@ namespace
    * element (3 degrees) in one.
    */
   void
-  check_rings(const std::string &surface)
+  check_rings(const std::string &surface,
+              const std::string &discretisation = "node-to-segment")
   {
     std::vector<std::string> overrides = {
       "Contact interface/Surface=" + surface,
+      "Contact interface/Discretisation=" + discretisation,
       "Load program/Stage end times=1, 1.025, " +
         std::to_string(1. + 7.5 / 180.),
       "Load program/Stage increments=2, 3, 1",
@@ -80,13 +82,13 @@ namespace
       "Newton/Displacement tolerance=1e-12",
       "Output/Progress=false",
       "Output/VTU interval=0",
-      "Output/Directory=newton_rate_" + surface};
+      "Output/Directory=newton_rate_" + surface + "_" + discretisation};
     if (surface == "hermite")
       overrides.push_back("Body outer/Element/Space=hermite");
-    const double order =
-      fitted_order(last_increment_residuals(SceneReader::read_file(
-                     source_path("prm/case3_rings.prm"), overrides)),
-                   surface + " master, 3 degrees of sliding");
+    const double order = fitted_order(
+      last_increment_residuals(
+        SceneReader::read_file(source_path("prm/case3_rings.prm"), overrides)),
+      surface + " master, " + discretisation + ", 3 degrees of sliding");
     check(order >= 1.8, surface + ": Newton order below 1.8");
   }
 
@@ -145,6 +147,11 @@ GLISSADE_TEST(contact_newton_rate_faceted)
 GLISSADE_TEST(contact_newton_rate_bspline)
 {
   check_rings("bspline");
+}
+
+GLISSADE_TEST(contact_newton_rate_mortar)
+{
+  check_rings("faceted", "mortar");
 }
 
 GLISSADE_TEST(contact_newton_rate_hermite)

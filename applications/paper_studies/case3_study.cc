@@ -94,6 +94,12 @@ namespace glissade
       }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
+    else if (variant == "mortar")
+      {
+        // Mortar over the faceted master (the element edges).
+        overrides.push_back("Contact interface/Surface=faceted");
+        overrides.push_back("Contact interface/Discretisation=mortar");
+      }
     else if (variant == "bspline-spline")
       {
         overrides.push_back("Contact interface/Surface=bspline");
@@ -109,7 +115,7 @@ namespace glissade
         "Case 3 study/Variants",
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
-          "bspline-spline, hermite)");
+          "bspline-spline, hermite, mortar)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -281,11 +287,13 @@ namespace glissade
     prm.declare_entry("Variants",
                       "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
-                        "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite")),
+                        "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
+                        "mortar")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
-                      "and kept segment (doc/contact.md).");
+                      "and kept segment (doc/contact.md); mortar is the "
+                      "mortar discretisation over the faceted master.");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

@@ -38,17 +38,22 @@ namespace glissade
     variant_overrides(const SceneDescription &scene, const std::string &variant)
     {
       if (variant != "q4" && variant != "bspline" &&
-          variant != "bspline-spline" && variant != "hermite")
+          variant != "bspline-spline" && variant != "hermite" &&
+          variant != "mortar")
         throw InputError("Contact case study/Variants",
                          "unknown variant '" + variant +
-                           "' (known: q4, bspline, bspline-spline, hermite)");
+                           "' (known: q4, bspline, bspline-spline, hermite, "
+                           "mortar)");
       std::vector<std::string> overrides;
       if (variant == "hermite")
         for (const auto &body : scene.bodies)
           overrides.push_back("Body " + body.name + "/Element/Space=hermite");
       // bspline-spline: the B-spline master with the spline's own force
       // transfer weights instead of the paper's segment hand-over.
-      const std::string surface = variant == "q4"      ? "faceted" :
+      // mortar: the mortar discretisation over the faceted master where
+      // the master is a body (a rigid obstacle stays node-to-segment).
+      const std::string surface = variant == "q4" || variant == "mortar" ?
+                                    "faceted" :
                                   variant == "hermite" ? "hermite" :
                                                          "bspline";
       for (const auto &contact : scene.contacts)
@@ -59,6 +64,9 @@ namespace glissade
             if (variant == "bspline-spline")
               overrides.push_back("Contact " + contact.name +
                                   "/Force transfer=spline");
+            if (variant == "mortar")
+              overrides.push_back("Contact " + contact.name +
+                                  "/Discretisation=mortar");
           }
       return overrides;
     }
@@ -496,10 +504,12 @@ namespace glissade
                       "folder).");
     prm.declare_entry("Variants",
                       "q4, bspline, hermite",
-                      Patterns::List(Patterns::Selection("q4|bspline|hermite")),
+                      Patterns::List(
+                        Patterns::Selection("q4|bspline|hermite|mortar")),
                       "Discretisations: q4 (faceted masters), bspline (Q4 "
                       "bodies, B-spline masters), hermite (Hermite bodies and "
-                      "masters).");
+                      "masters), mortar (mortar over the faceted masters of "
+                      "bodies; rigid obstacles node-to-segment).");
     prm.declare_entry("Increments",
                       "0",
                       Patterns::Integer(0),

@@ -287,10 +287,8 @@ namespace glissade
       "q4", "q8", "q12", "bspline", "hermite"};
     static const std::vector<std::string> table1 = {
       "q4", "q8", "q9", "q12", "q16", "hermite"};
-    static const std::vector<std::string> contact = {"q4",
-                                                     "bspline",
-                                                     "bspline-spline",
-                                                     "hermite"};
+    static const std::vector<std::string> contact = {
+      "q4", "bspline", "bspline-spline", "hermite", "mortar"};
     if (measure == "table1")
       return table1;
     if (measure.rfind("geometric", 0) == 0)
