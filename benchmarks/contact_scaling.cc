@@ -9,7 +9,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <glissade/contact/condensed_problem.h>
+#include <glissade/contact/step/condensed_problem.h>
 #include <glissade/lac/direct_solver.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>

@@ -3,7 +3,7 @@
 // normal of a faceted master jumps.
 
 #include <glissade/contact/contact_pair.h>
-#include <glissade/contact/contact_problem.h>
+#include <glissade/contact/step/contact_problem.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 

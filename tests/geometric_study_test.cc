@@ -9,7 +9,7 @@
 //   O(h^4) in the radial direction (for Q8 the O(h^3) error term is
 //   d^3X/dtheta^3, tangential on a circle) and O(h^3) in the normal.
 
-#include <glissade/contact/lagrange_edge_curve.h>
+#include <glissade/contact/curves/lagrange_edge_curve.h>
 
 #include <paper_studies/geometric_study.h>
 

@@ -3,7 +3,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
-#include <glissade/contact/curve_surface.h>
+#include <glissade/contact/surfaces/curve_surface.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>

@@ -1,10 +1,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <glissade/base/input_error.h>
-#include <glissade/contact/bspline_curve.h>
-#include <glissade/contact/faceted_curve.h>
-#include <glissade/contact/hermite_curve.h>
-#include <glissade/contact/lagrange_edge_curve.h>
+#include <glissade/contact/curves/bspline_curve.h>
+#include <glissade/contact/curves/faceted_curve.h>
+#include <glissade/contact/curves/hermite_curve.h>
+#include <glissade/contact/curves/lagrange_edge_curve.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>

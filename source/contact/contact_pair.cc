@@ -3,9 +3,9 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/base/timing_sections.h>
-#include <glissade/contact/contact_discretisation.h>
 #include <glissade/contact/contact_pair.h>
-#include <glissade/contact/surface_registry.h>
+#include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/mesh/boundary_normals.h>
 
 #include <algorithm>

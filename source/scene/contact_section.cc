@@ -5,8 +5,8 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
-#include <glissade/contact/contact_discretisation.h>
-#include <glissade/contact/surface_registry.h>
+#include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
 

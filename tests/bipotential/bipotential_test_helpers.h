@@ -3,7 +3,7 @@
 
 #pragma once
 
-#include <glissade/contact/bipotential_solver.h>
+#include <glissade/contact/local_solvers/bipotential_solver.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // and Hertz's solution on a half-plane. Prints every figure it checks;
 // exits with the number of failed checks.
 
-#include <glissade/contact/bipotential_solver.h>
+#include <glissade/contact/local_solvers/bipotential_solver.h>
 
 #include <chrono>
 #include <cmath>

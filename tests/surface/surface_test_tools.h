@@ -4,9 +4,9 @@
 // over.
 #pragma once
 
-#include <glissade/contact/bspline_curve.h>
-#include <glissade/contact/faceted_curve.h>
-#include <glissade/contact/hermite_curve.h>
+#include <glissade/contact/curves/bspline_curve.h>
+#include <glissade/contact/curves/faceted_curve.h>
+#include <glissade/contact/curves/hermite_curve.h>
 
 #include <chrono>
 #include <cmath>

@@ -4,8 +4,8 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/body/body.h>
-#include <glissade/contact/contact_node.h>
-#include <glissade/contact/master_surface.h>
+#include <glissade/contact/discretisation/contact_node.h>
+#include <glissade/contact/surfaces/master_surface.h>
 #include <glissade/description/scene_description.h>
 
 #include <map>

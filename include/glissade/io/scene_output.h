@@ -1,7 +1,7 @@
 #pragma once
 
 #include <glissade/body/body.h>
-#include <glissade/contact/contact_problem.h>
+#include <glissade/contact/step/contact_problem.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/io/contact_surface_output.h>
 

@@ -2,7 +2,7 @@
 
 #include <glissade/body/body.h>
 #include <glissade/body/energy_account.h>
-#include <glissade/contact/contact_problem.h>
+#include <glissade/contact/step/contact_problem.h>
 #include <glissade/description/scene_description.h>
 
 #include <memory>

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <glissade/contact/discretisation/contact_linearization.h>
+#include <glissade/contact/local_solvers/bipotential_solver.h>
+
+#include <array>
+
+namespace glissade
+{
+  /** A slave node and its contact state. */
+  struct ContactNode
+  {
+    unsigned int                                   vertex;
+    std::array<dealii::types::global_dof_index, 2> dofs;
+    dealii::Point<2>                               reference_position;
+
+    bool active    = false;
+    bool projected = false; // has a counterpart on the master
+    /** Master segment and s of the last projection (-1: none or rigid). */
+    int                  segment = -1;
+    double               s       = 0.;
+    double               gap     = 0.;
+    dealii::Tensor<1, 2> tangent, normal;
+    /** Reaction on the slave node in the (t, n) frame: r_n >= 0 pushes. */
+    std::array<double, 2>         reaction = {{0., 0.}};
+    BiPotentialSolver::NodeStatus status = BiPotentialSolver::NodeStatus::open;
+    /**
+     * Segment changes within the current increment. From the second on,
+     * the node keeps its segment (along its extension) for the rest of the
+     * increment: on a C1 curve whose curvature jumps at a node, a slave
+     * node whose equilibrium sits at that node would otherwise switch
+     * sides at every Newton iteration, each side's tangent pointing to the
+     * other. The point, the normal and the gap agree on both sides, so
+     * this changes how Newton gets there, not where.
+     */
+    unsigned int segment_switches = 0;
+    /** The last projection met a vertex with its cone (a faceted master). */
+    bool at_vertex = false;
+    /**
+     * The directions (tangential, normal) of this node that the last local
+     * solve augmented (ContactProblem): the next starts from them.
+     */
+    std::array<bool, 2> augmented = {{false, false}};
+    /**
+     * What the local problem adds to this node's (slip, gap) in the current
+     * step: zero for the position-level law; a velocity-level law (Moreau-
+     * Jean) shifts them so that the law holds on the end velocity
+     * (TimeIntegrator).
+     */
+    std::array<double, 2> law_shift = {{0., 0.}};
+
+    /**
+     * Gap, slip, their derivatives, the forces of the reaction and the
+     * contact tangent at the last projection (rebuilt by every one).
+     */
+    ContactLinearization linearization;
+
+    /**
+     * The state a checkpoint holds (Boost serialization): the reactions and
+     * statuses warm-start the local solver of the next increment, so a
+     * restart needs them to continue bit for bit; the linearisation is
+     * rebuilt by the next detection.
+     */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      int status_code = static_cast<int>(status);
+      archive &active &projected &segment &s &gap &tangent &normal
+          &reaction[0] &
+        reaction[1] & status_code;
+      status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
+    }
+
+    dealii::Tensor<1, 2>
+    force() const
+    {
+      return reaction[0] * tangent + reaction[1] * normal;
+    }
+  };
+} // namespace glissade

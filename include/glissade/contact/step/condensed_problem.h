@@ -1,0 +1,191 @@
+#pragma once
+
+#include <deal.II/lac/vector.h>
+
+#include <glissade/contact/discretisation/contact_linearization.h>
+#include <glissade/lac/compliance_matrix.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace glissade
+{
+  class Body;
+
+  /**
+   * A vector over the dofs of a contact pair's bodies (DofCoefficient::body
+   * 0 or 1), with the simulation's indices of those two bodies (the second
+   * is numbers::invalid_unsigned_int for a rigid obstacle).
+   */
+  struct PairVector
+  {
+    const DofVector            *coefficients;
+    std::array<unsigned int, 2> bodies;
+  };
+
+  /**
+   * A rank-one change of the bodies' matrices, K <- K - load (x) row, that
+   * lives on contact dofs: a term of the contact tangent, or the removal
+   * of a floating body's regularisation.
+   */
+  struct RankOneTerm
+  {
+    PairVector load, row;
+  };
+
+  /** The active contact nodes of a Newton iteration, as the condensed problem
+   * sees them. */
+  struct ActiveNodes
+  {
+    using Vector2 = ComplianceMatrix::Vector2;
+
+    /** (slip, gap) of each node now. */
+    std::vector<Vector2> initial;
+    /** The forces of unit reactions (tangential, normal): two per node. */
+    std::vector<PairVector> forces;
+    /** The slip and gap rows: two per node. */
+    std::vector<PairVector> rows;
+    /** The terms of the contact tangent and any other rank-one change. */
+    std::vector<RankOneTerm> terms;
+    /** Coulomb's mu of each node. */
+    std::vector<double> friction;
+
+    unsigned int
+    size() const
+    {
+      return initial.size();
+    }
+  };
+
+  /**
+   * The closed directions of the contact constraints added to the Newton
+   * matrix, K + sum E_k row_k (x) row_k, with the right-hand side
+   * - E_k u_k row_k (theory.md, section 4.5): per node, whether its
+   * tangential (stick) and normal (closed) directions are augmented, and
+   * a factor on the stiffness E_k = factor / (the node's compliance through
+   * its bodies alone).
+   */
+  struct Augmentation
+  {
+    std::vector<std::array<bool, 2>> directions;
+    double                           factor = 1.;
+
+    unsigned int
+    count() const
+    {
+      unsigned int n = 0;
+      for (const auto &d : directions)
+        n += d[0] + d[1];
+      return n;
+    }
+  };
+
+  /**
+   * The Newton step of the bodies in contact, condensed on the active
+   * contact nodes (paper eq. 8-10; theory.md, sections 4.3 and 4.5).
+   *
+   * Each body has factorised its own matrix K_b; the true Newton matrix is
+   * K - sum_j u_j (x) v_j, with rank-one terms on the contact dofs (the
+   * contact tangent couples the bodies that touch, two terms per node). So
+   * the step needs nothing but the contact block C of each K_b^-1
+   * (Woodbury): with U the loads and V the rows of the terms, and
+   * S = I - V C U,
+   *
+   *   (K - U V)^-1 = K^-1 + K^-1 U S^-1 V K^-1.
+   *
+   * With R the slip and gap rows and F the forces of unit reactions, the
+   * compliance is W = R C F + (R C U) S^-1 (V C F), the free relative
+   * displacement u_free = u_0 + R d + (R C U) S^-1 V d with d = du_lib +
+   * K^-1 a (du_lib = K^-1 rhs, a the augmentation's load), and the step
+   * du = d + K^-1 (F r + U z), z = S^-1 (V d + V C F r): one more solve per
+   * body.
+   */
+  class CondensedProblem
+  {
+  public:
+    using Vector2 = ComplianceMatrix::Vector2;
+
+    /**
+     * Forms W from the bodies' compliance (their current factorisations);
+     * `predictor` holds each body's du_lib = K_b^-1 rhs_b.
+     */
+    CondensedProblem(const ActiveNodes                         &nodes,
+                     const Augmentation                        &augmentation,
+                     const std::vector<std::unique_ptr<Body>>  &bodies,
+                     const std::vector<dealii::Vector<double>> &predictor);
+
+    /** False if the Newton matrix is singular on the contact dofs (S is). */
+    bool
+    regular() const
+    {
+      return is_regular;
+    }
+
+    /** W, the compliance of the Newton matrix. */
+    const ComplianceMatrix &
+    compliance() const
+    {
+      return W;
+    }
+
+    /** (slip, gap) of each node after the predictor, with no reaction. */
+    const std::vector<Vector2> &
+    free_displacement() const
+    {
+      return u_free;
+    }
+
+    /**
+     * Whether the symmetric part of W restricted to the given directions
+     * (per node: tangential, normal) is positive definite: the local
+     * problem on them is then convex.
+     */
+    bool
+    positive_definite_on(
+      const std::vector<std::array<bool, 2>> &directions) const;
+
+    /**
+     * `increments` holds du_lib on entry and du on exit; `contact_forces`
+     * receives each body's F r (the forces of the reactions on its dofs).
+     */
+    void
+    correct(const std::vector<Vector2>          &r,
+            std::vector<dealii::Vector<double>> &increments,
+            std::vector<dealii::Vector<double>> &contact_forces) const;
+
+  private:
+    /**
+     * rows C loads, the products with each body's compliance, into
+     * `products` (rows x loads, column major).
+     */
+    void
+    add_compliance_products(const std::vector<PairVector> &all_rows,
+                            const std::vector<PairVector> &all_loads,
+                            std::vector<double>           &products) const;
+
+    const ActiveNodes                        &nodes;
+    const std::vector<std::unique_ptr<Body>> &bodies;
+    const unsigned int                        n;
+
+    /**
+     * The rank-one terms: the nodes' (`n_given` of them), then one per
+     * augmented direction (load -E_k row_k, so `augmented_row` and
+     * `augmented_scale` = -E_k, and its share of the right-hand side
+     * `augmented_gap` = u_k).
+     */
+    unsigned int              n_given = 0;
+    std::vector<unsigned int> augmented_row;
+    std::vector<double>       augmented_scale, augmented_gap;
+
+    /** LU of S and its pivots; X = S^-1 V C F; y = S^-1 V d. */
+    std::vector<double> S;
+    std::vector<int>    pivots;
+    std::vector<double> X;
+    std::vector<double> y;
+    bool                is_regular = true;
+
+    ComplianceMatrix     W;
+    std::vector<Vector2> u_free;
+  };
+} // namespace glissade

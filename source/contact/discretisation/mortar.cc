@@ -1,0 +1,626 @@
+#include <glissade/base/dual_number.h>
+#include <glissade/base/input_error.h>
+#include <glissade/body/body.h>
+#include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/surfaces/curve_surface.h>
+#include <glissade/description/scene_description.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * The coordinates a segment pair's integrals depend on: up to four
+     * slave points (the slave segment's two nodes and their neighbours,
+     * whose faces make the nodal normals) and the master segment's two
+     * nodes, two coordinates each.
+     */
+    constexpr int n_mortar_variables = 12;
+    using MortarDual                 = Dual<n_mortar_variables>;
+
+    struct DualPoint
+    {
+      MortarDual x, y;
+    };
+
+    DualPoint
+    operator-(const DualPoint &a, const DualPoint &b)
+    {
+      return {a.x - b.x, a.y - b.y};
+    }
+
+    DualPoint
+    operator+(const DualPoint &a, const DualPoint &b)
+    {
+      return {a.x + b.x, a.y + b.y};
+    }
+
+    DualPoint
+    operator*(const MortarDual &s, const DualPoint &a)
+    {
+      return {s * a.x, s * a.y};
+    }
+
+    MortarDual
+    cross(const DualPoint &a, const DualPoint &b)
+    {
+      return a.x * b.y - a.y * b.x;
+    }
+
+    /** e3 x v: the left normal of a direction of travel. */
+    DualPoint
+    left_normal(const DualPoint &v)
+    {
+      return {-v.y, v.x};
+    }
+
+    /** A value and its derivatives over the pair's dofs, summed from
+     * segment pairs. */
+    struct Accumulated
+    {
+      double    value = 0.;
+      DofVector gradient;
+
+      /** Adds a segment pair's value; `dofs` maps its variables to dofs. */
+      void
+      add(const MortarDual                     &v,
+          const std::array<std::pair<unsigned int, types::global_dof_index>,
+                           n_mortar_variables> &dofs,
+          const unsigned int                    n_used)
+      {
+        value += v.value;
+        for (unsigned int i = 0; i < n_used; ++i)
+          if (v.derivative[i] != 0.)
+            gradient.push_back(
+              {dofs[i].first, dofs[i].second, v.derivative[i]});
+      }
+    };
+
+    /** One entry per dof. */
+    void
+    merge_entries(DofVector &v)
+    {
+      std::sort(v.begin(),
+                v.end(),
+                [](const DofCoefficient &a, const DofCoefficient &b) {
+                  return std::make_pair(a.body, a.dof) <
+                         std::make_pair(b.body, b.dof);
+                });
+      DofVector merged;
+      for (const auto &e : v)
+        if (!merged.empty() && merged.back().body == e.body &&
+            merged.back().dof == e.dof)
+          merged.back().value += e.value;
+        else
+          merged.push_back(e);
+      v = std::move(merged);
+    }
+
+    /** c a + b, appended to `out`. */
+    void
+    add_scaled(DofVector &out, const double c, const DofVector &a)
+    {
+      if (c != 0.)
+        for (const auto &e : a)
+          out.push_back({e.body, e.dof, c * e.value});
+    }
+
+    /**
+     * Segment-to-segment mortar contact with dual Lagrange multipliers
+     * (Wohlmuth 2000; Popp, Gee and Wall 2009; Yang, Laursen and Meng
+     * 2005 for the large-sliding 2D case), integrated segment by segment:
+     * doc/contact.md, "Mortar".
+     *
+     * The slave side is its boundary's straight faces with their linear
+     * shape functions N_j and the dual functions Phi_j (on a face from
+     * node a to node b, s in [0, 1]: Phi_a = 2 - 3 s, Phi_b = 3 s - 1,
+     * biorthogonal to N: int Phi_j N_k = delta_jk int N_j). Each slave node
+     * has the normal n_j of the faces that meet there; a slave point's
+     * normal is the interpolation of the nodal ones, and its master point
+     * is where that normal meets the master. On the cells where a slave
+     * face and a master segment overlap (cut by the master nodes projected
+     * along the slave normal field), Gauss quadrature gives
+     *
+     *   D_j  = int Phi_j,     M_jk = int Phi_j N_k(master),
+     *
+     * and the node's constraint is its weighted gap D_j n_j . (x_j - y_j)
+     * with the mortar point y_j = sum_k m_jk y_k, m_jk = M_jk / D_j
+     * (sum_k m_jk = 1): a node-to-segment constraint against y_j, with the
+     * reaction r_j = D_j lambda_j (so that the outputs, which read a
+     * node's reaction as a force, read mortar's as well; the pressure is
+     * lambda_j = r_j / D_j, what the contact tables report). Dividing by
+     * D_j > 0 changes neither the constraint's solution nor its
+     * multiplier's sign.
+     *
+     * Every integral is differentiated exactly (forward-mode, Dual), so
+     * the gap and slip rows and the contact tangent (the turn of n_j and
+     * the change of every m_jk at fixed reaction) are consistent.
+     */
+    class Mortar : public ContactDiscretisation
+    {
+    public:
+      explicit Mortar(const Context &context);
+
+      void
+      update() override;
+
+      bool
+      project(ContactNode &node, bool keep_segment) const override;
+
+    private:
+      /** A point of either side: body 0 the slave, 1 the master. */
+      struct SidePoint
+      {
+        unsigned int                           body;
+        unsigned int                           index;
+        std::array<types::global_dof_index, 2> dofs;
+        Point<2>                               reference;
+      };
+
+      /** The current position and the motion since the increment began. */
+      Point<2>
+      position(const SidePoint &p) const;
+      Tensor<1, 2>
+      motion(const SidePoint &p) const;
+
+      /** Adds the integrals of slave face f over master segment i. */
+      void
+      integrate(unsigned int f, unsigned int i);
+
+      /** The unit normal at slave node j as Duals over `local`'s points. */
+      DualPoint
+      nodal_normal(unsigned int                                j,
+                   const std::vector<DualPoint>               &coordinates,
+                   const std::map<unsigned int, unsigned int> &local) const;
+
+      const Body        &slave;
+      const Body        &master;
+      const MasterChain &chain;
+      const double       search_distance;
+
+      std::vector<SidePoint>               slave_points, master_points;
+      std::map<unsigned int, unsigned int> point_of_vertex;
+      /** Slave faces (a, b), oriented with the slave on the right. */
+      std::vector<std::array<unsigned int, 2>> faces;
+      std::vector<std::vector<unsigned int>>   faces_of_point;
+
+      /** What update() finds for each slave point. */
+      struct NodeState
+      {
+        bool                                valid = false;
+        Point<2>                            x;
+        Tensor<1, 2>                        normal, tangent, motion;
+        DofVector                           rotation_row; // d theta / dU
+        Accumulated                         D;
+        std::map<unsigned int, Accumulated> M; // by master point
+      };
+      std::vector<NodeState> state;
+    };
+
+
+
+    Mortar::Mortar(const Context &context)
+      : slave(context.slave)
+      , master(*context.master)
+      , chain(
+          dynamic_cast<const CurveSurface &>(context.surface).master_chain())
+      , search_distance(context.description.alert_distance)
+    {
+      for (const ContactNode &node : context.nodes)
+        {
+          point_of_vertex[node.vertex] = slave_points.size();
+          slave_points.push_back(
+            {0,
+             static_cast<unsigned int>(slave_points.size()),
+             node.dofs,
+             node.reference_position});
+        }
+      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
+        master_points.push_back(
+          {1, k, chain.value_dofs[k], chain.reference_points[k]});
+
+      // The slave faces, each oriented so that its left normal points out
+      // of its cell (the master chain's convention, MasterChain).
+      std::set<unsigned int> slave_vertices;
+      for (const auto &[vertex, index] : point_of_vertex)
+        slave_vertices.insert(vertex);
+      faces_of_point.resize(slave_points.size());
+      for (const auto &cell : slave.dof_handler().active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              slave_vertices.count(cell->face(f)->vertex_index(0)) &&
+              slave_vertices.count(cell->face(f)->vertex_index(1)))
+            {
+              // (A face between two slave vertices that is not on a slave
+              // boundary cannot exist on a boundary of Q1 cells but for a
+              // one-cell-thick strip; ContactPair's nodes come from the
+              // slave boundary's faces, so their boundary ids decide.)
+              if (!context.slave_boundary_ids.count(
+                    cell->face(f)->boundary_id()))
+                continue;
+              unsigned int a =
+                point_of_vertex.at(cell->face(f)->vertex_index(0));
+              unsigned int b =
+                point_of_vertex.at(cell->face(f)->vertex_index(1));
+              const Tensor<1, 2> along =
+                slave_points[b].reference - slave_points[a].reference;
+              const Tensor<1, 2> out({-along[1], along[0]});
+              if (out * (cell->face(f)->center() - cell->center()) < 0.)
+                std::swap(a, b);
+              faces.push_back({{a, b}});
+              faces_of_point[a].push_back(faces.size() - 1);
+              faces_of_point[b].push_back(faces.size() - 1);
+            }
+      for (unsigned int j = 0; j < slave_points.size(); ++j)
+        if (faces_of_point[j].size() > 2)
+          throw InputError(
+            context.description.entry + "/Slave boundary",
+            "mortar contact needs the slave boundary as "
+            "curves: the node at (" +
+              std::to_string(slave_points[j].reference[0]) + ", " +
+              std::to_string(slave_points[j].reference[1]) + ") joins " +
+              std::to_string(faces_of_point[j].size()) + " faces");
+      state.resize(slave_points.size());
+    }
+
+
+
+    Point<2>
+    Mortar::position(const SidePoint &p) const
+    {
+      const Vector<double> &u = (p.body == 0 ? slave : master).displacement();
+      return Point<2>(p.reference[0] + u(p.dofs[0]),
+                      p.reference[1] + u(p.dofs[1]));
+    }
+
+
+
+    Tensor<1, 2>
+    Mortar::motion(const SidePoint &p) const
+    {
+      const Body           &body = p.body == 0 ? slave : master;
+      const Vector<double> &u    = body.displacement();
+      const Vector<double> &u0   = body.stored_displacement();
+      return Tensor<1, 2>(
+        {u(p.dofs[0]) - u0(p.dofs[0]), u(p.dofs[1]) - u0(p.dofs[1])});
+    }
+
+
+
+    DualPoint
+    Mortar::nodal_normal(
+      const unsigned int                          j,
+      const std::vector<DualPoint>               &coordinates,
+      const std::map<unsigned int, unsigned int> &local) const
+    {
+      // The faces' left normals (out of the slave, as long as the face)
+      // summed, turned inwards: n_j points from the master to the slave,
+      // as a master surface's normal does.
+      DualPoint sum{MortarDual(0.), MortarDual(0.)};
+      for (const unsigned int f : faces_of_point[j])
+        sum = sum + left_normal(coordinates[local.at(faces[f][1])] -
+                                coordinates[local.at(faces[f][0])]);
+      const MortarDual length = sqrt(sum.x * sum.x + sum.y * sum.y);
+      return {-sum.x / length, -sum.y / length};
+    }
+
+
+
+    void
+    Mortar::integrate(const unsigned int f, const unsigned int i)
+    {
+      const unsigned int a = faces[f][0], b = faces[f][1];
+      const unsigned int c = i, d = (i + 1) % master_points.size();
+
+      // A cheap test first: the segment faces the slave face, and lies
+      // within reach of it.
+      const Point<2>     xa = position(slave_points[a]);
+      const Point<2>     xb = position(slave_points[b]);
+      const Point<2>     yc = position(master_points[c]);
+      const Point<2>     yd = position(master_points[d]);
+      const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
+      const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
+      if (slave_out * master_out >= 0.)
+        return;
+      const double reach =
+        search_distance + (xb - xa).norm() + (yd - yc).norm();
+      const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
+      if (slave_mid.distance(master_mid) > reach)
+        return;
+
+      // The local variables: the slave points of both nodal normals, then
+      // the master segment's nodes.
+      std::map<unsigned int, unsigned int> local; // slave point -> local
+      std::array<std::pair<unsigned int, types::global_dof_index>,
+                 n_mortar_variables>
+                             dofs{};
+      std::vector<DualPoint> coordinates;
+      const auto             add_point = [&](const SidePoint &p) {
+        const unsigned int l = coordinates.size();
+        const Point<2>     x = position(p);
+        coordinates.push_back({MortarDual::variable(x[0], 2 * l),
+                               MortarDual::variable(x[1], 2 * l + 1)});
+        dofs[2 * l]     = {p.body, p.dofs[0]};
+        dofs[2 * l + 1] = {p.body, p.dofs[1]};
+        return l;
+      };
+      for (const unsigned int j : {a, b})
+        for (const unsigned int g : faces_of_point[j])
+          for (const unsigned int p : faces[g])
+            if (!local.count(p))
+              local[p] = add_point(slave_points[p]);
+      const unsigned int lc     = add_point(master_points[c]);
+      const unsigned int ld     = add_point(master_points[d]);
+      const unsigned int n_used = 2 * coordinates.size();
+
+      const DualPoint &Xa = coordinates[local.at(a)];
+      const DualPoint &Xb = coordinates[local.at(b)];
+      const DualPoint &Yc = coordinates[lc];
+      const DualPoint &Yd = coordinates[ld];
+      const DualPoint  Na = nodal_normal(a, coordinates, local);
+      const DualPoint  Nb = nodal_normal(b, coordinates, local);
+      const DualPoint  dX = Xb - Xa, dN = Nb - Na;
+
+      // Where the slave normal field through a master node y meets the
+      // face: (x(s) - y) x n(s) = 0, quadratic in s, solved in plain
+      // numbers, then one Newton step on the Duals for the derivatives.
+      const auto slave_coordinate = [&](const DualPoint &Y, bool &found) {
+        const DualPoint  r = Xa - Y;
+        const MortarDual A = cross(dX, dN);
+        const MortarDual B = cross(r, dN) + cross(dX, Na);
+        const MortarDual C = cross(r, Na);
+        double           s = -C.value / B.value;
+        found              = std::isfinite(s);
+        for (unsigned int it = 0; it < 20 && found; ++it)
+          {
+            const double step = (A.value * s * s + B.value * s + C.value) /
+                                (2. * A.value * s + B.value);
+            s -= step;
+            found = std::isfinite(s);
+            if (std::abs(step) < 1e-15)
+              break;
+          }
+        return s - (A * s * s + B * s + C) / (2. * s * A + B);
+      };
+      bool             found_c = false, found_d = false;
+      const MortarDual sc = slave_coordinate(Yc, found_c);
+      const MortarDual sd = slave_coordinate(Yd, found_d);
+      if (!found_c || !found_d)
+        return;
+      // The overlap in s: between the two master nodes' images (the
+      // master runs against the slave, so d comes first), within the face.
+      const MortarDual &first = sd.value < sc.value ? sd : sc;
+      const MortarDual &last  = sd.value < sc.value ? sc : sd;
+      const MortarDual  lower = first.value > 0. ? first : MortarDual(0.);
+      const MortarDual  upper = last.value < 1. ? last : MortarDual(1.);
+      if (upper.value - lower.value <= 1e-12)
+        return;
+
+      // Gauss-Legendre, four points on [0, 1]: exact for the flat case
+      // (degree 2) and ample for the rational integrand of curved ones.
+      static const double gauss_points[4]  = {0.0694318442029737,
+                                              0.3300094782075719,
+                                              0.6699905217924281,
+                                              0.9305681557970263};
+      static const double gauss_weights[4] = {0.1739274225687269,
+                                              0.3260725774312731,
+                                              0.3260725774312731,
+                                              0.1739274225687269};
+      const MortarDual    length           = sqrt(dX.x * dX.x + dX.y * dX.y);
+      MortarDual          Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
+      for (unsigned int q = 0; q < 4; ++q)
+        {
+          const MortarDual s = lower + gauss_points[q] * (upper - lower);
+          const MortarDual w = gauss_weights[q] * (upper - lower) * length;
+          const DualPoint  x = Xa + s * dX;
+          const DualPoint  n = Na + s * dN;
+          // The master point on the normal: (y(eta) - x) x n = 0.
+          const MortarDual eta  = cross(x - Yc, n) / cross(Yd - Yc, n);
+          const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
+          Da += w * phia;
+          Db += w * phib;
+          Mac += w * phia * (1. - eta);
+          Mad += w * phia * eta;
+          Mbc += w * phib * (1. - eta);
+          Mbd += w * phib * eta;
+        }
+      state[a].D.add(Da, dofs, n_used);
+      state[b].D.add(Db, dofs, n_used);
+      state[a].M[c].add(Mac, dofs, n_used);
+      state[a].M[d].add(Mad, dofs, n_used);
+      state[b].M[c].add(Mbc, dofs, n_used);
+      state[b].M[d].add(Mbd, dofs, n_used);
+    }
+
+
+
+    void
+    Mortar::update()
+    {
+      for (unsigned int j = 0; j < slave_points.size(); ++j)
+        {
+          NodeState &s = state[j];
+          s            = NodeState();
+          s.x          = position(slave_points[j]);
+          s.motion     = motion(slave_points[j]);
+
+          // The nodal normal and its turn, d theta = -t . dn.
+          std::map<unsigned int, unsigned int> local;
+          std::array<std::pair<unsigned int, types::global_dof_index>,
+                     n_mortar_variables>
+                                 dofs{};
+          std::vector<DualPoint> coordinates;
+          for (const unsigned int g : faces_of_point[j])
+            for (const unsigned int p : faces[g])
+              if (!local.count(p))
+                {
+                  const unsigned int l = coordinates.size();
+                  const Point<2>     x = position(slave_points[p]);
+                  coordinates.push_back(
+                    {MortarDual::variable(x[0], 2 * l),
+                     MortarDual::variable(x[1], 2 * l + 1)});
+                  dofs[2 * l]     = {0, slave_points[p].dofs[0]};
+                  dofs[2 * l + 1] = {0, slave_points[p].dofs[1]};
+                  local[p]        = l;
+                }
+          if (faces_of_point[j].empty())
+            continue;
+          const DualPoint n = nodal_normal(j, coordinates, local);
+          s.normal          = Tensor<1, 2>({n.x.value, n.y.value});
+          s.tangent         = Tensor<1, 2>({s.normal[1], -s.normal[0]});
+          Accumulated theta;
+          theta.add(-(s.tangent[0] * n.x + s.tangent[1] * n.y),
+                    dofs,
+                    2 * coordinates.size());
+          s.rotation_row = theta.gradient;
+        }
+
+      for (unsigned int f = 0; f < faces.size(); ++f)
+        for (unsigned int i = 0;
+             i + (chain.closed ? 0 : 1) < master_points.size();
+             ++i)
+          integrate(f, i);
+
+      // A node counts when the master covers enough of its support that
+      // its weights m_jk = M_jk / D_j stay bounded: at the master's ends,
+      // a partly covered node has no counterpart (as a node-to-segment
+      // node beyond an open end).
+      for (unsigned int j = 0; j < slave_points.size(); ++j)
+        {
+          NodeState &s         = state[j];
+          double     tributary = 0.;
+          for (const unsigned int g : faces_of_point[j])
+            tributary += 0.5 * position(slave_points[faces[g][0]])
+                                 .distance(position(slave_points[faces[g][1]]));
+          s.valid = !s.M.empty() && s.D.value > 0.5 * tributary;
+          merge_entries(s.D.gradient);
+          for (auto &[k, M] : s.M)
+            merge_entries(M.gradient);
+        }
+    }
+
+
+
+    bool
+    Mortar::project(ContactNode &node, const bool /*keep_segment*/) const
+    {
+      const NodeState &s = state[point_of_vertex.at(node.vertex)];
+      if (!s.valid)
+        return false;
+      const Tensor<1, 2> &n = s.normal, &t = s.tangent;
+      const double        D = s.D.value;
+
+      // The mortar point y_j = sum m_k y_k, and the master's motion there.
+      Point<2>     y;
+      Tensor<1, 2> master_motion;
+      for (const auto &[k, M] : s.M)
+        {
+          const double m = M.value / D;
+          y += m * Tensor<1, 2>(position(master_points[k]));
+          master_motion += m * motion(master_points[k]);
+        }
+      const Tensor<1, 2> x_minus_y = s.x - y;
+      const Tensor<1, 2> d         = s.motion - master_motion;
+
+      ContactLinearization l;
+      l.gap  = n * x_minus_y;
+      l.slip = t * d;
+
+      // The force of a unit reaction (and the weights of x - y): the slave
+      // node with 1, master point k with -m_k.
+      const auto relative = [&](const Tensor<1, 2> &v, DofVector &out) {
+        for (unsigned int c = 0; c < 2; ++c)
+          out.push_back({0, node.dofs[c], v[c]});
+        for (const auto &[k, M] : s.M)
+          for (unsigned int c = 0; c < 2; ++c)
+            out.push_back({1, master_points[k].dofs[c], -M.value / D * v[c]});
+      };
+      relative(n, l.normal_force);
+      relative(t, l.tangential_force);
+
+      // dg = -(t . (x - y)) d theta + n . d(x - y)|_m - sum (n . y_k) dm_k,
+      // du_t = (n . d) d theta + t . d(x - y)|_m - sum (t . dy_k) dm_k,
+      // with dm_k = dM_k / D - m_k dD / D. As sum m_k = 1 (the integrand's
+      // master shape functions sum to one), sum dm_k = 0: y_k and dy_k
+      // enter relative to x_j and dx_j, which keeps the terms that cancel
+      // (a flat master: n . (y_k - y_l) = 0) from leaving round-off.
+      l.gap_row  = l.normal_force;
+      l.slip_row = l.tangential_force;
+      add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
+      add_scaled(l.slip_row, n * d, s.rotation_row);
+
+      // The contact tangent at fixed r: F = lambda . (e_j - sum m_k e_k)
+      // with lambda = r_t t + r_n n: the turn, d lambda = theta mu with
+      // mu = r_t n - r_n t, and each weight's change, -lambda on y_k.
+      const Tensor<1, 2> lambda = node.reaction[0] * t + node.reaction[1] * n;
+      const Tensor<1, 2> mu     = node.reaction[0] * n - node.reaction[1] * t;
+      if (!s.rotation_row.empty() && mu.norm() > 0.)
+        {
+          ContactLinearization::Term turn;
+          relative(mu, turn.load);
+          turn.row = s.rotation_row;
+          l.tangent_terms.push_back(std::move(turn));
+        }
+      for (const auto &[k, M] : s.M)
+        {
+          const double m = M.value / D;
+          DofVector    dm;
+          add_scaled(dm, 1. / D, M.gradient);
+          add_scaled(dm, -m / D, s.D.gradient);
+          const Point<2> yk = position(master_points[k]);
+          add_scaled(l.gap_row, -(n * (yk - s.x)), dm);
+          add_scaled(l.slip_row,
+                     -(t * (motion(master_points[k]) - s.motion)),
+                     dm);
+          if (lambda.norm() > 0.)
+            {
+              ContactLinearization::Term change;
+              for (unsigned int c = 0; c < 2; ++c)
+                change.load.push_back(
+                  {1, master_points[k].dofs[c], -lambda[c]});
+              change.row = std::move(dm);
+              l.tangent_terms.push_back(std::move(change));
+            }
+        }
+
+      merge_entries(l.gap_row);
+      merge_entries(l.slip_row);
+      node.segment       = -1;
+      node.s             = 0.;
+      node.at_vertex     = false;
+      node.normal        = n;
+      node.tangent       = t;
+      node.gap           = l.gap;
+      node.linearization = std::move(l);
+      return true;
+    }
+  } // namespace
+
+
+
+  std::unique_ptr<ContactDiscretisation>
+  create_mortar(const ContactDiscretisation::Context &context)
+  {
+    const std::string entry = context.description.entry;
+    if (context.master == nullptr)
+      throw InputError(entry + "/Discretisation",
+                       "mortar contact needs a deformable master body; a "
+                       "rigid obstacle is met node-to-segment "
+                       "(Discretisation = node-to-segment)");
+    if (dynamic_cast<const CurveSurface *>(&context.surface) == nullptr ||
+        context.description.surface != "faceted")
+      throw InputError(entry + "/Surface",
+                       "mortar contact integrates over the faceted master "
+                       "(Surface = faceted); the smoothed masters ('" +
+                         context.description.surface +
+                         "') are met node-to-segment in this version");
+    return std::make_unique<Mortar>(context);
+  }
+} // namespace glissade

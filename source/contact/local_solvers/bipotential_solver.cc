@@ -1,0 +1,646 @@
+#include <glissade/contact/local_solvers/bipotential_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+extern "C" void
+dgesv_(const int *n,
+       const int *nrhs,
+       double    *a,
+       const int *lda,
+       int       *ipiv,
+       double    *b,
+       const int *ldb,
+       int       *info);
+
+namespace glissade
+{
+  namespace
+  {
+    using Vector2    = BiPotentialSolver::Vector2;
+    using Residuals  = BiPotentialSolver::Residuals;
+    using Outcome    = BiPotentialSolver::Outcome;
+    using NodeStatus = BiPotentialSolver::NodeStatus;
+
+    constexpr unsigned int t = ComplianceMatrix::tangential;
+    constexpr unsigned int n = ComplianceMatrix::normal;
+
+    // Sweeps between two recomputations of u = u_free + W r from scratch,
+    // so that the round-off of the incremental updates cannot pile up.
+    constexpr unsigned int refresh_period = 128;
+
+    // A diagonal entry below this fraction of the largest one is round-off
+    // of an assembly in which both bodies are rigid.
+    constexpr double singular_fraction = 1e-14;
+
+    // Sweeps with unchanged statuses after which the linear law on the
+    // closed nodes is solved (the polish), then four times as many again
+    // while they stay unchanged.
+    constexpr unsigned int first_polish_after_stable_sweeps = 5;
+
+    // Restarts of Gauss-Seidel from a projected polish at most, per solve.
+    constexpr unsigned int max_polish_restarts = 20;
+
+    // Reactions this many times larger than the problem's own force scale
+    // mean that the fixed-point iteration is running away.
+    constexpr double divergence_factor = 1e30;
+
+    inline double
+    norm(const Vector2 &v)
+    {
+      return std::sqrt(v[0] * v[0] + v[1] * v[1]);
+    }
+
+    inline bool
+    is_finite(const Vector2 &v)
+    {
+      return std::isfinite(v[0]) && std::isfinite(v[1]);
+    }
+
+    double
+    max_norm(const std::vector<Vector2> &vectors)
+    {
+      double result = 0.;
+      for (const Vector2 &v : vectors)
+        result = std::max(result, norm(v));
+      return result;
+    }
+
+    // u = u_free + W r.
+    void
+    compute_displacement(const ComplianceMatrix     &W,
+                         const std::vector<Vector2> &u_free,
+                         const std::vector<Vector2> &r,
+                         std::vector<Vector2>       &u)
+    {
+      u = u_free;
+      W.add_product(r, u);
+    }
+
+    // The residuals of the contact law at each node, from a consistent pair
+    // (u, r). See BiPotentialSolver::Residuals for what each one means.
+    Residuals
+    residuals_of(const std::vector<Vector2> &u,
+                 const std::vector<Vector2> &r,
+                 const std::vector<double>  &mu,
+                 const double                scale)
+    {
+      Residuals result;
+      for (std::size_t k = 0; k < u.size(); ++k)
+        {
+          const double gap = u[k][n];
+          result.complementarity =
+            std::max(result.complementarity,
+                     std::abs(std::min(gap, scale * r[k][n])));
+          result.max_penetration = std::max(result.max_penetration, -gap);
+
+          // Coulomb's law for the tangential part, at the given normal
+          // reaction: s r_t must be the projection of s r_t - u_t onto
+          // [-mu s r_n, mu s r_n]. Inside the interval this says u_t = 0
+          // (stick); at the end -mu s r_n it says u_t >= 0, i.e. the slave
+          // slips in +t and friction pulls it back (and symmetrically).
+          const double half_width = mu[k] * scale * std::max(r[k][n], 0.);
+          const double scaled_r_t = scale * r[k][t];
+          const double trial      = scaled_r_t - u[k][t];
+          const double projected =
+            std::max(-half_width, std::min(half_width, trial));
+          result.friction =
+            std::max(result.friction, std::abs(scaled_r_t - projected));
+          result.max_cone_violation =
+            std::max(result.max_cone_violation,
+                     scale * (std::abs(r[k][t]) - mu[k] * r[k][n]));
+        }
+      return result;
+    }
+
+    // Solves the dense system A x = b (A column major, m x m) in place by
+    // LAPACK's LU with partial pivoting; false if A is singular to working
+    // precision.
+    bool
+    solve_dense(std::vector<double> &A,
+                std::vector<double> &b,
+                const std::size_t    m)
+    {
+      const int        size = m, one = 1;
+      int              info = 0;
+      std::vector<int> pivots(m);
+      dgesv_(
+        &size, &one, A.data(), &size, pivots.data(), b.data(), &size, &info);
+      if (info != 0)
+        return false;
+      for (std::size_t c = 0; c < m; ++c)
+        if (!std::isfinite(b[c]))
+          return false;
+      return true;
+    }
+
+    // Active-set polish: with the statuses of the current iterate fixed
+    // (BiPotentialSolver::solve_for_statuses, the slip sign taken from the
+    // iterate's r_t), the contact law is a linear system in the closed
+    // nodes' reactions. Its solution is the exact answer if the statuses
+    // were right, which the caller checks with the residuals of the law.
+    // Returns false if nothing is closed or the system is singular.
+    bool
+    polish(const ComplianceMatrix     &W,
+           const std::vector<Vector2> &u_free,
+           const std::vector<double>  &mu,
+           const std::vector<Vector2> &r,
+           std::vector<Vector2>       &polished)
+    {
+      std::vector<NodeStatus> status(r.size());
+      std::vector<double>     slip_sign(r.size(), 0.);
+      for (std::size_t k = 0; k < r.size(); ++k)
+        {
+          status[k] = BiPotentialSolver::classify(r[k], mu[k]);
+          if (status[k] == NodeStatus::slip && mu[k] > 0.)
+            slip_sign[k] = r[k][t] >= 0. ? 1. : -1.;
+        }
+      return BiPotentialSolver::solve_for_statuses(
+        W, u_free, mu, status, slip_sign, polished);
+    }
+
+    double
+    natural_scale(const ComplianceMatrix &W)
+    {
+      double scale = 0.;
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        scale = std::max(scale, W.normal_compliance(k));
+      return scale;
+    }
+
+    // Largest eigenvalue of the symmetric part of a 2x2 block.
+    double
+    largest_eigenvalue(const ComplianceMatrix::Block &w)
+    {
+      const double mean      = 0.5 * (w[t][t] + w[n][n]);
+      const double half_diff = 0.5 * (w[t][t] - w[n][n]);
+      const double off_diag  = 0.5 * (w[t][n] + w[n][t]);
+      return mean + std::sqrt(half_diff * half_diff + off_diag * off_diag);
+    }
+
+    std::string
+    invalid_input_message(const BiPotentialSolver::Settings &settings,
+                          const ComplianceMatrix            &W,
+                          const std::vector<Vector2>        &u_free,
+                          const std::vector<double>         &mu,
+                          const std::vector<Vector2>        &r)
+    {
+      const std::size_t  n_nodes = W.n_nodes();
+      std::ostringstream problem;
+      if (!(settings.beta > 0. && settings.beta < 2.))
+        problem << "beta = " << settings.beta << " is not in (0, 2). ";
+      if (!(settings.change_tolerance >= 0.) ||
+          !(settings.residual_tolerance >= 0.) ||
+          !(settings.reaction_floor >= 0.) || !(settings.length_floor >= 0.) ||
+          !std::isfinite(settings.force_to_length_scale) ||
+          !std::isfinite(settings.reaction_floor) ||
+          !std::isfinite(settings.length_floor))
+        problem << "tolerances and floors must be finite and >= 0. ";
+      if (settings.max_sweeps == 0)
+        problem << "max_sweeps must be at least 1. ";
+      if (u_free.size() != n_nodes || mu.size() != n_nodes ||
+          (!r.empty() && r.size() != n_nodes))
+        {
+          problem << "size mismatch: W has " << n_nodes << " nodes, u_free "
+                  << u_free.size() << ", mu " << mu.size() << ", r " << r.size()
+                  << ". ";
+          return problem.str();
+        }
+      for (std::size_t k = 0; k < n_nodes; ++k)
+        {
+          if (!is_finite(u_free[k]))
+            {
+              problem << "u_free of node " << k << " is not finite. ";
+              break;
+            }
+          if (!(mu[k] >= 0.) || !std::isfinite(mu[k]))
+            {
+              problem << "mu of node " << k << " is " << mu[k]
+                      << " (must be finite and >= 0). ";
+              break;
+            }
+          if (!r.empty() && !is_finite(r[k]))
+            {
+              problem << "the starting reaction of node " << k
+                      << " is not finite. ";
+              break;
+            }
+        }
+      if (!W.all_entries_finite())
+        problem << "W has non-finite entries. ";
+      else
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          // A frictionless node never uses its tangential compliance (with
+          // the contact tangent it may be negative: a node on a locally
+          // convex master is in unstable tangential equilibrium).
+          if (mu[k] > 0. && W.diagonal_block(k)[t][t] < 0.)
+            {
+              problem << "W_kk[t][t] < 0 at node " << k
+                      << ": W is not positive semi-definite. ";
+              break;
+            }
+      return problem.str();
+    }
+  } // namespace
+
+  BiPotentialSolver::BiPotentialSolver()
+    : settings()
+  {}
+
+  BiPotentialSolver::BiPotentialSolver(const Settings &settings)
+    : settings(settings)
+  {}
+
+  const BiPotentialSolver::Settings &
+  BiPotentialSolver::get_settings() const
+  {
+    return settings;
+  }
+
+  Vector2
+  BiPotentialSolver::project_on_coulomb_cone(const Vector2 &x, const double mu)
+  {
+    const double abs_t = std::abs(x[t]);
+    // The polar cone {y : y . z <= 0 for all z in K} = {x_n <= -mu |x_t|}
+    // projects to the apex. Tested first so that mu = 0 (K is the half-line
+    // r_t = 0, r_n >= 0) sends x_n <= 0 to zero.
+    if (x[n] <= -mu * abs_t)
+      return {{0., 0.}};
+    if (abs_t <= mu * x[n])
+      return x;
+    // Orthogonal projection on the edge spanned by (sign(x_t) mu, 1):
+    // r_n = (x . e) / |e|^2 with e = (sign(x_t) mu, 1). Positive here
+    // because x is not in the polar cone.
+    const double r_n = (x[n] + mu * abs_t) / (1. + mu * mu);
+    return {{std::copysign(mu * r_n, x[t]), r_n}};
+  }
+
+  BiPotentialSolver::NodeStatus
+  BiPotentialSolver::classify(const Vector2 &r, const double mu)
+  {
+    if (!(r[n] > 0.))
+      return NodeStatus::open;
+    // The projection puts a slipping node exactly on the edge; the relative
+    // margin only absorbs the rounding of mu r_n.
+    if (mu == 0. || std::abs(r[t]) >= mu * r[n] * (1. - 1e-12))
+      return NodeStatus::slip;
+    return NodeStatus::stick;
+  }
+
+  bool
+  BiPotentialSolver::solve_for_statuses(const ComplianceMatrix        &W,
+                                        const std::vector<Vector2>    &u_free,
+                                        const std::vector<double>     &mu,
+                                        const std::vector<NodeStatus> &status,
+                                        const std::vector<double> &slip_sign,
+                                        std::vector<Vector2>      &r)
+  {
+    const unsigned int n_nodes = W.n_nodes();
+    // Unknowns: r_n of every closed node, and r_t of every stick node.
+    std::vector<int> normal_unknown(n_nodes, -1),
+      tangential_unknown(n_nodes, -1);
+    std::size_t m = 0;
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        if (status[k] == NodeStatus::open)
+          continue;
+        normal_unknown[k] = m++;
+        if (status[k] == NodeStatus::stick && mu[k] > 0.)
+          tangential_unknown[k] = m++;
+      }
+    if (m == 0)
+      return false;
+    // Row of each equation: g_k = 0 in the row of r_n(k), u_t,k = 0 in
+    // the row of r_t(k); a slipping node's r_t is slip_sign mu r_n.
+    std::vector<double> A(m * m, 0.), b(m, 0.);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      for (const unsigned int component : {n, t})
+        {
+          const int row =
+            component == n ? normal_unknown[k] : tangential_unknown[k];
+          if (row < 0)
+            continue;
+          b[row] = -u_free[k][component];
+          for (unsigned int l = 0; l < n_nodes; ++l)
+            {
+              if (normal_unknown[l] < 0 || !W.block_is_stored(k, l))
+                continue;
+              const ComplianceMatrix::Block w = W.block(k, l);
+              const double                  sliding =
+                tangential_unknown[l] >= 0 ? 0. : slip_sign[l];
+              A[normal_unknown[l] * m + row] +=
+                w[component][n] + sliding * mu[l] * w[component][t];
+              if (tangential_unknown[l] >= 0)
+                A[tangential_unknown[l] * m + row] += w[component][t];
+            }
+        }
+    if (!solve_dense(A, b, m))
+      return false;
+    r.assign(n_nodes, Vector2{{0., 0.}});
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      if (normal_unknown[k] >= 0)
+        {
+          r[k][n] = b[normal_unknown[k]];
+          r[k][t] = tangential_unknown[k] >= 0 ? b[tangential_unknown[k]] :
+                                                 slip_sign[k] * mu[k] * r[k][n];
+        }
+    return true;
+  }
+
+
+
+  BiPotentialSolver::Result
+  BiPotentialSolver::solve(const ComplianceMatrix     &W,
+                           const std::vector<Vector2> &u_free,
+                           const std::vector<double>  &mu,
+                           std::vector<Vector2>       &r) const
+  {
+    Result             result;
+    const unsigned int n_nodes = W.n_nodes();
+
+    // 1. Refuse what cannot be solved, before touching r.
+    const std::string problem =
+      invalid_input_message(settings, W, u_free, mu, r);
+    if (!problem.empty())
+      {
+        result.outcome = Outcome::invalid_input;
+        result.message = "BiPotentialSolver: invalid input: " + problem;
+        return result;
+      }
+
+    const double max_normal_compliance = natural_scale(W);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const double w_nn = W.normal_compliance(k);
+        if (!(w_nn > singular_fraction * max_normal_compliance) || w_nn <= 0.)
+          result.singular_nodes.push_back(k);
+      }
+    if (!result.singular_nodes.empty())
+      {
+        std::ostringstream message;
+        message << "BiPotentialSolver: " << result.singular_nodes.size()
+                << " node(s) with W_kk[n][n] <= 0 (or below 1e-14 of the "
+                   "largest), i.e. a gap that no reaction can change (both "
+                   "bodies rigid at the node?): ";
+        for (std::size_t i = 0; i < result.singular_nodes.size() && i < 10; ++i)
+          message << result.singular_nodes[i] << ' ';
+        if (result.singular_nodes.size() > 10)
+          message << "...";
+        result.outcome = Outcome::singular_node;
+        result.message = message.str();
+        return result;
+      }
+
+    // 2. Scales and step lengths.
+    const double scale           = settings.force_to_length_scale > 0. ?
+                                     settings.force_to_length_scale :
+                                     max_normal_compliance;
+    result.force_to_length_scale = scale;
+
+    std::vector<double> rho(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const ComplianceMatrix::Block w_kk = W.diagonal_block(k);
+        const bool                    use_largest =
+          settings.rho_choice == RhoChoice::largest_diagonal_compliance &&
+          mu[k] > 0.;
+        rho[k] =
+          settings.beta / (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
+      }
+
+    const std::vector<Vector2> initial_r =
+      r.empty() ? std::vector<Vector2>(n_nodes, Vector2{{0., 0.}}) : r;
+    r = initial_r;
+
+    const double free_length =
+      std::max(max_norm(u_free), settings.length_floor);
+    // The forces this problem can produce: those that close the free gaps,
+    // or those the caller already had. Used only to detect a blow-up.
+    const double force_reference = std::max(
+      {free_length / scale, settings.reaction_floor, max_norm(initial_r)});
+
+    std::vector<Vector2> u;
+    compute_displacement(W, u_free, r, u);
+
+    // 3. Gauss-Seidel sweeps. Gauss-Seidel finds the statuses (open,
+    // stick, slip) long before the values; once they have not changed for
+    // a few sweeps, the law is linear and is solved directly (the polish).
+    bool                    u_is_exact = true;
+    std::vector<NodeStatus> statuses(n_nodes), previous_statuses;
+    unsigned int            stable_sweeps = 0;
+    unsigned int            polish_after  = first_polish_after_stable_sweeps;
+    unsigned int            restarts      = 0;
+    result.outcome                        = Outcome::max_sweeps_reached;
+    for (unsigned int sweep = 1; sweep <= settings.max_sweeps; ++sweep)
+      {
+        result.sweeps     = sweep;
+        double max_change = 0.;
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            const Vector2 &u_k = u[k];
+            Vector2        new_r;
+            if (mu[k] == 0.)
+              // Frictionless: projected SOR on the normal LCP.
+              new_r = {{0., std::max(0., r[k][n] - rho[k] * u_k[n])}};
+            else
+              {
+                // Bi-potential step: the normal argument is the modified
+                // gap g + mu |u_t|, which couples Signorini and Coulomb so
+                // that a single projection on K_mu enforces both.
+                const Vector2 trial = {
+                  {r[k][t] - rho[k] * u_k[t],
+                   r[k][n] - rho[k] * (u_k[n] + mu[k] * std::abs(u_k[t]))}};
+                new_r = project_on_coulomb_cone(trial, mu[k]);
+              }
+
+            const Vector2 delta = {{new_r[t] - r[k][t], new_r[n] - r[k][n]}};
+            if (delta[t] != 0. || delta[n] != 0.)
+              {
+                r[k] = new_r;
+                W.add_column_product(k, delta, u);
+                u_is_exact = false;
+                max_change = std::max(max_change, norm(delta));
+              }
+          }
+
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          statuses[k] = classify(r[k], mu[k]);
+        if (statuses == previous_statuses)
+          ++stable_sweeps;
+        else
+          {
+            stable_sweeps     = 0;
+            polish_after      = first_polish_after_stable_sweeps;
+            previous_statuses = statuses;
+          }
+        const bool statuses_settled = stable_sweeps == polish_after;
+        if (statuses_settled)
+          polish_after *= 4;
+
+        const double max_reaction   = max_norm(r);
+        result.last_reaction_change = max_change;
+        if (!std::isfinite(max_change) || !std::isfinite(max_reaction) ||
+            max_reaction > divergence_factor * force_reference)
+          {
+            result.outcome = Outcome::diverged;
+            break;
+          }
+
+        result.reaction_change_bound =
+          settings.change_tolerance *
+          std::max(max_reaction, settings.reaction_floor);
+        const bool small_change = max_change <= result.reaction_change_bound;
+        if (small_change || sweep % refresh_period == 0)
+          {
+            compute_displacement(W, u_free, r, u);
+            u_is_exact = true;
+          }
+        if (small_change)
+          {
+            result.residual_bound = settings.residual_tolerance *
+                                    std::max(free_length, scale * max_reaction);
+            const Residuals residuals = residuals_of(u, r, mu, scale);
+            if (residuals.complementarity <= result.residual_bound &&
+                residuals.friction <= result.residual_bound)
+              {
+                result.outcome = Outcome::converged;
+                break;
+              }
+          }
+        else if (settings.polish_period > 0 &&
+                 (statuses_settled || sweep % settings.polish_period == 0 ||
+                  sweep == settings.max_sweeps))
+          {
+            // Gauss-Seidel finds the statuses long before the values, the
+            // more so when W is ill-conditioned (a stiff slave on a soft
+            // master: the reactions of neighbouring nodes trade off along an
+            // almost null direction of W). With the statuses fixed the law is
+            // linear: solve it, and keep the answer if it satisfies the law.
+            std::vector<Vector2> candidate, candidate_u;
+            if (polish(W, u_free, mu, r, candidate))
+              {
+                compute_displacement(W, u_free, candidate, candidate_u);
+                const double bound =
+                  settings.residual_tolerance *
+                  std::max(free_length, scale * max_norm(candidate));
+                const Residuals residuals =
+                  residuals_of(candidate_u, candidate, mu, scale);
+                if (residuals.complementarity <= bound &&
+                    residuals.friction <= bound &&
+                    residuals.max_cone_violation <= bound)
+                  {
+                    r                     = std::move(candidate);
+                    u                     = std::move(candidate_u);
+                    u_is_exact            = true;
+                    result.residual_bound = bound;
+                    result.polished       = true;
+                    result.outcome        = Outcome::converged;
+                    break;
+                  }
+                // Not the answer yet (some statuses were wrong), but the
+                // right values on the nodes whose statuses were. Projected
+                // on the admissible cones it is a new starting point for
+                // Gauss-Seidel: taken if it satisfies the law better than
+                // the iterate, a bounded number of times, so that a W that
+                // is not positive semi-definite still shows its divergence.
+                if (restarts < max_polish_restarts)
+                  {
+                    std::vector<Vector2> projected(n_nodes), projected_u;
+                    for (unsigned int k = 0; k < n_nodes; ++k)
+                      projected[k] =
+                        mu[k] == 0. ?
+                          Vector2{{0., std::max(0., candidate[k][n])}} :
+                          project_on_coulomb_cone(candidate[k], mu[k]);
+                    compute_displacement(W, u_free, projected, projected_u);
+                    if (!u_is_exact)
+                      {
+                        compute_displacement(W, u_free, r, u);
+                        u_is_exact = true;
+                      }
+                    const auto merit = [&](const std::vector<Vector2> &uu,
+                                           const std::vector<Vector2> &rr) {
+                      const Residuals e = residuals_of(uu, rr, mu, scale);
+                      return e.complementarity + e.friction;
+                    };
+                    if (merit(projected_u, projected) < merit(u, r))
+                      {
+                        r = std::move(projected);
+                        u = std::move(projected_u);
+                        ++restarts;
+                      }
+                  }
+              }
+          }
+      }
+
+    // 4. Report on exactly what is returned.
+    std::ostringstream message;
+    if (result.outcome == Outcome::diverged)
+      {
+        r          = initial_r;
+        u_is_exact = false;
+        message << "BiPotentialSolver: the iteration diverged at sweep "
+                << result.sweeps
+                << "; the starting reactions are returned. Is W positive "
+                   "semi-definite? With friction, try a smaller beta or "
+                   "RhoChoice::largest_diagonal_compliance.";
+      }
+    if (!u_is_exact)
+      compute_displacement(W, u_free, r, u);
+    result.residuals = residuals_of(u, r, mu, scale);
+    if (result.residual_bound == 0.)
+      result.residual_bound = settings.residual_tolerance *
+                              std::max(free_length, scale * max_norm(r));
+    result.converged    = result.outcome == Outcome::converged;
+    result.displacement = std::move(u);
+    result.status.resize(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      result.status[k] = classify(r[k], mu[k]);
+
+    if (result.outcome == Outcome::converged)
+      message << "BiPotentialSolver: converged in " << result.sweeps
+              << " sweeps" << (result.polished ? " (active-set polish)" : "");
+    else if (result.outcome == Outcome::max_sweeps_reached)
+      {
+        message << "BiPotentialSolver: not converged after " << result.sweeps
+                << " sweeps (last change " << result.last_reaction_change
+                << ", bound " << result.reaction_change_bound << ")";
+        // The usual culprit with friction: a tangential step that cannot
+        // contract (see RhoChoice::normal_compliance).
+        unsigned int n_overshooting = 0;
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          if (mu[k] > 0. && rho[k] * W.diagonal_block(k)[t][t] >= 2.)
+            ++n_overshooting;
+        if (n_overshooting > 0)
+          message << "; " << n_overshooting
+                  << " friction node(s) have rho W_tt >= 2, so their stick "
+                     "iteration cannot contract: use a smaller beta or "
+                     "RhoChoice::largest_diagonal_compliance";
+      }
+    if (result.outcome != Outcome::diverged)
+      message << "; complementarity " << result.residuals.complementarity
+              << ", friction " << result.residuals.friction << " (bound "
+              << result.residual_bound << ")";
+    result.message = message.str();
+    return result;
+  }
+
+  BiPotentialSolver::Residuals
+  compute_contact_residuals(const ComplianceMatrix     &W,
+                            const std::vector<Vector2> &u_free,
+                            const std::vector<double>  &mu,
+                            const std::vector<Vector2> &r,
+                            const double                force_to_length_scale,
+                            std::vector<Vector2>       *displacement)
+  {
+    std::vector<Vector2> u;
+    compute_displacement(W, u_free, r, u);
+    const double scale =
+      force_to_length_scale > 0. ? force_to_length_scale : natural_scale(W);
+    const Residuals result = residuals_of(u, r, mu, scale);
+    if (displacement != nullptr)
+      *displacement = std::move(u);
+    return result;
+  }
+} // namespace glissade

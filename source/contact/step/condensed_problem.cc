@@ -1,0 +1,491 @@
+#include <glissade/body/body.h>
+#include <glissade/contact/step/condensed_problem.h>
+
+#include <algorithm>
+#include <map>
+
+extern "C" void
+dgetrf_(const int *m,
+        const int *n,
+        double    *a,
+        const int *lda,
+        int       *ipiv,
+        int       *info);
+extern "C" void
+dgemm_(const char   *transa,
+       const char   *transb,
+       const int    *m,
+       const int    *n,
+       const int    *k,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       const double *b,
+       const int    *ldb,
+       const double *beta,
+       double       *c,
+       const int    *ldc);
+extern "C" double
+dlange_(const char   *norm,
+        const int    *m,
+        const int    *n,
+        const double *a,
+        const int    *lda,
+        double       *work);
+extern "C" void
+dgecon_(const char   *norm,
+        const int    *n,
+        const double *a,
+        const int    *lda,
+        const double *anorm,
+        double       *rcond,
+        double       *work,
+        int          *iwork,
+        int          *info);
+extern "C" void
+dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+extern "C" void
+dgetrs_(const char   *trans,
+        const int    *n,
+        const int    *nrhs,
+        const double *a,
+        const int    *lda,
+        const int    *ipiv,
+        double       *b,
+        const int    *ldb,
+        int          *info);
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /** v . u for a vector over the dofs of a pair's bodies. */
+    double
+    dot(const PairVector &v, const std::vector<Vector<double>> &u)
+    {
+      double sum = 0.;
+      for (const auto &e : *v.coefficients)
+        sum += e.value * u[v.bodies[e.body]](e.dof);
+      return sum;
+    }
+
+    /** u += factor v. */
+    void
+    add(const PairVector            &v,
+        const double                 factor,
+        std::vector<Vector<double>> &u)
+    {
+      for (const auto &e : *v.coefficients)
+        u[v.bodies[e.body]](e.dof) += factor * e.value;
+    }
+  } // namespace
+
+
+
+  CondensedProblem::CondensedProblem(
+    const ActiveNodes                        &nodes,
+    const Augmentation                       &augmentation,
+    const std::vector<std::unique_ptr<Body>> &bodies,
+    const std::vector<Vector<double>>        &predictor)
+    : nodes(nodes)
+    , bodies(bodies)
+    , n(nodes.size())
+    , n_given(nodes.terms.size())
+  {
+    // Rows: R (2n), then V (one per term); loads: F (2n), then U. An
+    // augmented direction is a term whose row is the direction's row and
+    // whose load is the same row times -E_k (scaled below, once E_k is
+    // known from the products).
+    std::vector<PairVector> all_rows(nodes.rows);
+    std::vector<PairVector> all_loads(nodes.forces);
+    for (const auto &term : nodes.terms)
+      {
+        all_rows.push_back(term.row);
+        all_loads.push_back(term.load);
+      }
+    for (unsigned int k = 0; k < augmentation.directions.size(); ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (augmentation.directions[k][c])
+          {
+            augmented_row.push_back(2 * k + c);
+            augmented_gap.push_back(nodes.initial[k][c]);
+            all_rows.push_back(nodes.rows[2 * k + c]);
+            all_loads.push_back(nodes.rows[2 * k + c]);
+          }
+    const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
+    std::vector<double> P(n_rows * n_loads, 0.);
+    add_compliance_products(all_rows, all_loads, P);
+    const auto product = [&](const std::size_t i,
+                             const std::size_t j) -> double & {
+      return P[i + j * n_rows];
+    };
+    const int size = 2 * n, t = n_given + augmented_row.size();
+
+    // E_k = factor / (node k's normal compliance through its bodies alone),
+    // a scale at which S stays well conditioned.
+    std::vector<double> stiffness(n, 0.);
+    double              largest = 0.;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double w = product(2 * k + 1, 2 * k + 1);
+        stiffness[k]   = w > 0. ? augmentation.factor / w : 0.;
+        largest        = std::max(largest, stiffness[k]);
+      }
+    std::vector<double> rows_of_a(n_rows, 0.);
+    for (unsigned int j = 0; j < augmented_row.size(); ++j)
+      {
+        const unsigned int k = augmented_row[j] / 2;
+        augmented_scale.push_back(
+          -(stiffness[k] > 0. ? stiffness[k] : largest));
+        for (std::size_t i = 0; i < n_rows; ++i)
+          {
+            double &value = product(i, size + n_given + j);
+            value *= augmented_scale[j];
+            rows_of_a[i] += value * augmented_gap[j];
+          }
+      }
+
+    // Every row applied to d = du_lib + K^-1 a.
+    std::vector<double> row_of_d(n_rows);
+    for (std::size_t i = 0; i < n_rows; ++i)
+      row_of_d[i] = dot(all_rows[i], predictor) + rows_of_a[i];
+
+    // S = I - V C U, X = S^-1 V C F, y = S^-1 V d.
+    S.assign(std::size_t(t) * t, 0.);
+    X.assign(std::size_t(t) * size, 0.);
+    y.assign(t, 0.);
+    for (int j = 0; j < t; ++j)
+      for (int i = 0; i < t; ++i)
+        S[i + std::size_t(j) * t] =
+          (i == j ? 1. : 0.) - product(size + i, size + j);
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < t; ++i)
+        X[i + std::size_t(j) * t] = product(size + i, j);
+    for (int i = 0; i < t; ++i)
+      y[i] = row_of_d[size + i];
+    if (t > 0)
+      {
+        pivots.resize(t);
+        int                 info = 0;
+        std::vector<double> work(4 * t);
+        std::vector<int>    iwork(t);
+        const double norm = dlange_("1", &t, &t, S.data(), &t, work.data());
+        dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
+        // Singular in floating point too: a body that relies on contact
+        // with its springs taken out and the contact not holding it leaves
+        // S singular up to round-off, not exactly.
+        double rcond = 0.;
+        if (info == 0)
+          dgecon_("1",
+                  &t,
+                  S.data(),
+                  &t,
+                  &norm,
+                  &rcond,
+                  work.data(),
+                  iwork.data(),
+                  &info);
+        is_regular = (info == 0 && rcond > 1e-13);
+        if (!is_regular)
+          return;
+        const int one = 1;
+        dgetrs_(
+          "N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
+        dgetrs_(
+          "N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
+      }
+
+    // W = R C F + (R C U) X (BLAS: the product is the dense part of the
+    // contact tangent's cost) and u_free = u_0 + R d + (R C U) y.
+    std::vector<double> W_dense(std::size_t(size) * size);
+    for (int j = 0; j < size; ++j)
+      std::copy(&P[std::size_t(j) * n_rows],
+                &P[std::size_t(j) * n_rows] + size,
+                &W_dense[std::size_t(j) * size]);
+    if (t > 0)
+      {
+        const double one = 1.;
+        const int    ld  = n_rows;
+        dgemm_("N",
+               "N",
+               &size,
+               &size,
+               &t,
+               &one,
+               &P[std::size_t(size) * n_rows],
+               &ld,
+               X.data(),
+               &t,
+               &one,
+               W_dense.data(),
+               &size);
+      }
+    W.reinit(n);
+    for (unsigned int l = 0; l < n; ++l)
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          ComplianceMatrix::Block block;
+          for (unsigned int a = 0; a < 2; ++a)
+            for (unsigned int c = 0; c < 2; ++c)
+              block[a][c] =
+                W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
+          W.set_block(k, l, block);
+        }
+    u_free = nodes.initial;
+    for (int i = 0; i < size; ++i)
+      {
+        double value = row_of_d[i];
+        for (int k = 0; k < t; ++k)
+          value += product(i, size + k) * y[k];
+        u_free[i / 2][i % 2] += value;
+      }
+  }
+
+
+
+  bool
+  CondensedProblem::positive_definite_on(
+    const std::vector<std::array<bool, 2>> &directions) const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> index;
+    for (unsigned int k = 0; k < directions.size(); ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (directions[k][c])
+          index.emplace_back(k, c);
+    const int m = index.size();
+    if (m == 0)
+      return true;
+    std::vector<double> A(std::size_t(m) * m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i)
+        {
+          const auto [k, a] = index[i];
+          const auto [l, c] = index[j];
+          A[i + std::size_t(j) * m] =
+            0.5 * (W.block(k, l)[a][c] + W.block(l, k)[c][a]);
+        }
+    int info = 0;
+    dpotrf_("L", &m, A.data(), &m, &info);
+    return info == 0;
+  }
+
+
+
+  void
+  CondensedProblem::add_compliance_products(
+    const std::vector<PairVector> &all_rows,
+    const std::vector<PairVector> &all_loads,
+    std::vector<double>           &products) const
+  {
+    const std::size_t n_rows = all_rows.size();
+    struct Local
+    {
+      unsigned int index;
+      double       value;
+    };
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        // The rows and loads on body b, by local index among the body's
+        // row dofs and load dofs.
+        std::map<types::global_dof_index, unsigned int> row_index, column_index;
+        for (const auto &v : all_rows)
+          for (const auto &e : *v.coefficients)
+            if (v.bodies[e.body] == b)
+              row_index.emplace(e.dof, 0);
+        for (const auto &v : all_loads)
+          for (const auto &e : *v.coefficients)
+            if (v.bodies[e.body] == b)
+              column_index.emplace(e.dof, 0);
+        if (row_index.empty() || column_index.empty())
+          continue;
+        std::vector<types::global_dof_index> row_dofs, column_dofs;
+        for (auto &[dof, i] : row_index)
+          {
+            i = row_dofs.size();
+            row_dofs.push_back(dof);
+          }
+        for (auto &[dof, i] : column_index)
+          {
+            i = column_dofs.size();
+            column_dofs.push_back(dof);
+          }
+        const auto local =
+          [&](const PairVector                                &v,
+              std::map<types::global_dof_index, unsigned int> &index) {
+            std::vector<Local> result;
+            for (const auto &e : *v.coefficients)
+              if (v.bodies[e.body] == b)
+                result.push_back({index[e.dof], e.value});
+            return result;
+          };
+        std::vector<std::pair<std::size_t, std::vector<Local>>> rows_here;
+        for (std::size_t i = 0; i < n_rows; ++i)
+          if (auto l = local(all_rows[i], row_index); !l.empty())
+            rows_here.emplace_back(i, std::move(l));
+
+        std::vector<double> C;
+        bodies[b]->compliance_block(row_dofs, column_dofs, C);
+
+        std::vector<std::pair<std::size_t, std::vector<Local>>> loads_here;
+        for (std::size_t j = 0; j < all_loads.size(); ++j)
+          if (auto l = local(all_loads[j], column_index); !l.empty())
+            loads_here.emplace_back(j, std::move(l));
+
+        // Rows C loads, one of two ways. Dense: the rows and loads as
+        // dense matrices, two BLAS products. Sparse: loops over the
+        // entries (below). On a B-spline master every row and load reaches
+        // some 50 nodes (the interpolation's band): at 160 active nodes
+        // the dense way does 3 times the flops and takes 3.5 times less
+        // time (W 0.215 s -> 0.061 s on the peers benchmark's rings at
+        // 160 x 16), at 800 nodes 16 times the flops and 1.3 times less
+        // (3.51 s against 4.44 s per run). On a faceted master a row has
+        // 4 entries and the dense way would do a thousand times the work.
+        // A BLAS flop costs about a thirtieth of one in the loops: dense
+        // when it needs fewer than 30 times the flops.
+        const std::size_t m = row_dofs.size(), m_columns = column_dofs.size();
+        const std::size_t n_here = rows_here.size(), l_here = loads_here.size();
+        double            sparse_flops = 0.;
+        for (const auto &[j, load] : loads_here)
+          sparse_flops += double(load.size()) * m;
+        for (const auto &[i, row] : rows_here)
+          sparse_flops += double(row.size()) * l_here;
+        const double dense_flops =
+          double(m) * m_columns * l_here + double(n_here) * m * l_here;
+        if (dense_flops < 30. * sparse_flops)
+          {
+            std::vector<double> L(m_columns * l_here, 0.), R(n_here * m, 0.);
+            for (std::size_t k = 0; k < l_here; ++k)
+              for (const auto &e : loads_here[k].second)
+                L[e.index + k * m_columns] += e.value;
+            for (std::size_t k = 0; k < n_here; ++k)
+              for (const auto &e : rows_here[k].second)
+                R[k + std::size_t(e.index) * n_here] += e.value;
+            std::vector<double> T(m * l_here), RT(n_here * l_here);
+            const int    im = m, ic = m_columns, il = l_here, ir = n_here;
+            const double one = 1., zero = 0.;
+            dgemm_("N",
+                   "N",
+                   &im,
+                   &il,
+                   &ic,
+                   &one,
+                   C.data(),
+                   &im,
+                   L.data(),
+                   &ic,
+                   &zero,
+                   T.data(),
+                   &im);
+            dgemm_("N",
+                   "N",
+                   &ir,
+                   &il,
+                   &im,
+                   &one,
+                   R.data(),
+                   &ir,
+                   T.data(),
+                   &im,
+                   &zero,
+                   RT.data(),
+                   &ir);
+            for (std::size_t k = 0; k < l_here; ++k)
+              for (std::size_t r = 0; r < n_here; ++r)
+                products[rows_here[r].first + loads_here[k].first * n_rows] +=
+                  RT[r + k * n_here];
+            continue;
+          }
+
+        // Sparse: T = C L column by column (each load's entries: axpys down
+        // the columns of C), turned over so that a row of T is contiguous,
+        // then each row of the products = sum_e r_e T(e, :) (axpys along
+        // the rows of T). Every inner loop runs over contiguous memory;
+        // gathering T(e) for each row and load instead took 1.6 times as
+        // long (the rings at 800 x 80, B-spline master). The loads go in
+        // blocks, so that T costs 2 m x 256 doubles, not m x loads.
+        constexpr std::size_t block = 256;
+        std::vector<double> T(m * block), T_rows(m * block), row_product(block);
+        for (std::size_t k0 = 0; k0 < l_here; k0 += block)
+          {
+            const std::size_t width = std::min(block, l_here - k0);
+            std::fill(T.begin(), T.end(), 0.);
+            for (std::size_t k = 0; k < width; ++k)
+              {
+                double *t = &T[k * m];
+                for (const auto &e : loads_here[k0 + k].second)
+                  {
+                    const double *column = &C[std::size_t(e.index) * m];
+                    for (std::size_t r = 0; r < m; ++r)
+                      t[r] += e.value * column[r];
+                  }
+              }
+            constexpr std::size_t tile = 64;
+            for (std::size_t r0 = 0; r0 < m; r0 += tile)
+              for (std::size_t k1 = 0; k1 < width; k1 += tile)
+                for (std::size_t r = r0; r < std::min(m, r0 + tile); ++r)
+                  for (std::size_t k = k1; k < std::min(width, k1 + tile); ++k)
+                    T_rows[r * width + k] = T[k * m + r];
+            for (const auto &[i, row] : rows_here)
+              {
+                std::fill(row_product.begin(), row_product.begin() + width, 0.);
+                for (const auto &e : row)
+                  {
+                    const double *t = &T_rows[std::size_t(e.index) * width];
+                    for (std::size_t k = 0; k < width; ++k)
+                      row_product[k] += e.value * t[k];
+                  }
+                for (std::size_t k = 0; k < width; ++k)
+                  products[i + loads_here[k0 + k].first * n_rows] +=
+                    row_product[k];
+              }
+          }
+      }
+  }
+
+
+
+  void
+  CondensedProblem::correct(const std::vector<Vector2>  &r,
+                            std::vector<Vector<double>> &increments,
+                            std::vector<Vector<double>> &contact_forces) const
+  {
+    // z = y + X r.
+    const int           t = n_given + augmented_row.size();
+    std::vector<double> z(y);
+    for (unsigned int l = 0; l < n; ++l)
+      for (unsigned int c = 0; c < 2; ++c)
+        if (r[l][c] != 0.)
+          for (int i = 0; i < t; ++i)
+            z[i] += X[i + std::size_t(2 * l + c) * t] * r[l][c];
+
+    // The loads F r + U z (+ the augmentation's right-hand side) on each
+    // body, and one solve per body.
+    std::vector<Vector<double>> loads(bodies.size());
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        contact_forces[b].reinit(bodies[b]->n_dofs());
+        loads[b].reinit(bodies[b]->n_dofs());
+      }
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int c = 0; c < 2; ++c)
+        add(nodes.forces[2 * k + c], r[k][c], contact_forces);
+    for (unsigned int i = 0; i < n_given; ++i)
+      add(nodes.terms[i].load, z[i], loads);
+    for (unsigned int j = 0; j < augmented_row.size(); ++j)
+      add(nodes.rows[augmented_row[j]],
+          augmented_scale[j] * (z[n_given + j] + augmented_gap[j]),
+          loads);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        loads[b] += contact_forces[b];
+        if (loads[b].linfty_norm() > 0.)
+          {
+            Vector<double> correction;
+            bodies[b]->solve_homogeneous(loads[b], correction);
+            increments[b] += correction;
+          }
+      }
+  }
+} // namespace glissade

@@ -1,0 +1,343 @@
+#include <glissade/base/user_function.h>
+#include <glissade/contact/surfaces/master_surface.h>
+#include <glissade/contact/surfaces/surface_registry.h>
+#include <glissade/description/scene_description.h>
+
+#include <cmath>
+#include <memory>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * What the rigid obstacles share: no dofs, a prescribed translation
+     * m(t) of their reference point (`Obstacle/Motion`) and a rotation
+     * alpha(t) about it (`Obstacle/Rotation`, counterclockwise). The
+     * material point of the obstacle under a contact point moved, over the
+     * increment, from p_0 + R(alpha_0 - alpha)(x_c - p) to x_c: the motion
+     * the slip is measured against (a turning drum or casing rubs a node
+     * that stands still).
+     */
+    class RigidObstacle : public MasterSurface
+    {
+    public:
+      RigidObstacle(const ContactDescription &d)
+        : reference_point(d.obstacle_point)
+        , motion(d.obstacle_motion, d.entry + "/Obstacle/Motion")
+        , rotation({d.obstacle_rotation}, d.entry + "/Obstacle/Rotation")
+      {}
+
+      void
+      update(const double step_start_time, const double time) override
+      {
+        position       = reference_point + translation(time);
+        start_position = reference_point + translation(step_start_time);
+        angle          = rotation_angle(time);
+        turn_in_step   = angle - rotation_angle(step_start_time);
+      }
+
+      std::vector<types::global_dof_index>
+      dofs() const override
+      {
+        return {};
+      }
+
+      bool
+      is_rigid() const override
+      {
+        return true;
+      }
+
+      /**
+       * m'(t) + alpha'(t) e3 x (x - p(t)), the derivatives of the user's
+       * expressions by central differences (step 1e-6 of the time scale).
+       */
+      Tensor<1, 2>
+      velocity_at(const Point<2> &x, const double t) const override
+      {
+        const double       h = 1e-6 * std::max(1., std::abs(t));
+        const Tensor<1, 2> translation_rate =
+          (translation(t + h) - translation(t - h)) / (2. * h);
+        const double turn_rate =
+          (rotation_angle(t + h) - rotation_angle(t - h)) / (2. * h);
+        const Tensor<1, 2> r = x - (reference_point + translation(t));
+        return translation_rate + turn_rate * Tensor<1, 2>({-r[1], r[0]});
+      }
+
+    protected:
+      /**
+       * The point of a curve with the given closest point, normal and
+       * derivatives: c' = `first_derivative` (along t, n = e3 x t) and
+       * c'' = `second_derivative`, what the linearisation of the slave's
+       * sliding needs.
+       */
+      SurfacePoint
+      point(const Point<2>     &x,
+            const Point<2>     &closest,
+            const Tensor<1, 2> &normal,
+            const double        speed,
+            const Tensor<1, 2> &second_derivative) const
+      {
+        SurfacePoint p;
+        p.valid  = true;
+        p.point  = closest;
+        p.normal = normal;
+        // t such that n = e3 x t, as for the master curves.
+        p.tangent                 = Tensor<1, 2>({normal[1], -normal[0]});
+        p.first_derivative        = speed * p.tangent;
+        p.second_derivative       = second_derivative;
+        p.gap                     = (x - closest) * normal;
+        p.motion_since_step_start = material_motion(closest);
+        // d/ds of c - p_0 - R(-turn) (c - p): c' - R(-turn) c'.
+        p.motion_derivative =
+          p.first_derivative - rotated(p.first_derivative, -turn_in_step);
+        return p;
+      }
+
+      /** x rotated by the angle a about the origin. */
+      static Tensor<1, 2>
+      rotated(const Tensor<1, 2> &x, const double a)
+      {
+        return Tensor<1, 2>({std::cos(a) * x[0] - std::sin(a) * x[1],
+                             std::sin(a) * x[0] + std::cos(a) * x[1]});
+      }
+
+      /** The reference point now, and the rotation angle now. */
+      Point<2> position;
+      double   angle = 0.;
+
+    private:
+      Tensor<1, 2>
+      material_motion(const Point<2> &closest) const
+      {
+        const Point<2> before =
+          start_position + rotated(closest - position, -turn_in_step);
+        return closest - before;
+      }
+
+      Tensor<1, 2>
+      translation(const double time) const
+      {
+        motion.set_time(time);
+        return Tensor<1, 2>(
+          {motion.value(Point<2>(), 0), motion.value(Point<2>(), 1)});
+      }
+
+      double
+      rotation_angle(const double time) const
+      {
+        rotation.set_time(time);
+        return rotation.value(Point<2>(), 0);
+      }
+
+      const Point<2> reference_point;
+      /** m(t) and alpha(t), their values checked finite (UserFunction). */
+      mutable UserFunction motion;
+      mutable UserFunction rotation;
+      Point<2>             start_position;
+      double               turn_in_step = 0.;
+    };
+
+
+
+    /** The half-plane behind a line (`Obstacle/Point`, `Obstacle/Normal`). */
+    class LineObstacle : public RigidObstacle
+    {
+    public:
+      LineObstacle(const SurfaceContext &context)
+        : RigidObstacle(context.description)
+        , normal(context.description.obstacle_normal /
+                 std::max(context.description.obstacle_normal.norm(), 1e-300))
+      {}
+
+      SurfacePoint
+      project(const Point<2> &x, const SegmentHint &) const override
+      {
+        const Tensor<1, 2> n   = rotated(normal, angle);
+        const double       gap = (x - position) * n;
+        return point(x, x - gap * n, n, 1., Tensor<1, 2>());
+      }
+
+      std::vector<Point<2>>
+      outline(const Point<2> &centre, const double reach) const override
+      {
+        const Tensor<1, 2> n    = rotated(normal, angle);
+        const Point<2>     foot = centre - ((centre - position) * n) * n;
+        const Tensor<1, 2> t({n[1], -n[0]});
+        return {foot - reach * t, foot + reach * t};
+      }
+
+    private:
+      const Tensor<1, 2> normal;
+    };
+
+
+
+    /**
+     * A solid disk (n away from the centre) or the outside of a circular
+     * hole (n towards it), of `Obstacle/Radius` R about `Obstacle/Point`.
+     * Parametrised with speed R, c'' = -R n for the disk and R n for the
+     * hole: the curvature that turns the normal as a node slides.
+     */
+    class CircleObstacle : public RigidObstacle
+    {
+    public:
+      CircleObstacle(const SurfaceContext &context, const bool hole)
+        : RigidObstacle(context.description)
+        , radius(context.description.obstacle_radius)
+        , hole(hole)
+      {}
+
+      SurfacePoint
+      project(const Point<2> &x, const SegmentHint &) const override
+      {
+        // At the centre itself any direction is as good: take +y, never NaN.
+        Tensor<1, 2> d      = x - position;
+        const double length = d.norm();
+        d                   = length > 0. ? d / length : Tensor<1, 2>({0., 1.});
+        const Tensor<1, 2> normal = hole ? -d : d;
+        return point(x,
+                     position + radius * d,
+                     normal,
+                     radius,
+                     (hole ? radius : -radius) * normal);
+      }
+
+      std::vector<Point<2>>
+      outline(const Point<2> &, const double) const override
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int k = 0; k <= 360; ++k)
+          {
+            const double phi = 2. * M_PI * k / 360.;
+            points.push_back(
+              position + radius * Tensor<1, 2>({std::cos(phi), std::sin(phi)}));
+          }
+        return points;
+      }
+
+    private:
+      const double radius;
+      const bool   hole;
+    };
+
+
+    /**
+     * The inside of a casing ovalised into n lobes (`Obstacle/Lobes`) of
+     * depth delta (`Obstacle/Lobe depth`) about a circle of radius R:
+     *   r(phi) = R - delta cos(n (phi - alpha)),
+     * in polar coordinates about `Obstacle/Point`, the lobes (where the
+     * casing comes in furthest) at phi = alpha + 2 pi k / n, alpha the
+     * obstacle's rotation. A blade seen from its own turning frame sees
+     * the casing turn backwards: Rotation = -Omega t. The curve stays
+     * convex (delta < R / (1 + n^2), checked on reading), so that the
+     * closest point is the one Newton's method finds from the node's polar
+     * angle. Parametrised by phi:
+     *   c' = r' e_r + r e_phi,  c'' = (r'' - r) e_r + 2 r' e_phi.
+     */
+    class CasingObstacle : public RigidObstacle
+    {
+    public:
+      CasingObstacle(const SurfaceContext &context)
+        : RigidObstacle(context.description)
+        , radius(context.description.obstacle_radius)
+        , depth(context.description.obstacle_lobe_depth)
+        , lobes(context.description.obstacle_lobes)
+      {}
+
+      SurfacePoint
+      project(const Point<2> &x, const SegmentHint &) const override
+      {
+        const Tensor<1, 2> d   = x - position;
+        double             phi = d.norm() > 0. ? std::atan2(d[1], d[0]) : 0.;
+        // (c - x) . c' = 0 by Newton's method: from the node's own angle
+        // it converges in a few steps, the curve being nearly a circle.
+        for (unsigned int k = 0; k < 50; ++k)
+          {
+            const Curve        c  = at(phi);
+            const Tensor<1, 2> r  = c.point - x;
+            const double       f  = r * c.first;
+            const double       df = c.first * c.first + r * c.second;
+            const double step = df > 0. ? -f / df : -f / (c.first * c.first);
+            phi += std::max(-0.1, std::min(0.1, step));
+            if (std::abs(step) < 1e-15)
+              break;
+          }
+        const Curve        c     = at(phi);
+        const double       speed = c.first.norm();
+        const Tensor<1, 2> normal({-c.first[1] / speed, c.first[0] / speed});
+        return point(x, c.point, normal, speed, c.second);
+      }
+
+      std::vector<Point<2>>
+      outline(const Point<2> &, const double) const override
+      {
+        std::vector<Point<2>> points;
+        for (unsigned int k = 0; k <= 720; ++k)
+          points.push_back(at(2. * M_PI * k / 720.).point);
+        return points;
+      }
+
+    private:
+      struct Curve
+      {
+        Point<2>     point;
+        Tensor<1, 2> first, second;
+      };
+
+      Curve
+      at(const double phi) const
+      {
+        const double       n   = lobes;
+        const double       s   = n * (phi - angle);
+        const double       r   = radius - depth * std::cos(s);
+        const double       dr  = depth * n * std::sin(s);
+        const double       ddr = depth * n * n * std::cos(s);
+        const Tensor<1, 2> e_r({std::cos(phi), std::sin(phi)});
+        const Tensor<1, 2> e_phi({-std::sin(phi), std::cos(phi)});
+        return {position + r * e_r,
+                dr * e_r + r * e_phi,
+                (ddr - r) * e_r + 2. * dr * e_phi};
+      }
+
+      const double       radius;
+      const double       depth;
+      const unsigned int lobes;
+    };
+  } // namespace
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_line_obstacle(const SurfaceContext &context)
+  {
+    return std::make_unique<LineObstacle>(context);
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_disk_obstacle(const SurfaceContext &context)
+  {
+    return std::make_unique<CircleObstacle>(context, false);
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_hole_obstacle(const SurfaceContext &context)
+  {
+    return std::make_unique<CircleObstacle>(context, true);
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_casing_obstacle(const SurfaceContext &context)
+  {
+    return std::make_unique<CasingObstacle>(context);
+  }
+} // namespace glissade

@@ -1,0 +1,133 @@
+#include <glissade/base/input_error.h>
+#include <glissade/contact/surfaces/surface_registry.h>
+#include <glissade/description/scene_description.h>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  // Each surface's factory, defined in the surface's own file.
+  std::unique_ptr<MasterSurface>
+  make_faceted_surface(const SurfaceContext &);
+  void
+  declare_faceted_parameters(ParameterHandler &);
+  std::any
+  parse_faceted_parameters(const ParameterHandler &, const std::string &);
+  std::unique_ptr<MasterSurface>
+  make_bspline_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_hermite_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_line_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_disk_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_hole_obstacle(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
+  make_casing_obstacle(const SurfaceContext &);
+
+
+
+  const std::vector<SurfaceRegistry::Entry> &
+  SurfaceRegistry::entries()
+  {
+    // One line per surface.
+    static const std::vector<Entry> list = {
+      {"faceted",
+       Kind::deformable,
+       "the element edges (the paper's Q4)",
+       make_faceted_surface,
+       declare_faceted_parameters,
+       parse_faceted_parameters},
+      {"bspline",
+       Kind::deformable,
+       "cubic uniform interpolating B-spline through the master nodes, "
+       "closed if the boundary is",
+       make_bspline_surface},
+      {"hermite",
+       Kind::deformable,
+       "the C1 edges of a master body of Hermite elements",
+       make_hermite_surface},
+      {"line", Kind::rigid, "the half-plane behind a line", make_line_obstacle},
+      {"disk", Kind::rigid, "a solid disk", make_disk_obstacle},
+      {"hole",
+       Kind::rigid,
+       "the outside of a circular hole",
+       make_hole_obstacle},
+      {"casing",
+       Kind::rigid,
+       "the inside of a casing ovalised into lobes (Lobes, Lobe depth), "
+       "e.g. about a turning blade",
+       make_casing_obstacle},
+    };
+    return list;
+  }
+
+
+
+  std::unique_ptr<MasterSurface>
+  SurfaceRegistry::create(const SurfaceContext &context)
+  {
+    const Kind         kind = context.master ? Kind::deformable : Kind::rigid;
+    const std::string &name = kind == Kind::deformable ?
+                                context.description.surface :
+                                context.description.obstacle;
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.name == name)
+        return entry.create(context);
+    throw InputError(context.description.entry + (kind == Kind::deformable ?
+                                                    "/Surface" :
+                                                    "/Obstacle/Type"),
+                     "unknown surface '" + name +
+                       "' (known: " + names_as_pattern(kind) + ")");
+  }
+
+
+
+  void
+  SurfaceRegistry::declare_parameters(ParameterHandler &prm, const Kind kind)
+  {
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.declare_parameters)
+        entry.declare_parameters(prm);
+  }
+
+
+
+  std::any
+  SurfaceRegistry::parse_parameters(const ParameterHandler &prm,
+                                    const Kind              kind,
+                                    const std::string      &name,
+                                    const std::string      &where)
+  {
+    for (const auto &entry : entries())
+      if (entry.kind == kind && entry.name == name && entry.parse_parameters)
+        return entry.parse_parameters(prm, where);
+    return {};
+  }
+
+
+
+  std::string
+  SurfaceRegistry::names_as_pattern(const Kind kind)
+  {
+    std::string names;
+    for (const auto &entry : entries())
+      if (entry.kind == kind)
+        names += (names.empty() ? "" : "|") + entry.name;
+    return names;
+  }
+
+
+
+  std::string
+  SurfaceRegistry::documentation(const Kind kind)
+  {
+    std::string text;
+    for (const auto &entry : entries())
+      if (entry.kind == kind)
+        text +=
+          (text.empty() ? "" : "; ") + entry.name + ": " + entry.description;
+    return text + ".";
+  }
+} // namespace glissade
