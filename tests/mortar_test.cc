@@ -371,3 +371,77 @@ GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
         }
     }
 }
+
+
+
+// Ironing (prm/ironing.prm: MOOSE's ironing test, after Yang, Laursen and
+// Meng 2005): a stiff die pressed 1 deep into a soft slab and slid along
+// it with mu = 0.5. With mortar, the normal force on the die over the
+// steady slide (t in [2.5, 6.5]) oscillates by less than 1 % of its mean
+// about its slow trend (a quadratic in t, fitted by least squares): the
+// die's nodes pass the slab's element edges without the force jumping.
+// The contact force balances the support's reaction at every increment.
+GLISSADE_TEST(mortar_ironing_steady_force)
+{
+  Simulation simulation(
+    SceneReader::read_file(source_path("prm/ironing.prm"),
+                           {"Output/Directory=mortar_ironing",
+                            "Output/VTU interval=0",
+                            "Output/Contact table interval=0",
+                            "Output/Progress=false"}));
+  std::vector<double> time, normal, tangential;
+  double              worst_balance = 0., largest_support = 0.;
+  simulation.on_increment           = [&](unsigned int, const double t) {
+    const Tensor<1, 2> support = simulation.body("die").reaction("top");
+    const Tensor<1, 2> contact =
+      simulation.contact().contact_pairs()[0]->total_force();
+    worst_balance   = std::max(worst_balance, (support + contact).norm());
+    largest_support = std::max(largest_support, support.norm());
+    if (t >= 2.5 - 1e-9)
+      {
+        time.push_back(t);
+        normal.push_back(-support[1]);
+        tangential.push_back(support[0]);
+      }
+  };
+  simulation.run();
+  worst_balance /= largest_support;
+
+  // Least squares on 1, t, t^2 (normal equations, 3 x 3).
+  const auto oscillation = [&](const std::vector<double> &f) {
+    FullMatrix<double> A(3, 3);
+    Vector<double>     b(3), c(3);
+    for (unsigned int k = 0; k < time.size(); ++k)
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          b(i) += std::pow(time[k], i) * f[k];
+          for (unsigned int j = 0; j < 3; ++j)
+            A(i, j) += std::pow(time[k], i + j);
+        }
+    A.gauss_jordan();
+    A.vmult(c, b);
+    double mean = 0., largest = 0.;
+    for (unsigned int k = 0; k < time.size(); ++k)
+      {
+        mean += f[k] / time.size();
+        largest = std::max(largest,
+                           std::abs(f[k] - c(0) - c(1) * time[k] -
+                                    c(2) * time[k] * time[k]));
+      }
+    return std::make_pair(mean, largest / mean);
+  };
+  const auto [normal_mean, normal_oscillation] = oscillation(normal);
+  const auto [tangential_mean, tangential_oscillation] =
+    oscillation(tangential);
+  std::cout << "  steady slide, " << time.size() << " increments: normal force "
+            << normal_mean << ", oscillation about its trend "
+            << 100. * normal_oscillation << " %; tangential force "
+            << tangential_mean << " (" << tangential_mean / normal_mean
+            << " of the normal), oscillation " << 100. * tangential_oscillation
+            << " %; contact force against the support's reaction: "
+            << worst_balance << std::endl;
+  check(time.size() >= 100, "the slide was not computed");
+  check(worst_balance <= 1e-8, "the contact force does not balance the die");
+  check(normal_oscillation <= 0.01,
+        "the normal force oscillates by more than 1 % of its mean");
+}

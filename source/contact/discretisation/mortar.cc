@@ -202,6 +202,8 @@ namespace glissade
         std::map<unsigned int, Accumulated> M; // by master point
       };
       std::vector<NodeState> state;
+      /** The current positions of the slave and master points. */
+      std::vector<Point<2>> slave_positions, master_positions;
     };
 
 
@@ -319,12 +321,10 @@ namespace glissade
       const unsigned int a = faces[f][0], b = faces[f][1];
       const unsigned int c = i, d = (i + 1) % master_points.size();
 
-      // A cheap test first: the segment faces the slave face, and lies
-      // within reach of it.
-      const Point<2>     xa = position(slave_points[a]);
-      const Point<2>     xb = position(slave_points[b]);
-      const Point<2>     yc = position(master_points[c]);
-      const Point<2>     yd = position(master_points[d]);
+      // Cheap tests first, in plain numbers: the segment faces the slave
+      // face, lies within reach of it, and its nodes' images overlap it.
+      const Point<2>    &xa = slave_positions[a], &xb = slave_positions[b];
+      const Point<2>    &yc = master_positions[c], &yd = master_positions[d];
       const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
       const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
       if (slave_out * master_out >= 0.)
@@ -334,6 +334,32 @@ namespace glissade
       const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
       if (slave_mid.distance(master_mid) > reach)
         return;
+      {
+        const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
+        const auto          image = [&](const Point<2> &y) {
+          const auto cross2 = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
+            return u[0] * v[1] - u[1] * v[0];
+          };
+          const Tensor<1, 2> r = xa - y, dx = xb - xa, dn = nb - na;
+          const double       A = cross2(dx, dn);
+          const double       B = cross2(r, dn) + cross2(dx, na);
+          const double       C = cross2(r, na);
+          double             t = -C / B;
+          for (unsigned int it = 0; it < 20 && std::isfinite(t); ++it)
+            {
+              const double step = (A * t * t + B * t + C) / (2. * A * t + B);
+              t -= step;
+              if (std::abs(step) < 1e-15)
+                break;
+            }
+          return t;
+        };
+        const double sc = image(yc), sd = image(yd);
+        if (!std::isfinite(sc) || !std::isfinite(sd) ||
+            std::min(1., std::max(sc, sd)) - std::max(0., std::min(sc, sd)) <=
+              1e-12)
+          return;
+      }
 
       // The local variables: the slave points of both nodal normals, then
       // the master segment's nodes.
@@ -444,6 +470,12 @@ namespace glissade
     void
     Mortar::update()
     {
+      slave_positions.resize(slave_points.size());
+      for (unsigned int j = 0; j < slave_points.size(); ++j)
+        slave_positions[j] = position(slave_points[j]);
+      master_positions.resize(master_points.size());
+      for (unsigned int k = 0; k < master_points.size(); ++k)
+        master_positions[k] = position(master_points[k]);
       for (unsigned int j = 0; j < slave_points.size(); ++j)
         {
           NodeState &s = state[j];

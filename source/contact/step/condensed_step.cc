@@ -87,7 +87,7 @@ namespace glissade
 
 
   bool
-  CondensedStep::correct(ContactProblem &problem,
+  CondensedStep::correct(ContactProblem              &problem,
                          std::vector<Vector<double>> &increments)
   {
     // Nodes that the free step would take behind the master join now,
@@ -289,13 +289,15 @@ namespace glissade
           augmentation.factor *= 10.;
         else
           {
-            if (!problem.held_by_contact_message().empty() && !condensed->regular())
+            if (!problem.held_by_contact_message().empty() &&
+                !condensed->regular())
               result.message = problem.held_by_contact_message() +
                                ": its contact nodes are open or slipping "
                                "where they would have to hold it";
             else if (condensed->regular())
               {
-                const std::string where = not_positive_at(problem, active, *condensed);
+                const std::string where =
+                  not_positive_at(problem, active, *condensed);
                 if (!where.empty())
                   result.message = where;
               }
@@ -311,8 +313,9 @@ namespace glissade
 
 
   std::string
-  CondensedStep::not_positive_at(ContactProblem &problem, const std::vector<ContactNode *> &active,
-                                  const CondensedProblem &condensed) const
+  CondensedStep::not_positive_at(ContactProblem                   &problem,
+                                 const std::vector<ContactNode *> &active,
+                                 const CondensedProblem &condensed) const
   {
     // The first node whose own compliance is negative: pushing it gives
     // way, so the bodies are unstable there with the rest held.

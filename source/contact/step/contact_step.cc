@@ -12,10 +12,9 @@ namespace glissade
   {
     // One line per method.
     using Method = ContactSolverSettings::Method;
-    static const std::vector<
-      std::pair<Method,
-                std::function<std::unique_ptr<ContactStep>(
-                  const ContactStepContext &)>>>
+    static const std::vector<std::pair<
+      Method,
+      std::function<std::unique_ptr<ContactStep>(const ContactStepContext &)>>>
       steps = {{Method::condensed,
                 [](const ContactStepContext &c) {
                   return std::make_unique<CondensedStep>(c);

@@ -64,10 +64,10 @@ namespace glissade
     void
     eliminate_touching_dofs_last(ContactProblem &problem);
 
-    const std::vector<std::unique_ptr<Body>> &bodies;
-    const std::vector<unsigned int>           bodies_in_contact;
-    const BiPotentialSolver::Settings         settings;
-    dealii::TimerOutput                      &timer;
+    const std::vector<std::unique_ptr<Body>>                 &bodies;
+    const std::vector<unsigned int>                           bodies_in_contact;
+    const BiPotentialSolver::Settings                         settings;
+    dealii::TimerOutput                                      &timer;
     std::vector<std::vector<dealii::types::global_dof_index>> eliminated_last;
   };
 } // namespace glissade
