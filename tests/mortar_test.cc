@@ -391,7 +391,7 @@ GLISSADE_TEST(mortar_ironing_steady_force)
                             "Output/Progress=false"}));
   std::vector<double> time, normal, tangential;
   double              worst_balance = 0., largest_support = 0.;
-  simulation.on_increment           = [&](unsigned int, const double t) {
+  simulation.on_increment = [&](unsigned int, const double t) {
     const Tensor<1, 2> support = simulation.body("die").reaction("top");
     const Tensor<1, 2> contact =
       simulation.contact().contact_pairs()[0]->total_force();
