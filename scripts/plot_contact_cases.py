@@ -15,8 +15,10 @@ from atomic_png import save_atomically  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 directory = sys.argv[1]
-names = {"q4": "Q4", "bspline": "Q4 + B-spline", "hermite": "Hermite"}
-colours = {"q4": "tab:blue", "bspline": "tab:orange", "hermite": "tab:green"}
+names = {"q4": "Q4", "bspline": "Q4 + B-spline", "hermite": "Hermite",
+         "mortar": "Q4, mortar"}
+colours = {"q4": "tab:blue", "bspline": "tab:orange", "hermite": "tab:green",
+           "mortar": "tab:red"}
 
 
 def deformed_meshes(scene):

@@ -17,11 +17,13 @@ history = list(csv.DictReader(open(f"{directory}/friction_history.csv")))
 statuses = list(csv.DictReader(open(f"{directory}/friction_status.csv")))
 nodes = list(csv.DictReader(open(f"{directory}/friction_nodes.csv")))
 runs = list(dict.fromkeys((r["variant"], r["friction"]) for r in history))
-names = {"q4": "Q4", "bspline": "B-spline", "hermite": "Hermite"}
+names = {"q4": "Q4", "bspline": "B-spline", "hermite": "Hermite",
+         "mortar": "mortar"}
 
 # Forces: sum r_n and sum r_t against time, one colour per master, one
 # line style per friction coefficient.
-colours = {"q4": "tab:blue", "bspline": "tab:orange", "hermite": "tab:green"}
+colours = {"q4": "tab:blue", "bspline": "tab:orange", "hermite": "tab:green",
+           "mortar": "tab:red"}
 styles = ["-", "--", ":", "-."]
 coefficients = list(dict.fromkeys(mu for _, mu in runs))
 fig, axes = plt.subplots(1, 3, figsize=(15, 4))

@@ -194,7 +194,8 @@ namespace glissade
       /** What update() finds for each slave point. */
       struct NodeState
       {
-        bool                                valid = false;
+        /** D_j over the node's tributary length (1: fully covered). */
+        double                              coverage = 0.;
         Point<2>                            x;
         Tensor<1, 2>                        normal, tangent, motion;
         DofVector                           rotation_row; // d theta / dU
@@ -334,6 +335,15 @@ namespace glissade
       const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
       if (slave_mid.distance(master_mid) > reach)
         return;
+      // An open master's end segments continue past its ends by half
+      // their length (linear shape functions extrapolated), as a
+      // node-to-segment node may keep its end segment: a slave node that
+      // slides off the end loses its counterpart over half a segment, not
+      // at once.
+      const bool   open_start = !chain.closed && i == 0;
+      const bool   open_end   = !chain.closed && i + 2 == master_points.size();
+      const double eta_low    = open_start ? -0.5 : 0.,
+                   eta_high   = open_end ? 1.5 : 1.;
       {
         const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
         const auto          image = [&](const Point<2> &y) {
@@ -354,7 +364,8 @@ namespace glissade
             }
           return t;
         };
-        const double sc = image(yc), sd = image(yd);
+        const double sc = image(yc + eta_low * (yd - yc)),
+                     sd = image(yc + eta_high * (yd - yc));
         if (!std::isfinite(sc) || !std::isfinite(sd) ||
             std::min(1., std::max(sc, sd)) - std::max(0., std::min(sc, sd)) <=
               1e-12)
@@ -416,8 +427,10 @@ namespace glissade
         return s - (A * s * s + B * s + C) / (2. * s * A + B);
       };
       bool             found_c = false, found_d = false;
-      const MortarDual sc = slave_coordinate(Yc, found_c);
-      const MortarDual sd = slave_coordinate(Yd, found_d);
+      const MortarDual sc =
+        slave_coordinate(Yc + MortarDual(eta_low) * (Yd - Yc), found_c);
+      const MortarDual sd =
+        slave_coordinate(Yc + MortarDual(eta_high) * (Yd - Yc), found_d);
       if (!found_c || !found_d)
         return;
       // The overlap in s: between the two master nodes' images (the
@@ -523,7 +536,7 @@ namespace glissade
       // A node counts when the master covers enough of its support that
       // its weights m_jk = M_jk / D_j stay bounded: at the master's ends,
       // a partly covered node has no counterpart (as a node-to-segment
-      // node beyond an open end).
+      // node beyond an open end). See project() for the two thresholds.
       for (unsigned int j = 0; j < slave_points.size(); ++j)
         {
           NodeState &s         = state[j];
@@ -531,7 +544,7 @@ namespace glissade
           for (const unsigned int g : faces_of_point[j])
             tributary += 0.5 * position(slave_points[faces[g][0]])
                                  .distance(position(slave_points[faces[g][1]]));
-          s.valid = !s.M.empty() && s.D.value > 0.5 * tributary;
+          s.coverage = s.M.empty() ? 0. : s.D.value / tributary;
           merge_entries(s.D.gradient);
           for (auto &[k, M] : s.M)
             merge_entries(M.gradient);
@@ -541,10 +554,16 @@ namespace glissade
 
 
     bool
-    Mortar::project(ContactNode &node, const bool /*keep_segment*/) const
+    Mortar::project(ContactNode &node, const bool keep_segment) const
     {
+      // A node needs half its support covered to come into contact, and
+      // keeps its counterpart within the increment down to a twentieth: a node
+      // at the master's end whose coverage crosses one threshold from one
+      // Newton iteration to the next would otherwise come and go, and
+      // Newton cycle (case 2's square sliding past the rings' ends). The
+      // next increment's detection drops it below half.
       const NodeState &s = state[point_of_vertex.at(node.vertex)];
-      if (!s.valid)
+      if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
         return false;
       const Tensor<1, 2> &n = s.normal, &t = s.tangent;
       const double        D = s.D.value;
