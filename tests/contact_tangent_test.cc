@@ -52,18 +52,22 @@ namespace
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
       " set Alert distance = 10\n";
-    if (master == "line" || master == "disk" || master == "hole" ||
-        master == "casing")
+    // mortar_line, mortar_disk: mortar against those obstacles.
+    const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
+    const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
+    if (on_obstacle_mortar)
+      contact += " set Discretisation = mortar\n";
+    if (kind == "line" || kind == "disk" || kind == "hole" || kind == "casing")
       {
         text += "subsection Scene\n set Bodies = upper\n"
                 " set Contact pairs = interface\nend\n";
-        contact += " subsection Obstacle\n  set Type = " + master +
+        contact += " subsection Obstacle\n  set Type = " + kind +
                    "\n  set Motion = 0.013*t, -0.004*t\n";
-        if (master == "line")
+        if (kind == "line")
           contact += "  set Point = 0, 0.49\n  set Normal = 0.1, 1\n";
-        else if (master == "disk")
+        else if (kind == "disk")
           contact += "  set Point = 0.5, -1.51\n  set Radius = 2\n";
-        else if (master == "casing")
+        else if (kind == "casing")
           // Two lobes 0.3 deep, turning: below the block the casing is
           // between lobes, sloped and of changing curvature, its lowest
           // point r(-pi/2) = 5 + 0.3 cos(0.4) under the centre at 0.49.
@@ -332,6 +336,9 @@ CONTACT_TANGENT_TEST(hermite, slip)
 CONTACT_TANGENT_TEST(mortar, frictionless)
 CONTACT_TANGENT_TEST(mortar, stick)
 CONTACT_TANGENT_TEST(mortar, slip)
+CONTACT_TANGENT_TEST(mortar_line, slip)
+CONTACT_TANGENT_TEST(mortar_disk, frictionless)
+CONTACT_TANGENT_TEST(mortar_disk, stick)
 CONTACT_TANGENT_TEST(line, frictionless)
 CONTACT_TANGENT_TEST(line, stick)
 CONTACT_TANGENT_TEST(line, slip)

@@ -50,24 +50,25 @@ namespace glissade
           overrides.push_back("Body " + body.name + "/Element/Space=hermite");
       // bspline-spline: the B-spline master with the spline's own force
       // transfer weights instead of the paper's segment hand-over.
-      // mortar: the mortar discretisation over the faceted master where
-      // the master is a body (a rigid obstacle stays node-to-segment).
+      // mortar: the mortar discretisation, over the faceted master where
+      // the master is a body.
       const std::string surface = variant == "q4" || variant == "mortar" ?
                                     "faceted" :
                                   variant == "hermite" ? "hermite" :
                                                          "bspline";
       for (const auto &contact : scene.contacts)
-        if (contact.master_body != "rigid")
-          {
+        {
+          if (variant == "mortar")
             overrides.push_back("Contact " + contact.name +
-                                "/Surface=" + surface);
-            if (variant == "bspline-spline")
-              overrides.push_back("Contact " + contact.name +
-                                  "/Force transfer=spline");
-            if (variant == "mortar")
-              overrides.push_back("Contact " + contact.name +
-                                  "/Discretisation=mortar");
-          }
+                                "/Discretisation=mortar");
+          if (contact.master_body == "rigid")
+            continue;
+          overrides.push_back("Contact " + contact.name +
+                              "/Surface=" + surface);
+          if (variant == "bspline-spline")
+            overrides.push_back("Contact " + contact.name +
+                                "/Force transfer=spline");
+        }
       return overrides;
     }
 
@@ -508,8 +509,8 @@ namespace glissade
                         Patterns::Selection("q4|bspline|hermite|mortar")),
                       "Discretisations: q4 (faceted masters), bspline (Q4 "
                       "bodies, B-spline masters), hermite (Hermite bodies and "
-                      "masters), mortar (mortar over the faceted masters of "
-                      "bodies; rigid obstacles node-to-segment).");
+                      "masters), mortar (mortar, over the faceted masters of "
+                      "bodies).");
     prm.declare_entry("Increments",
                       "0",
                       Patterns::Integer(0),

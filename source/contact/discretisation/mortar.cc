@@ -174,16 +174,26 @@ namespace glissade
       void
       integrate(unsigned int f, unsigned int i);
 
+      /**
+       * Adds the integrals of slave face f against a rigid obstacle: the
+       * obstacle's points y(x) closest to the face's points, and the
+       * motion of its material there since the increment began.
+       */
+      void
+      integrate_on_obstacle(unsigned int f);
+
       /** The unit normal at slave node j as Duals over `local`'s points. */
       DualPoint
       nodal_normal(unsigned int                                j,
                    const std::vector<DualPoint>               &coordinates,
                    const std::map<unsigned int, unsigned int> &local) const;
 
-      const Body        &slave;
-      const Body        &master;
-      const MasterChain &chain;
-      const double       search_distance;
+      const Body &slave;
+      /** nullptr for a rigid obstacle (no master body, no chain). */
+      const Body          *master;
+      const MasterChain   *chain;
+      const MasterSurface &surface;
+      const double         search_distance;
 
       std::vector<SidePoint>               slave_points, master_points;
       std::map<unsigned int, unsigned int> point_of_vertex;
@@ -201,6 +211,13 @@ namespace glissade
         DofVector                           rotation_row; // d theta / dU
         Accumulated                         D;
         std::map<unsigned int, Accumulated> M; // by master point
+        /**
+         * Against a rigid obstacle: int Phi_j y and int Phi_j m (the
+         * closest points and their material's motion), per component.
+         */
+        std::array<Accumulated, 2> Y, moved;
+        /** A face point had no counterpart on the obstacle. */
+        bool uncovered = false;
       };
       std::vector<NodeState> state;
       /** The current positions of the slave and master points. */
@@ -211,9 +228,12 @@ namespace glissade
 
     Mortar::Mortar(const Context &context)
       : slave(context.slave)
-      , master(*context.master)
-      , chain(
-          dynamic_cast<const CurveSurface &>(context.surface).master_chain())
+      , master(context.master)
+      , chain(context.master ?
+                &dynamic_cast<const CurveSurface &>(context.surface)
+                   .master_chain() :
+                nullptr)
+      , surface(context.surface)
       , search_distance(context.description.alert_distance)
     {
       for (const ContactNode &node : context.nodes)
@@ -225,9 +245,9 @@ namespace glissade
              node.dofs,
              node.reference_position});
         }
-      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
+      for (unsigned int k = 0; chain && k < chain->vertices.size(); ++k)
         master_points.push_back(
-          {1, k, chain.value_dofs[k], chain.reference_points[k]});
+          {1, k, chain->value_dofs[k], chain->reference_points[k]});
 
       // The slave faces, each oriented so that its left normal points out
       // of its cell (the master chain's convention, MasterChain).
@@ -278,7 +298,7 @@ namespace glissade
     Point<2>
     Mortar::position(const SidePoint &p) const
     {
-      const Vector<double> &u = (p.body == 0 ? slave : master).displacement();
+      const Vector<double> &u = (p.body == 0 ? slave : *master).displacement();
       return Point<2>(p.reference[0] + u(p.dofs[0]),
                       p.reference[1] + u(p.dofs[1]));
     }
@@ -288,7 +308,7 @@ namespace glissade
     Tensor<1, 2>
     Mortar::motion(const SidePoint &p) const
     {
-      const Body           &body = p.body == 0 ? slave : master;
+      const Body           &body = p.body == 0 ? slave : *master;
       const Vector<double> &u    = body.displacement();
       const Vector<double> &u0   = body.stored_displacement();
       return Tensor<1, 2>(
@@ -340,8 +360,8 @@ namespace glissade
       // node-to-segment node may keep its end segment: a slave node that
       // slides off the end loses its counterpart over half a segment, not
       // at once.
-      const bool   open_start = !chain.closed && i == 0;
-      const bool   open_end   = !chain.closed && i + 2 == master_points.size();
+      const bool   open_start = !chain->closed && i == 0;
+      const bool   open_end   = !chain->closed && i + 2 == master_points.size();
       const double eta_low    = open_start ? -0.5 : 0.,
                    eta_high   = open_end ? 1.5 : 1.;
       {
@@ -481,6 +501,92 @@ namespace glissade
 
 
     void
+    Mortar::integrate_on_obstacle(const unsigned int f)
+    {
+      const unsigned int a = faces[f][0], b = faces[f][1];
+      std::array<std::pair<unsigned int, types::global_dof_index>,
+                 n_mortar_variables>
+                dofs{};
+      DualPoint X[2];
+      for (unsigned int l = 0; l < 2; ++l)
+        {
+          const SidePoint &p = slave_points[faces[f][l]];
+          const Point<2>  &x = slave_positions[faces[f][l]];
+          X[l]               = {MortarDual::variable(x[0], 2 * l),
+                                MortarDual::variable(x[1], 2 * l + 1)};
+          dofs[2 * l]        = {0, p.dofs[0]};
+          dofs[2 * l + 1]    = {0, p.dofs[1]};
+        }
+      const DualPoint  dX     = X[1] - X[0];
+      const MortarDual length = sqrt(dX.x * dX.x + dX.y * dX.y);
+
+      // Five Gauss points: the obstacle's points are not polynomial in s.
+      static const double gauss_points[5]  = {0.0469100770306680,
+                                              0.2307653449471585,
+                                              0.5,
+                                              0.7692346550528415,
+                                              0.9530899229693319};
+      static const double gauss_weights[5] = {0.1184634425280945,
+                                              0.2393143352496832,
+                                              0.2844444444444444,
+                                              0.2393143352496832,
+                                              0.1184634425280945};
+      MortarDual          Da(0.), Db(0.);
+      MortarDual          Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
+      MortarDual          ma[2] = {0., 0.}, mb[2] = {0., 0.};
+      for (unsigned int q = 0; q < 5; ++q)
+        {
+          const double       s = gauss_points[q];
+          const MortarDual   w = gauss_weights[q] * length;
+          const DualPoint    x = X[0] + MortarDual(s) * dX;
+          const SurfacePoint point =
+            surface.project(Point<2>(x.x.value, x.y.value));
+          if (!point.valid)
+            {
+              state[a].uncovered = state[b].uncovered = true;
+              return;
+            }
+          // The closest point moves with x by c' ds, ds = c' . dx / (c' . c'
+          // - (x - c) . c''), and the material there by m' ds.
+          const Tensor<1, 2> &dc = point.first_derivative;
+          const Tensor<1, 2>  r(
+            {x.x.value - point.point[0], x.y.value - point.point[1]});
+          const double curvature_term = dc * dc - r * point.second_derivative;
+          const MortarDual ds =
+            (dc[0] * (x.x - x.x.value) + dc[1] * (x.y - x.y.value)) /
+            MortarDual(curvature_term);
+          const MortarDual y[2] = {point.point[0] + dc[0] * ds,
+                                   point.point[1] + dc[1] * ds};
+          const MortarDual m[2] = {point.motion_since_step_start[0] +
+                                     point.motion_derivative[0] * ds,
+                                   point.motion_since_step_start[1] +
+                                     point.motion_derivative[1] * ds};
+          const MortarDual phia = MortarDual(2. - 3. * s),
+                           phib = MortarDual(3. * s - 1.);
+          Da += w * phia;
+          Db += w * phib;
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              Ya[c] += w * phia * y[c];
+              Yb[c] += w * phib * y[c];
+              ma[c] += w * phia * m[c];
+              mb[c] += w * phib * m[c];
+            }
+        }
+      state[a].D.add(Da, dofs, 4);
+      state[b].D.add(Db, dofs, 4);
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          state[a].Y[c].add(Ya[c], dofs, 4);
+          state[b].Y[c].add(Yb[c], dofs, 4);
+          state[a].moved[c].add(ma[c], dofs, 4);
+          state[b].moved[c].add(mb[c], dofs, 4);
+        }
+    }
+
+
+
+    void
     Mortar::update()
     {
       slave_positions.resize(slave_points.size());
@@ -528,10 +634,13 @@ namespace glissade
         }
 
       for (unsigned int f = 0; f < faces.size(); ++f)
-        for (unsigned int i = 0;
-             i + (chain.closed ? 0 : 1) < master_points.size();
-             ++i)
-          integrate(f, i);
+        if (chain == nullptr)
+          integrate_on_obstacle(f);
+        else
+          for (unsigned int i = 0;
+               i + (chain->closed ? 0 : 1) < master_points.size();
+               ++i)
+            integrate(f, i);
 
       // A node counts when the master covers enough of its support that
       // its weights m_jk = M_jk / D_j stay bounded: at the master's ends,
@@ -544,10 +653,17 @@ namespace glissade
           for (const unsigned int g : faces_of_point[j])
             tributary += 0.5 * position(slave_points[faces[g][0]])
                                  .distance(position(slave_points[faces[g][1]]));
-          s.coverage = s.M.empty() ? 0. : s.D.value / tributary;
+          s.coverage = chain == nullptr ? (s.uncovered ? 0. : 1.) :
+                       s.M.empty()      ? 0. :
+                                          s.D.value / tributary;
           merge_entries(s.D.gradient);
           for (auto &[k, M] : s.M)
             merge_entries(M.gradient);
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              merge_entries(s.Y[c].gradient);
+              merge_entries(s.moved[c].gradient);
+            }
         }
     }
 
@@ -577,6 +693,14 @@ namespace glissade
           y += m * Tensor<1, 2>(position(master_points[k]));
           master_motion += m * motion(master_points[k]);
         }
+      // Against an obstacle: y_j = int Phi_j y / D_j, and its material's
+      // motion likewise.
+      if (chain == nullptr)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            y[c]             = s.Y[c].value / D;
+            master_motion[c] = s.moved[c].value / D;
+          }
       const Tensor<1, 2> x_minus_y = s.x - y;
       const Tensor<1, 2> d         = s.motion - master_motion;
 
@@ -606,6 +730,16 @@ namespace glissade
       l.slip_row = l.tangential_force;
       add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
       add_scaled(l.slip_row, n * d, s.rotation_row);
+      // Against an obstacle, y_j and its motion change with the slave
+      // face's points: dy_j = dY / D - y_j dD / D.
+      if (chain == nullptr)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            add_scaled(l.gap_row, -n[c] / D, s.Y[c].gradient);
+            add_scaled(l.gap_row, n[c] * y[c] / D, s.D.gradient);
+            add_scaled(l.slip_row, -t[c] / D, s.moved[c].gradient);
+            add_scaled(l.slip_row, t[c] * master_motion[c] / D, s.D.gradient);
+          }
 
       // The contact tangent at fixed r: F = lambda . (e_j - sum m_k e_k)
       // with lambda = r_t t + r_n n: the turn, d lambda = theta mu with
@@ -660,13 +794,9 @@ namespace glissade
   create_mortar(const ContactDiscretisation::Context &context)
   {
     const std::string entry = context.description.entry;
-    if (context.master == nullptr)
-      throw InputError(entry + "/Discretisation",
-                       "mortar contact needs a deformable master body; a "
-                       "rigid obstacle is met node-to-segment "
-                       "(Discretisation = node-to-segment)");
-    if (dynamic_cast<const CurveSurface *>(&context.surface) == nullptr ||
-        context.description.surface != "faceted")
+    if (context.master != nullptr &&
+        (dynamic_cast<const CurveSurface *>(&context.surface) == nullptr ||
+         context.description.surface != "faceted"))
       throw InputError(entry + "/Surface",
                        "mortar contact integrates over the faceted master "
                        "(Surface = faceted); the smoothed masters ('" +
