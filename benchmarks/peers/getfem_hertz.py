@@ -51,6 +51,12 @@ def main():
     parser.add_argument("h", type=float)
     parser.add_argument("--mesh", default=None)
     parser.add_argument("--out", default=".")
+    parser.add_argument("--contact", choices=("nodal", "integral"),
+                        default="nodal",
+                        help="GetFEM's nodal contact brick, or its integral "
+                             "one (the multiplier a Q1 field on the arc, the "
+                             "contact condition integrated: the weak form "
+                             "glissade's mortar writes)")
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     if args.mesh:
@@ -106,10 +112,23 @@ def main():
     # the nodes' first dof.
     region_dofs = mf.basic_dof_on_region(ARC)
     contact_x_dofs = np.sort(region_dofs)[::2]
-    md.add_variable("lambda_n", len(contact_x_dofs))
     md.add_initialized_data("r", [E])
-    md.add_nodal_contact_with_rigid_obstacle_brick(
-        mim, "u", "lambda_n", "r", ARC, "y", 1)
+    if args.contact == "nodal":
+        md.add_variable("lambda_n", len(contact_x_dofs))
+        md.add_nodal_contact_with_rigid_obstacle_brick(
+            mim, "u", "lambda_n", "r", ARC, "y", 1)
+    else:
+        # The multiplier a scalar Q1 field on the arc, the obstacle the
+        # signed distance y as a field; Alart-Curnier, unsymmetric (1).
+        mf_scalar = gf.MeshFem(m, 1)
+        mf_scalar.set_fem(fem)
+        mf_lambda = gf.MeshFem("partial", mf_scalar,
+                               mf_scalar.basic_dof_on_region(ARC))
+        md.add_fem_variable("lambda_n", mf_lambda)
+        md.add_initialized_fem_data("obstacle", mf_scalar,
+                                    mf_scalar.basic_dof_nodes()[1])
+        md.add_integral_contact_with_rigid_obstacle_brick(
+            mim, "u", "lambda_n", "obstacle", "r", ARC, 1)
 
     # 1e-10 on GetFEM's residual norm (absolute; 0.23 at the first
     # iteration, its round-off floor about 1.4e-12 at h = 0.005, which
@@ -125,17 +144,25 @@ def main():
     mf.export_to_vtu(os.path.join(args.out, "getfem_hertz.vtu"),
                      mf, U, "displacement")
 
-    # Nodal contact forces: the multipliers (<= 0 in compression).
-    force = -md.variable("lambda_n")
-    x = mf.basic_dof_nodes()[0, contact_x_dofs]
-    p0, a, P = problems.hertz_figures_from_nodal_forces(x, force)
-    p0_hertz, a_hertz = problems.hertz_reference(P)
     # Check: the elements' forces K u at the top edge (its reaction).
     u = np.stack([U[dofs[:, 0]], U[dofs[:, 1]]], axis=1)
     internal = problems.quad_internal_forces(nodes, quads, u, E, nu)
     top_reaction = -2 * float(internal[top, 1].sum())
+    if args.contact == "nodal":
+        # Nodal contact forces: the multipliers (<= 0 in compression).
+        force = -md.variable("lambda_n")
+        x = mf.basic_dof_nodes()[0, contact_x_dofs]
+    else:
+        # The integral brick's nodal forces are what balances the elements'
+        # forces at the arc's nodes (nothing else acts on them in y).
+        order = np.argsort(nodes[arc_nodes, 0])
+        x = nodes[arc_nodes, 0][order]
+        force = internal[arc_nodes, 1][order]
+    p0, a, P = problems.hertz_figures_from_nodal_forces(x, force)
+    p0_hertz, a_hertz = problems.hertz_reference(P)
     print(json.dumps({
-        "code": "getfem", "problem": "hertz", "h": args.h,
+        "code": "getfem" if args.contact == "nodal" else "getfem-integral",
+        "problem": "hertz", "h": args.h,
         "dofs": int(mf.nbdof()), "P": P, "p0": p0, "a": a,
         "p0_hertz": p0_hertz, "a_hertz": a_hertz,
         "error_p0": (p0 - p0_hertz) / p0_hertz,

@@ -204,18 +204,35 @@ def hertz_row(args, h):
     ccx_dir = os.path.join(work, "calculix")
     subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"), "hertz",
                     str(h), ccx_dir, "--mesh", mesh], check=True)
+    # Beside each code's nodal contact, the weak (integral) forms: glissade's
+    # mortar and GetFEM's integral contact brick.
+    for code, variant in (("glissade", "glissade-mortar"),
+                          ("getfem", "getfem-integral")):
+        if code in args.codes and variant not in args.codes:
+            args.codes.append(variant)
     runs = {
         "glissade": (glissade_hertz_command(args.glissade, mesh,
                                             os.path.join(work, "glissade")),
                      work),
+        "glissade-mortar": (glissade_hertz_command(
+            args.glissade, mesh, os.path.join(work, "glissade-mortar")) +
+            ["--set", "Contact flat/Discretisation=mortar"], work),
         "getfem": ([PYTHON, os.path.join(HERE, "getfem_hertz.py"), str(h),
                     "--mesh", mesh, "--out", os.path.join(work, "getfem")],
                    work),
+        "getfem-integral": ([PYTHON, os.path.join(HERE, "getfem_hertz.py"),
+                             str(h), "--mesh", mesh, "--contact", "integral",
+                             "--out", os.path.join(work, "getfem-integral")],
+                            work),
         "calculix": (["ccx", "-i", "job"], ccx_dir),
     }
     times, results = run_and_read(args, work, runs, {
         "glissade": lambda: glissade_hertz_result(os.path.join(work, "glissade")),
+        "glissade-mortar": lambda: glissade_hertz_result(
+            os.path.join(work, "glissade-mortar")),
         "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
+        "getfem-integral": lambda: last_json(
+            os.path.join(work, "getfem-integral.log")),
         "calculix": lambda: read_calculix(["hertz", str(h), ccx_dir]),
     })
     errors = {}
