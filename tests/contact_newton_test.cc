@@ -154,6 +154,11 @@ GLISSADE_TEST(contact_newton_rate_mortar)
   check_rings("faceted", "mortar");
 }
 
+GLISSADE_TEST(contact_newton_rate_mortar_bspline)
+{
+  check_rings("bspline", "mortar");
+}
+
 GLISSADE_TEST(contact_newton_rate_hermite)
 {
   check_rings("hermite");

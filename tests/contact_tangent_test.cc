@@ -52,7 +52,8 @@ namespace
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
       " set Alert distance = 10\n";
-    // mortar_line, mortar_disk: mortar against those obstacles.
+    // mortar_line, mortar_disk: mortar against those obstacles;
+    // mortar_bspline: on the B-spline master.
     const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
     const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
     if (on_obstacle_mortar)
@@ -101,6 +102,8 @@ namespace
             " set Surface = bspline\n set Force transfer = " +
             std::string(master == "bspline_segment" ? "segment" : "spline") +
             "\n";
+        else if (master == "mortar_bspline")
+          contact += " set Surface = bspline\n";
         else if (master == "mortar")
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
         else
@@ -336,6 +339,8 @@ CONTACT_TANGENT_TEST(hermite, slip)
 CONTACT_TANGENT_TEST(mortar, frictionless)
 CONTACT_TANGENT_TEST(mortar, stick)
 CONTACT_TANGENT_TEST(mortar, slip)
+CONTACT_TANGENT_TEST(mortar_bspline, frictionless)
+CONTACT_TANGENT_TEST(mortar_bspline, slip)
 CONTACT_TANGENT_TEST(mortar_line, slip)
 CONTACT_TANGENT_TEST(mortar_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_disk, stick)

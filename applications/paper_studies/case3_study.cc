@@ -94,10 +94,12 @@ namespace glissade
       }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
-    else if (variant == "mortar")
+    else if (variant == "mortar" || variant == "mortar-bspline")
       {
-        // Mortar over the faceted master (the element edges).
-        overrides.push_back("Contact interface/Surface=faceted");
+        // Mortar over the faceted master (the element edges) or over the
+        // closed B-spline.
+        overrides.push_back(std::string("Contact interface/Surface=") +
+                            (variant == "mortar" ? "faceted" : "bspline"));
         overrides.push_back("Contact interface/Discretisation=mortar");
       }
     else if (variant == "bspline-spline")
@@ -115,7 +117,7 @@ namespace glissade
         "Case 3 study/Variants",
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
-          "bspline-spline, hermite, mortar)");
+          "bspline-spline, hermite, mortar, mortar-bspline)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -288,12 +290,13 @@ namespace glissade
                       "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
                         "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
-                        "mortar")),
+                        "mortar|mortar-bspline")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
-                      "and kept segment (doc/contact.md); mortar is the "
-                      "mortar discretisation over the faceted master.");
+                      "and kept segment (doc/contact.md); mortar and "
+                      "mortar-bspline the mortar discretisation over the "
+                      "faceted master and over the B-spline.");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

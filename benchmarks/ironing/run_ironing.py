@@ -21,6 +21,8 @@ import numpy as np
 
 VARIANTS = [
     ("mortar", ["Contact ironing/Discretisation=mortar"]),
+    ("mortar, B-spline", ["Contact ironing/Discretisation=mortar",
+                          "Contact ironing/Surface=bspline"]),
     ("node-to-segment, B-spline",
      ["Contact ironing/Discretisation=node-to-segment",
       "Contact ironing/Surface=bspline"]),

@@ -20,9 +20,12 @@ namespace glissade
      * The coordinates a segment pair's integrals depend on: up to four
      * slave points (the slave segment's two nodes and their neighbours,
      * whose faces make the nodal normals) and the master segment's two
-     * nodes, two coordinates each.
+     * nodes, two coordinates each (12); on a smooth master curve, eight
+     * more: at each of the four Gauss points, the curve point's change
+     * sum_k phi_k dX_k, through which every node of the curve acts
+     * (mapped to them afterwards).
      */
-    constexpr int n_mortar_variables = 12;
+    constexpr int n_mortar_variables = 20;
     using MortarDual                 = Dual<n_mortar_variables>;
 
     struct DualPoint
@@ -193,7 +196,12 @@ namespace glissade
       const Body          *master;
       const MasterChain   *chain;
       const MasterSurface &surface;
-      const double         search_distance;
+      /**
+       * A smooth master (B-spline) as the integration geometry; nullptr
+       * for the faceted one (its straight segments) and for obstacles.
+       */
+      const MasterCurve *curve = nullptr;
+      const double       search_distance;
 
       std::vector<SidePoint>               slave_points, master_points;
       std::map<unsigned int, unsigned int> point_of_vertex;
@@ -234,6 +242,10 @@ namespace glissade
                    .master_chain() :
                 nullptr)
       , surface(context.surface)
+      , curve(context.master && context.description.surface != "faceted" ?
+                &dynamic_cast<const CurveSurface &>(context.surface)
+                   .master_curve() :
+                nullptr)
       , search_distance(context.description.alert_distance)
     {
       for (const ContactNode &node : context.nodes)
@@ -360,10 +372,11 @@ namespace glissade
       // node-to-segment node may keep its end segment: a slave node that
       // slides off the end loses its counterpart over half a segment, not
       // at once.
-      const bool   open_start = !chain->closed && i == 0;
-      const bool   open_end   = !chain->closed && i + 2 == master_points.size();
-      const double eta_low    = open_start ? -0.5 : 0.,
-                   eta_high   = open_end ? 1.5 : 1.;
+      const bool open_start = !curve && !chain->closed && i == 0;
+      const bool open_end =
+        !curve && !chain->closed && i + 2 == master_points.size();
+      const double eta_low  = open_start ? -0.5 : 0.,
+                   eta_high = open_end ? 1.5 : 1.;
       {
         const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
         const auto          image = [&](const Point<2> &y) {
@@ -474,6 +487,12 @@ namespace glissade
                                               0.1739274225687269};
       const MortarDual    length           = sqrt(dX.x * dX.x + dX.y * dX.y);
       MortarDual          Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
+      // On a smooth curve: int Phi y and int Phi m (the curve's points and
+      // their motion) per component, and, per Gauss point, the curve's
+      // weights and what the parameter's change does to each node's dofs.
+      MortarDual                             Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
+      MortarDual                             ma[2] = {0., 0.}, mb[2] = {0., 0.};
+      MasterCurve::NodeWeightsAndDerivatives weights[4];
       for (unsigned int q = 0; q < 4; ++q)
         {
           const MortarDual s = lower + gauss_points[q] * (upper - lower);
@@ -481,7 +500,65 @@ namespace glissade
           const DualPoint  x = Xa + s * dX;
           const DualPoint  n = Na + s * dN;
           // The master point on the normal: (y(eta) - x) x n = 0.
-          const MortarDual eta  = cross(x - Yc, n) / cross(Yd - Yc, n);
+          MortarDual eta = cross(x - Yc, n) / cross(Yd - Yc, n);
+          if (curve)
+            {
+              // Newton on the curve in plain numbers, then one step on the
+              // Duals for the slave's part of d eta; variable 12 + q stands
+              // for the rest, the curve's nodes at fixed slave:
+              // d eta = -sum phi_k dX_k x n / (c' x n).
+              double             t = std::min(1., std::max(0., eta.value));
+              MasterCurve::Point c0{}, c1{}, c2{};
+              for (unsigned int it = 0; it < 30; ++it)
+                {
+                  curve->evaluate(i, t, c0, c1, c2);
+                  const double F = (c0[0] - x.x.value) * n.y.value -
+                                   (c0[1] - x.y.value) * n.x.value;
+                  const double dF   = c1[0] * n.y.value - c1[1] * n.x.value;
+                  const double step = F / dF;
+                  t -= step;
+                  if (std::abs(step) < 1e-15)
+                    break;
+                }
+              curve->evaluate(i, t, c0, c1, c2);
+              // The curve point at t, moved by its nodes: C + dC_q, with
+              // dC_q = sum_k phi_k(t) dX_k the variables 12 + 2q, 13 + 2q.
+              const DualPoint C{MortarDual::variable(c0[0], 12 + 2 * q),
+                                MortarDual::variable(c0[1], 13 + 2 * q)};
+              const DualPoint dC{MortarDual(c1[0]), MortarDual(c1[1])};
+              eta = t - cross(C - x, n) / cross(dC, n);
+              curve->weights_and_derivatives(i, t, weights[q]);
+              Tensor<1, 2> m0, m1;
+              for (const auto &e : weights[q])
+                {
+                  const Tensor<1, 2> moved = motion(master_points[e.node]);
+                  m0 += e.value * moved;
+                  m1 += e.derivative * moved;
+                }
+              // (the motion's change by the nodes is the point's, dC_q:
+              // the nodes' positions at the increment's start are fixed)
+              const MortarDual deta = eta - t;
+              const MortarDual y[2] = {C.x + c1[0] * deta, C.y + c1[1] * deta};
+              const MortarDual m[2] = {m0[0] + (C.x - c0[0]) + m1[0] * deta,
+                                       m0[1] + (C.y - c0[1]) + m1[1] * deta};
+              const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
+              for (unsigned int k = 0; k < 2; ++k)
+                {
+                  Ya[k] += w * phia * y[k];
+                  Yb[k] += w * phib * y[k];
+                  ma[k] += w * phia * m[k];
+                  mb[k] += w * phib * m[k];
+                }
+              // The forces go to the underlying segment's two nodes, by
+              // the hat functions at the curve point's place along the
+              // chord (not at the curve's parameter, whose speed need not
+              // be uniform: on a straight master the two differ near its
+              // ends, and the patch test would fail by their difference).
+              const DualPoint Y{y[0], y[1]}, chord = Yd - Yc;
+              const DualPoint from_c = Y - Yc;
+              eta = (from_c.x * chord.x + from_c.y * chord.y) /
+                    (chord.x * chord.x + chord.y * chord.y);
+            }
           const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
           Da += w * phia;
           Db += w * phib;
@@ -490,12 +567,33 @@ namespace glissade
           Mbc += w * phib * (1. - eta);
           Mbd += w * phib * eta;
         }
-      state[a].D.add(Da, dofs, n_used);
-      state[b].D.add(Db, dofs, n_used);
-      state[a].M[c].add(Mac, dofs, n_used);
-      state[a].M[d].add(Mad, dofs, n_used);
-      state[b].M[c].add(Mbc, dofs, n_used);
-      state[b].M[d].add(Mbd, dofs, n_used);
+      // On a curve, the curve points' variables go to its nodes' dofs.
+      const auto add = [&](Accumulated &to, const MortarDual &v) {
+        to.add(v, dofs, n_used);
+        if (curve)
+          for (unsigned int q = 0; q < 4; ++q)
+            for (unsigned int k = 0; k < 2; ++k)
+              if (v.derivative[12 + 2 * q + k] != 0.)
+                for (const auto &e : weights[q])
+                  to.gradient.push_back(
+                    {1,
+                     master_points[e.node].dofs[k],
+                     v.derivative[12 + 2 * q + k] * e.value});
+      };
+      add(state[a].D, Da);
+      add(state[b].D, Db);
+      add(state[a].M[c], Mac);
+      add(state[a].M[d], Mad);
+      add(state[b].M[c], Mbc);
+      add(state[b].M[d], Mbd);
+      if (curve)
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            add(state[a].Y[k], Ya[k]);
+            add(state[b].Y[k], Yb[k]);
+            add(state[a].moved[k], ma[k]);
+            add(state[b].moved[k], mb[k]);
+          }
     }
 
 
@@ -693,9 +791,11 @@ namespace glissade
           y += m * Tensor<1, 2>(position(master_points[k]));
           master_motion += m * motion(master_points[k]);
         }
-      // Against an obstacle: y_j = int Phi_j y / D_j, and its material's
-      // motion likewise.
-      if (chain == nullptr)
+      // Against an obstacle or a smooth curve: y_j = int Phi_j y / D_j,
+      // and its material's motion likewise (the curve's forces still go
+      // through the weights m_k of the underlying segments).
+      const bool curve_points = chain == nullptr || curve != nullptr;
+      if (curve_points)
         for (unsigned int c = 0; c < 2; ++c)
           {
             y[c]             = s.Y[c].value / D;
@@ -726,13 +826,26 @@ namespace glissade
       // master shape functions sum to one), sum dm_k = 0: y_k and dy_k
       // enter relative to x_j and dx_j, which keeps the terms that cancel
       // (a flat master: n . (y_k - y_l) = 0) from leaving round-off.
-      l.gap_row  = l.normal_force;
-      l.slip_row = l.tangential_force;
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          l.gap_row.push_back({0, node.dofs[c], n[c]});
+          l.slip_row.push_back({0, node.dofs[c], t[c]});
+        }
+      if (!curve_points)
+        for (const auto &[k, M] : s.M)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              l.gap_row.push_back(
+                {1, master_points[k].dofs[c], -M.value / D * n[c]});
+              l.slip_row.push_back(
+                {1, master_points[k].dofs[c], -M.value / D * t[c]});
+            }
       add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
       add_scaled(l.slip_row, n * d, s.rotation_row);
-      // Against an obstacle, y_j and its motion change with the slave
-      // face's points: dy_j = dY / D - y_j dD / D.
-      if (chain == nullptr)
+      // Against an obstacle or a curve, y_j and its motion change with
+      // the slave face's points (and the curve's nodes): dy_j = dY / D -
+      // y_j dD / D.
+      if (curve_points)
         for (unsigned int c = 0; c < 2; ++c)
           {
             add_scaled(l.gap_row, -n[c] / D, s.Y[c].gradient);
@@ -760,10 +873,13 @@ namespace glissade
           add_scaled(dm, 1. / D, M.gradient);
           add_scaled(dm, -m / D, s.D.gradient);
           const Point<2> yk = position(master_points[k]);
-          add_scaled(l.gap_row, -(n * (yk - s.x)), dm);
-          add_scaled(l.slip_row,
-                     -(t * (motion(master_points[k]) - s.motion)),
-                     dm);
+          if (!curve_points)
+            {
+              add_scaled(l.gap_row, -(n * (yk - s.x)), dm);
+              add_scaled(l.slip_row,
+                         -(t * (motion(master_points[k]) - s.motion)),
+                         dm);
+            }
           if (lambda.norm() > 0.)
             {
               ContactLinearization::Term change;
@@ -796,12 +912,13 @@ namespace glissade
     const std::string entry = context.description.entry;
     if (context.master != nullptr &&
         (dynamic_cast<const CurveSurface *>(&context.surface) == nullptr ||
-         context.description.surface != "faceted"))
+         context.description.surface == "hermite"))
       throw InputError(entry + "/Surface",
-                       "mortar contact integrates over the faceted master "
-                       "(Surface = faceted); the smoothed masters ('" +
+                       "mortar contact integrates over a faceted or a "
+                       "B-spline master (Surface = faceted or bspline); the "
+                       "Hermite master ('" +
                          context.description.surface +
-                         "') are met node-to-segment in this version");
+                         "') is met node-to-segment in this version");
     return std::make_unique<Mortar>(context);
   }
 } // namespace glissade
