@@ -14,24 +14,6 @@ using namespace glissade_tests;
 
 namespace
 {
-  std::string
-  block(const std::string &name,
-        const std::string &corner_1,
-        const std::string &corner_2,
-        const std::string &subdivisions,
-        const std::string &space,
-        const std::string &conditions)
-  {
-    return "subsection Body " + name +
-           "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
-           corner_1 + "\n  set Corner 2 = " + corner_2 +
-           "\n  set Subdivisions = " + subdivisions +
-           "\n end\n subsection Element\n  set Space = " + space +
-           "\n end\n subsection Material\n  set Young modulus = 1000\n"
-           "  set Poisson ratio = 0.3\n end\n subsection Boundary conditions\n" +
-           conditions + "\n end\nend\n";
-  }
-
   // The local solver's tolerance is set below Newton's, so that its last
   // digits do not keep the Newton increment from converging.
   const std::string quiet =
@@ -58,13 +40,13 @@ GLISSADE_TEST(contact_block_rigid_flat)
 {
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n" +
-    block("block",
-          "0, 0",
-          "1, 0.5",
-          "8, 4",
-          "q1",
-          "  set Fixed = left: x\n"
-          "  set Prescribed displacement = top: y: -0.03*t") +
+    rectangle_body("block",
+                   "0, 0",
+                   "1, 0.5",
+                   "8, 4",
+                   "q1",
+                   "  set Fixed = left: x\n"
+                   "  set Prescribed displacement = top: y: -0.03*t") +
     "subsection Contact floor\n set Slave body = block\n"
     " set Slave boundary = bottom\n set Alert distance = 0.1\n"
     " set Tolerance = 1e-13\n"
@@ -114,19 +96,19 @@ namespace
   {
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
-           block("upper",
-                 "0, 0.5",
-                 "1, 1",
-                 upper_cells,
-                 "q1",
-                 "  set Fixed = left: x\n"
-                 "  set Prescribed displacement = top: y: -0.02*t") +
-           block("lower",
-                 "0, 0",
-                 "1, 0.5",
-                 "8, 4",
-                 space,
-                 "  set Fixed = left: x; bottom: y") +
+           rectangle_body("upper",
+                          "0, 0.5",
+                          "1, 1",
+                          upper_cells,
+                          "q1",
+                          "  set Fixed = left: x\n"
+                          "  set Prescribed displacement = top: y: -0.02*t") +
+           rectangle_body("lower",
+                          "0, 0",
+                          "1, 0.5",
+                          "8, 4",
+                          space,
+                          "  set Fixed = left: x; bottom: y") +
            "subsection Contact interface\n set Slave body = upper\n"
            " set Tolerance = 1e-13\n"
            " set Slave boundary = bottom\n set Master body = lower\n"
@@ -240,7 +222,7 @@ GLISSADE_TEST(contact_symmetry)
 {
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = indenter\nend\n" +
-    block(
+    rectangle_body(
       "block", "0, 0", "1, 0.5", "10, 5", "q1", "  set Fixed = bottom: xy") +
     "subsection Contact indenter\n set Slave body = block\n"
     " set Slave boundary = top\n set Alert distance = 0.2\n"
@@ -274,13 +256,13 @@ GLISSADE_TEST(contact_coulomb_stick_slip)
   const double      mu = 0.3;
   const std::string prm =
     "subsection Scene\n set Bodies = block\n set Contact pairs = floor\nend\n" +
-    block("block",
-          "0, 0",
-          "1, 0.5",
-          "6, 3",
-          "q1",
-          "  set Prescribed displacement = top: xy: 0.04*max(t-1, 0), "
-          "-0.01*min(t, 1)") +
+    rectangle_body("block",
+                   "0, 0",
+                   "1, 0.5",
+                   "6, 3",
+                   "q1",
+                   "  set Prescribed displacement = top: xy: 0.04*max(t-1, 0), "
+                   "-0.01*min(t, 1)") +
     "subsection Contact floor\n set Slave body = block\n"
     " set Slave boundary = bottom\n set Alert distance = 0.1\n"
     " set Friction coefficient = 0.3\n set Tolerance = 1e-13\n"

@@ -20,22 +20,6 @@ using namespace glissade_tests;
 
 namespace
 {
-  std::string
-  mortar_block(const std::string &name,
-               const std::string &corner_1,
-               const std::string &corner_2,
-               const std::string &subdivisions,
-               const std::string &conditions)
-  {
-    return "subsection Body " + name +
-           "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
-           corner_1 + "\n  set Corner 2 = " + corner_2 +
-           "\n  set Subdivisions = " + subdivisions +
-           "\n end\n subsection Material\n  set Young modulus = 1000\n"
-           "  set Poisson ratio = 0.3\n end\n subsection Boundary conditions\n" +
-           conditions + "\n end\nend\n";
-  }
-
   /**
    * Two blocks, upper on lower, `upper_cells` and `lower_cells` along the
    * interface; the slave is the upper block or the lower one.
@@ -71,16 +55,18 @@ namespace
     const std::string master = upper_is_slave ? "lower" : "upper";
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
-           mortar_block("upper",
-                        "0, 0.5",
-                        "1, 1",
-                        std::to_string(upper_cells) + ", 3",
-                        upper_conditions) +
-           mortar_block("lower",
-                        "0, 0",
-                        "1, 0.5",
-                        std::to_string(lower_cells) + ", 4",
-                        lower_conditions) +
+           rectangle_body("upper",
+                          "0, 0.5",
+                          "1, 1",
+                          std::to_string(upper_cells) + ", 3",
+                          "q1",
+                          upper_conditions) +
+           rectangle_body("lower",
+                          "0, 0",
+                          "1, 0.5",
+                          std::to_string(lower_cells) + ", 4",
+                          "q1",
+                          lower_conditions) +
            "subsection Contact interface\n set Slave body = " + slave +
            "\n set Slave boundary = " + (upper_is_slave ? "bottom" : "top") +
            "\n set Master body = " + master +

@@ -137,6 +137,29 @@ namespace glissade_tests
             "100*(cosh(" + b + ")-cos(" + b + ")-0.7341*(sinh(" + b + ")-sin(" +
               b + ")))"};
   }
+  /**
+   * A body named `name` on a rectangle mesh (corners, subdivisions as the
+   * .prm writes them), of element space `space`, E = 1000, nu = 0.3, with
+   * the Boundary conditions subsection's lines `conditions`: the block of
+   * the contact tests.
+   */
+  inline std::string
+  rectangle_body(const std::string &name,
+                 const std::string &corner_1,
+                 const std::string &corner_2,
+                 const std::string &subdivisions,
+                 const std::string &space,
+                 const std::string &conditions)
+  {
+    return "subsection Body " + name +
+           "\n subsection Mesh\n  set Type = rectangle\n  set Corner 1 = " +
+           corner_1 + "\n  set Corner 2 = " + corner_2 +
+           "\n  set Subdivisions = " + subdivisions +
+           "\n end\n subsection Element\n  set Space = " + space +
+           "\n end\n subsection Material\n  set Young modulus = 1000\n"
+           "  set Poisson ratio = 0.3\n end\n subsection Boundary conditions\n" +
+           conditions + "\n end\nend\n";
+  }
 } // namespace glissade_tests
 
 #define GLISSADE_TEST(name)                                                    \

@@ -41,8 +41,17 @@ def mesh_and_write(contact, path, h_contact=H_CONTACT):
     field.setAsBackgroundMesh(size)
     for option, value in (("Mesh.MeshSizeExtendFromBoundary", 0),
                           ("Mesh.MeshSizeFromPoints", 0),
-                          ("Mesh.MeshSizeFromCurvature", 0),
-                          ("Mesh.Algorithm", 6), ("Mesh.RecombineAll", 1),
+                          ("Mesh.MeshSizeFromCurvature", 0)):
+        gmsh.option.setNumber(option, value)
+    generate_quadrilaterals_and_write(path)
+
+
+def generate_quadrilaterals_and_write(path):
+    """Meshes the model in quadrilaterals (Frontal-Delaunay paired by
+    Blossom), writes it as Gmsh 2.2 text with ten significant digits per
+    coordinate (plenty for a mesh, and half the file), and finalises
+    Gmsh (also used by make_ironing_die_mesh.py)."""
+    for option, value in (("Mesh.Algorithm", 6), ("Mesh.RecombineAll", 1),
                           ("Mesh.RecombinationAlgorithm", 1),
                           ("Mesh.ElementOrder", 1),
                           ("Mesh.MshFileVersion", 2.2), ("Mesh.Binary", 0)):
@@ -50,7 +59,6 @@ def mesh_and_write(contact, path, h_contact=H_CONTACT):
     gmsh.model.mesh.generate(2)
     gmsh.write(path)
     gmsh.finalize()
-    # ten significant digits are plenty for a mesh, and halve the file
     text = open(path).read()
     head, nodes, tail = re.split(r"(?<=\$Nodes\n)|(?=\$EndNodes)", text)
     lines = nodes.strip().split("\n")
@@ -131,7 +139,8 @@ def write_flat_block(path):
     mesh_and_write(contact, path, 0.0021)
 
 
-write("hertz_sphere_upper.msh", 1.0)
-write("hertz_sphere_lower.msh", -1.0)
-write_whole("hertz_sphere_whole.msh")
-write_flat_block("hertz_flat_block.msh")
+if __name__ == "__main__":
+    write("hertz_sphere_upper.msh", 1.0)
+    write("hertz_sphere_lower.msh", -1.0)
+    write_whole("hertz_sphere_whole.msh")
+    write_flat_block("hertz_flat_block.msh")

@@ -11,9 +11,9 @@ Physical groups: contact (the arc and the two sides), top, die.
 Needs Gmsh's Python module (Debian: python3-gmsh, in /usr/bin/python3).
 Run from prm/meshes: /usr/bin/python3 make_ironing_die_mesh.py
 """
-import re
-
 import gmsh
+
+from make_hertz_sphere_meshes import generate_quadrilaterals_and_write
 
 gmsh.initialize(readConfigFiles=False)
 gmsh.option.setNumber("General.Terminal", 0)
@@ -42,18 +42,4 @@ for dim, tags, name, number in ((1, [arc_left, arc_right, side_right, side_left]
                                 (1, [top], "top", 2), (2, [die], "die", 3)):
     gmsh.model.addPhysicalGroup(dim, tags, number)
     gmsh.model.setPhysicalName(dim, number, name)
-for option, value in (("Mesh.Algorithm", 6), ("Mesh.RecombineAll", 1),
-                      ("Mesh.RecombinationAlgorithm", 1),
-                      ("Mesh.ElementOrder", 1),
-                      ("Mesh.MshFileVersion", 2.2), ("Mesh.Binary", 0)):
-    gmsh.option.setNumber(option, value)
-gmsh.model.mesh.generate(2)
-path = "ironing_die.msh"
-gmsh.write(path)
-gmsh.finalize()
-text = open(path).read()
-head, nodes, tail = re.split(r"(?<=\$Nodes\n)|(?=\$EndNodes)", text)
-lines = nodes.strip().split("\n")
-out = [lines[0]] + [" ".join([f[0]] + [f"{float(v):.10g}" for v in f[1:]])
-                    for f in (line.split() for line in lines[1:])]
-open(path, "w").write(head + "\n".join(out) + "\n" + tail)
+generate_quadrilaterals_and_write("ironing_die.msh")

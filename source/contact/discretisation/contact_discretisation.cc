@@ -1,4 +1,5 @@
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
 
 #include <functional>
@@ -35,7 +36,8 @@ namespace glissade
          "segment-to-segment mortar with dual multipliers: each slave node's "
          "gap is the integral of the gap against its dual shape function, "
          "segment by segment (passes the contact patch test on "
-         "non-matching meshes; a deformable faceted master)",
+         "non-matching meshes; a faceted or B-spline master, or a rigid "
+         "obstacle)",
          create_mortar}};
       return list;
     }
@@ -58,10 +60,10 @@ namespace glissade
   std::string
   ContactDiscretisation::names_as_pattern()
   {
-    std::string pattern;
+    std::vector<std::string> names;
     for (const auto &entry : discretisations())
-      pattern += (pattern.empty() ? "" : "|") + entry.name;
-    return pattern;
+      names.push_back(entry.name);
+    return text::joined(names, "|");
   }
 
 
@@ -69,9 +71,9 @@ namespace glissade
   std::string
   ContactDiscretisation::documentation()
   {
-    std::string text;
+    std::vector<std::string> sentences;
     for (const auto &entry : discretisations())
-      text += (text.empty() ? "" : "; ") + entry.name + ": " + entry.sentence;
-    return text + ".";
+      sentences.push_back(entry.name + ": " + entry.sentence);
+    return text::joined(sentences, "; ") + ".";
   }
 } // namespace glissade

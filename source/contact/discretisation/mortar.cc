@@ -1,3 +1,5 @@
+#include <deal.II/base/quadrature_lib.h>
+
 #include <glissade/base/dual_number.h>
 #include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
@@ -106,7 +108,57 @@ namespace glissade
       v = std::move(merged);
     }
 
-    /** c a + b, appended to `out`. */
+    /**
+     * The root of A s^2 + B s + C that Newton reaches from the linear
+     * estimate -C / B; NaN if it does not.
+     */
+    double
+    root_near_linear(const double A, const double B, const double C)
+    {
+      double s = -C / B;
+      for (unsigned int it = 0; it < 20 && std::isfinite(s); ++it)
+        {
+          const double step = (A * s * s + B * s + C) / (2. * A * s + B);
+          s -= step;
+          if (std::abs(step) < 1e-15)
+            break;
+        }
+      return s;
+    }
+
+    /**
+     * The coordinates of some points as dual variables 0, 1, 2, ... in
+     * the order they are added, and the dofs each variable stands for.
+     */
+    struct LocalVariables
+    {
+      std::vector<DualPoint> coordinates;
+      std::array<std::pair<unsigned int, types::global_dof_index>,
+                 n_mortar_variables>
+        dofs{};
+
+      /** Adds a point of `body` at x with dofs `point_dofs`; its index. */
+      unsigned int
+      add(const unsigned int                            body,
+          const std::array<types::global_dof_index, 2> &point_dofs,
+          const Point<2>                               &x)
+      {
+        const unsigned int l = coordinates.size();
+        coordinates.push_back({MortarDual::variable(x[0], 2 * l),
+                               MortarDual::variable(x[1], 2 * l + 1)});
+        dofs[2 * l]     = {body, point_dofs[0]};
+        dofs[2 * l + 1] = {body, point_dofs[1]};
+        return l;
+      }
+
+      unsigned int
+      n_used() const
+      {
+        return 2 * coordinates.size();
+      }
+    };
+
+    /** c a, appended to `out`. */
     void
     add_scaled(DofVector &out, const double c, const DofVector &a)
     {
@@ -142,6 +194,11 @@ namespace glissade
      * D_j > 0 changes neither the constraint's solution nor its
      * multiplier's sign.
      *
+     * Against a rigid obstacle, and on a smooth (B-spline) master, y_j is
+     * int Phi_j y / D_j instead, y the obstacle's closest point or the
+     * curve's point on the normal; on the curve, the reaction still goes
+     * to the underlying segments' nodes by the weights m_jk (doc/contact.md).
+     *
      * Every integral is differentiated exactly (forward-mode, Dual), so
      * the gap and slip rows and the contact tangent (the turn of n_j and
      * the change of every m_jk at fixed reaction) are consistent.
@@ -162,7 +219,6 @@ namespace glissade
       struct SidePoint
       {
         unsigned int                           body;
-        unsigned int                           index;
         std::array<types::global_dof_index, 2> dofs;
         Point<2>                               reference;
       };
@@ -220,8 +276,9 @@ namespace glissade
         Accumulated                         D;
         std::map<unsigned int, Accumulated> M; // by master point
         /**
-         * Against a rigid obstacle: int Phi_j y and int Phi_j m (the
-         * closest points and their material's motion), per component.
+         * Against a rigid obstacle or a smooth curve: int Phi_j y and
+         * int Phi_j m (the obstacle's closest points or the curve's
+         * points, and their material's motion), per component.
          */
         std::array<Accumulated, 2> Y, moved;
         /** A face point had no counterpart on the obstacle. */
@@ -251,15 +308,11 @@ namespace glissade
       for (const ContactNode &node : context.nodes)
         {
           point_of_vertex[node.vertex] = slave_points.size();
-          slave_points.push_back(
-            {0,
-             static_cast<unsigned int>(slave_points.size()),
-             node.dofs,
-             node.reference_position});
+          slave_points.push_back({0, node.dofs, node.reference_position});
         }
       for (unsigned int k = 0; chain && k < chain->vertices.size(); ++k)
         master_points.push_back(
-          {1, k, chain->value_dofs[k], chain->reference_points[k]});
+          {1, chain->value_dofs[k], chain->reference_points[k]});
 
       // The slave faces, each oriented so that its left normal points out
       // of its cell (the master chain's convention, MasterChain).
@@ -379,23 +432,14 @@ namespace glissade
                    eta_high = open_end ? 1.5 : 1.;
       {
         const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
-        const auto          image = [&](const Point<2> &y) {
-          const auto cross2 = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
-            return u[0] * v[1] - u[1] * v[0];
-          };
+        const auto cross2 = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
+          return u[0] * v[1] - u[1] * v[0];
+        };
+        const auto image = [&](const Point<2> &y) {
           const Tensor<1, 2> r = xa - y, dx = xb - xa, dn = nb - na;
-          const double       A = cross2(dx, dn);
-          const double       B = cross2(r, dn) + cross2(dx, na);
-          const double       C = cross2(r, na);
-          double             t = -C / B;
-          for (unsigned int it = 0; it < 20 && std::isfinite(t); ++it)
-            {
-              const double step = (A * t * t + B * t + C) / (2. * A * t + B);
-              t -= step;
-              if (std::abs(step) < 1e-15)
-                break;
-            }
-          return t;
+          return root_near_linear(cross2(dx, dn),
+                                  cross2(r, dn) + cross2(dx, na),
+                                  cross2(r, na));
         };
         const double sc = image(yc + eta_low * (yd - yc)),
                      sd = image(yc + eta_high * (yd - yc));
@@ -408,27 +452,20 @@ namespace glissade
       // The local variables: the slave points of both nodal normals, then
       // the master segment's nodes.
       std::map<unsigned int, unsigned int> local; // slave point -> local
-      std::array<std::pair<unsigned int, types::global_dof_index>,
-                 n_mortar_variables>
-                             dofs{};
-      std::vector<DualPoint> coordinates;
-      const auto             add_point = [&](const SidePoint &p) {
-        const unsigned int l = coordinates.size();
-        const Point<2>     x = position(p);
-        coordinates.push_back({MortarDual::variable(x[0], 2 * l),
-                               MortarDual::variable(x[1], 2 * l + 1)});
-        dofs[2 * l]     = {p.body, p.dofs[0]};
-        dofs[2 * l + 1] = {p.body, p.dofs[1]};
-        return l;
-      };
+      LocalVariables                       variables;
       for (const unsigned int j : {a, b})
         for (const unsigned int g : faces_of_point[j])
           for (const unsigned int p : faces[g])
             if (!local.count(p))
-              local[p] = add_point(slave_points[p]);
-      const unsigned int lc     = add_point(master_points[c]);
-      const unsigned int ld     = add_point(master_points[d]);
-      const unsigned int n_used = 2 * coordinates.size();
+              local[p] =
+                variables.add(0, slave_points[p].dofs, slave_positions[p]);
+      const unsigned int lc =
+        variables.add(1, master_points[c].dofs, master_positions[c]);
+      const unsigned int ld =
+        variables.add(1, master_points[d].dofs, master_positions[d]);
+      const unsigned int            n_used      = variables.n_used();
+      const auto                   &dofs        = variables.dofs;
+      const std::vector<DualPoint> &coordinates = variables.coordinates;
 
       const DualPoint &Xa = coordinates[local.at(a)];
       const DualPoint &Xb = coordinates[local.at(b)];
@@ -446,17 +483,8 @@ namespace glissade
         const MortarDual A = cross(dX, dN);
         const MortarDual B = cross(r, dN) + cross(dX, Na);
         const MortarDual C = cross(r, Na);
-        double           s = -C.value / B.value;
+        const double     s = root_near_linear(A.value, B.value, C.value);
         found              = std::isfinite(s);
-        for (unsigned int it = 0; it < 20 && found; ++it)
-          {
-            const double step = (A.value * s * s + B.value * s + C.value) /
-                                (2. * A.value * s + B.value);
-            s -= step;
-            found = std::isfinite(s);
-            if (std::abs(step) < 1e-15)
-              break;
-          }
         return s - (A * s * s + B * s + C) / (2. * s * A + B);
       };
       bool             found_c = false, found_d = false;
@@ -477,26 +505,19 @@ namespace glissade
 
       // Gauss-Legendre, four points on [0, 1]: exact for the flat case
       // (degree 2) and ample for the rational integrand of curved ones.
-      static const double gauss_points[4]  = {0.0694318442029737,
-                                              0.3300094782075719,
-                                              0.6699905217924281,
-                                              0.9305681557970263};
-      static const double gauss_weights[4] = {0.1739274225687269,
-                                              0.3260725774312731,
-                                              0.3260725774312731,
-                                              0.1739274225687269};
-      const MortarDual    length           = sqrt(dX.x * dX.x + dX.y * dX.y);
-      MortarDual          Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
+      static const QGauss<1> gauss(4);
+      const MortarDual       length = sqrt(dX.x * dX.x + dX.y * dX.y);
+      MortarDual             Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
       // On a smooth curve: int Phi y and int Phi m (the curve's points and
-      // their motion) per component, and, per Gauss point, the curve's
-      // weights and what the parameter's change does to each node's dofs.
+      // their motion) per component, and the curve's weights at each Gauss
+      // point (which map the variables 12 + 2q, 13 + 2q to the nodes).
       MortarDual                             Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
       MortarDual                             ma[2] = {0., 0.}, mb[2] = {0., 0.};
       MasterCurve::NodeWeightsAndDerivatives weights[4];
       for (unsigned int q = 0; q < 4; ++q)
         {
-          const MortarDual s = lower + gauss_points[q] * (upper - lower);
-          const MortarDual w = gauss_weights[q] * (upper - lower) * length;
+          const MortarDual s = lower + gauss.point(q)[0] * (upper - lower);
+          const MortarDual w = gauss.weight(q) * (upper - lower) * length;
           const DualPoint  x = Xa + s * dX;
           const DualPoint  n = Na + s * dN;
           // The master point on the normal: (y(eta) - x) x n = 0.
@@ -504,9 +525,7 @@ namespace glissade
           if (curve)
             {
               // Newton on the curve in plain numbers, then one step on the
-              // Duals for the slave's part of d eta; variable 12 + q stands
-              // for the rest, the curve's nodes at fixed slave:
-              // d eta = -sum phi_k dX_k x n / (c' x n).
+              // Duals: (c(eta) - x) x n = 0 with c moved by its nodes.
               double             t = std::min(1., std::max(0., eta.value));
               MasterCurve::Point c0{}, c1{}, c2{};
               for (unsigned int it = 0; it < 30; ++it)
@@ -517,9 +536,13 @@ namespace glissade
                   const double dF   = c1[0] * n.y.value - c1[1] * n.x.value;
                   const double step = F / dF;
                   t -= step;
-                  if (std::abs(step) < 1e-15)
+                  if (!std::isfinite(t) || std::abs(step) < 1e-15)
                     break;
                 }
+              // (the normal runs along the curve: no master point here,
+              // and the segment pair adds nothing)
+              if (!std::isfinite(t))
+                return;
               curve->evaluate(i, t, c0, c1, c2);
               // The curve point at t, moved by its nodes: C + dC_q, with
               // dC_q = sum_k phi_k(t) dX_k the variables 12 + 2q, 13 + 2q.
@@ -602,40 +625,24 @@ namespace glissade
     Mortar::integrate_on_obstacle(const unsigned int f)
     {
       const unsigned int a = faces[f][0], b = faces[f][1];
-      std::array<std::pair<unsigned int, types::global_dof_index>,
-                 n_mortar_variables>
-                dofs{};
-      DualPoint X[2];
-      for (unsigned int l = 0; l < 2; ++l)
-        {
-          const SidePoint &p = slave_points[faces[f][l]];
-          const Point<2>  &x = slave_positions[faces[f][l]];
-          X[l]               = {MortarDual::variable(x[0], 2 * l),
-                                MortarDual::variable(x[1], 2 * l + 1)};
-          dofs[2 * l]        = {0, p.dofs[0]};
-          dofs[2 * l + 1]    = {0, p.dofs[1]};
-        }
+      LocalVariables     variables;
+      for (const unsigned int p : faces[f])
+        variables.add(0, slave_points[p].dofs, slave_positions[p]);
+      const auto      &dofs   = variables.dofs;
+      const DualPoint  X[2]   = {variables.coordinates[0],
+                                 variables.coordinates[1]};
       const DualPoint  dX     = X[1] - X[0];
       const MortarDual length = sqrt(dX.x * dX.x + dX.y * dX.y);
 
       // Five Gauss points: the obstacle's points are not polynomial in s.
-      static const double gauss_points[5]  = {0.0469100770306680,
-                                              0.2307653449471585,
-                                              0.5,
-                                              0.7692346550528415,
-                                              0.9530899229693319};
-      static const double gauss_weights[5] = {0.1184634425280945,
-                                              0.2393143352496832,
-                                              0.2844444444444444,
-                                              0.2393143352496832,
-                                              0.1184634425280945};
-      MortarDual          Da(0.), Db(0.);
-      MortarDual          Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
-      MortarDual          ma[2] = {0., 0.}, mb[2] = {0., 0.};
+      static const QGauss<1> gauss(5);
+      MortarDual             Da(0.), Db(0.);
+      MortarDual             Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
+      MortarDual             ma[2] = {0., 0.}, mb[2] = {0., 0.};
       for (unsigned int q = 0; q < 5; ++q)
         {
-          const double       s = gauss_points[q];
-          const MortarDual   w = gauss_weights[q] * length;
+          const double       s = gauss.point(q)[0];
+          const MortarDual   w = gauss.weight(q) * length;
           const DualPoint    x = X[0] + MortarDual(s) * dX;
           const SurfacePoint point =
             surface.project(Point<2>(x.x.value, x.y.value));
@@ -671,14 +678,15 @@ namespace glissade
               mb[c] += w * phib * m[c];
             }
         }
-      state[a].D.add(Da, dofs, 4);
-      state[b].D.add(Db, dofs, 4);
+      const unsigned int n_used = variables.n_used();
+      state[a].D.add(Da, dofs, n_used);
+      state[b].D.add(Db, dofs, n_used);
       for (unsigned int c = 0; c < 2; ++c)
         {
-          state[a].Y[c].add(Ya[c], dofs, 4);
-          state[b].Y[c].add(Yb[c], dofs, 4);
-          state[a].moved[c].add(ma[c], dofs, 4);
-          state[b].moved[c].add(mb[c], dofs, 4);
+          state[a].Y[c].add(Ya[c], dofs, n_used);
+          state[b].Y[c].add(Yb[c], dofs, n_used);
+          state[a].moved[c].add(ma[c], dofs, n_used);
+          state[b].moved[c].add(mb[c], dofs, n_used);
         }
     }
 
@@ -697,37 +705,26 @@ namespace glissade
         {
           NodeState &s = state[j];
           s            = NodeState();
-          s.x          = position(slave_points[j]);
+          s.x          = slave_positions[j];
           s.motion     = motion(slave_points[j]);
 
           // The nodal normal and its turn, d theta = -t . dn.
           std::map<unsigned int, unsigned int> local;
-          std::array<std::pair<unsigned int, types::global_dof_index>,
-                     n_mortar_variables>
-                                 dofs{};
-          std::vector<DualPoint> coordinates;
+          LocalVariables                       variables;
           for (const unsigned int g : faces_of_point[j])
             for (const unsigned int p : faces[g])
               if (!local.count(p))
-                {
-                  const unsigned int l = coordinates.size();
-                  const Point<2>     x = position(slave_points[p]);
-                  coordinates.push_back(
-                    {MortarDual::variable(x[0], 2 * l),
-                     MortarDual::variable(x[1], 2 * l + 1)});
-                  dofs[2 * l]     = {0, slave_points[p].dofs[0]};
-                  dofs[2 * l + 1] = {0, slave_points[p].dofs[1]};
-                  local[p]        = l;
-                }
+                local[p] =
+                  variables.add(0, slave_points[p].dofs, slave_positions[p]);
           if (faces_of_point[j].empty())
             continue;
-          const DualPoint n = nodal_normal(j, coordinates, local);
+          const DualPoint n = nodal_normal(j, variables.coordinates, local);
           s.normal          = Tensor<1, 2>({n.x.value, n.y.value});
           s.tangent         = Tensor<1, 2>({s.normal[1], -s.normal[0]});
           Accumulated theta;
           theta.add(-(s.tangent[0] * n.x + s.tangent[1] * n.y),
-                    dofs,
-                    2 * coordinates.size());
+                    variables.dofs,
+                    variables.n_used());
           s.rotation_row = theta.gradient;
         }
 
