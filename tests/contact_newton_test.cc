@@ -183,3 +183,8 @@ GLISSADE_TEST(contact_newton_rate_rigid_disk_coulomb)
 {
   check_rigid("disk", 0.3);
 }
+
+GLISSADE_TEST(contact_newton_rate_mortar_hermite)
+{
+  check_rings("hermite", "mortar");
+}

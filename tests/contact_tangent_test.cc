@@ -53,7 +53,8 @@ namespace
       " set Slave body = upper\n set Slave boundary = bottom\n"
       " set Alert distance = 10\n";
     // mortar_line, mortar_disk: mortar against those obstacles;
-    // mortar_bspline: on the B-spline master.
+    // mortar_bspline, mortar_bspline_spline, mortar_hermite: on the
+    // B-spline master (each force transfer) and the Hermite master.
     const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
     const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
     if (on_obstacle_mortar)
@@ -81,7 +82,7 @@ namespace
       }
     else
       {
-        const bool hermite = master == "hermite";
+        const bool hermite = kind == "hermite";
         text += "subsection Scene\n set Bodies = upper, lower\n"
                 " set Contact pairs = interface\nend\n";
         // (the lower block held, so that no motion of the pair is free)
@@ -104,6 +105,10 @@ namespace
             "\n";
         else if (master == "mortar_bspline")
           contact += " set Surface = bspline\n";
+        else if (master == "mortar_bspline_spline")
+          contact += " set Surface = bspline\n set Force transfer = spline\n";
+        else if (master == "mortar_hermite")
+          contact += " set Surface = hermite\n";
         else if (master == "mortar")
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
         else
@@ -341,6 +346,9 @@ CONTACT_TANGENT_TEST(mortar, stick)
 CONTACT_TANGENT_TEST(mortar, slip)
 CONTACT_TANGENT_TEST(mortar_bspline, frictionless)
 CONTACT_TANGENT_TEST(mortar_bspline, slip)
+CONTACT_TANGENT_TEST(mortar_bspline_spline, slip)
+CONTACT_TANGENT_TEST(mortar_hermite, frictionless)
+CONTACT_TANGENT_TEST(mortar_hermite, slip)
 CONTACT_TANGENT_TEST(mortar_line, slip)
 CONTACT_TANGENT_TEST(mortar_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_disk, stick)

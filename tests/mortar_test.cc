@@ -53,19 +53,21 @@ namespace
                  "  set Fixed = left: x; bottom: y";
     const std::string slave  = upper_is_slave ? "upper" : "lower";
     const std::string master = upper_is_slave ? "lower" : "upper";
+    // A Hermite master surface is the edge of a body of Hermite elements.
+    const std::string master_element = surface == "hermite" ? "hermite" : "q1";
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
            rectangle_body("upper",
                           "0, 0.5",
                           "1, 1",
                           std::to_string(upper_cells) + ", 3",
-                          "q1",
+                          upper_is_slave ? "q1" : master_element,
                           upper_conditions) +
            rectangle_body("lower",
                           "0, 0",
                           "1, 0.5",
                           std::to_string(lower_cells) + ", 4",
-                          "q1",
+                          upper_is_slave ? master_element : "q1",
                           lower_conditions) +
            "subsection Contact interface\n set Slave body = " + slave +
            "\n set Slave boundary = " + (upper_is_slave ? "bottom" : "top") +
@@ -161,9 +163,10 @@ GLISSADE_TEST(mortar_patch_test)
        std::vector<std::pair<std::string, std::string>>{
          {"condensed", "faceted"},
          {"sparse", "faceted"},
-         {"condensed", "bspline"}})
+         {"condensed", "bspline"},
+         {"condensed", "hermite"}})
     for (const bool friction : {false, true})
-      if (!friction || surface == "faceted")
+      if (!friction || surface != "bspline")
         for (const auto &[upper_cells, lower_cells] :
              std::vector<std::pair<unsigned int, unsigned int>>{{5, 8},
                                                                 {7, 13}})

@@ -94,13 +94,18 @@ namespace glissade
       }
     else if (variant == "bspline")
       overrides.push_back("Contact interface/Surface=bspline");
-    else if (variant == "mortar" || variant == "mortar-bspline")
+    else if (variant == "mortar" || variant == "mortar-bspline" ||
+             variant == "mortar-hermite")
       {
-        // Mortar over the faceted master (the element edges) or over the
-        // closed B-spline.
+        // Mortar over the faceted master (the element edges), the closed
+        // B-spline, or the Hermite outer ring's C1 edge.
         overrides.push_back(std::string("Contact interface/Surface=") +
-                            (variant == "mortar" ? "faceted" : "bspline"));
+                            (variant == "mortar"         ? "faceted" :
+                             variant == "mortar-bspline" ? "bspline" :
+                                                           "hermite"));
         overrides.push_back("Contact interface/Discretisation=mortar");
+        if (variant == "mortar-hermite")
+          overrides.push_back("Body outer/Element/Space=hermite");
       }
     else if (variant == "bspline-spline")
       {
@@ -117,7 +122,8 @@ namespace glissade
         "Case 3 study/Variants",
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
-          "bspline-spline, hermite, mortar, mortar-bspline)");
+          "bspline-spline, hermite, mortar, mortar-bspline, "
+          "mortar-hermite)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -290,13 +296,14 @@ namespace glissade
                       "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
                         "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
-                        "mortar|mortar-bspline")),
+                        "mortar|mortar-bspline|mortar-hermite")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
-                      "and kept segment (doc/contact.md); mortar and "
-                      "mortar-bspline the mortar discretisation over the "
-                      "faceted master and over the B-spline.");
+                      "and kept segment (doc/contact.md); mortar, "
+                      "mortar-bspline and mortar-hermite the mortar "
+                      "discretisation over the faceted master, the B-spline "
+                      "and the Hermite outer ring's edge.");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

@@ -18,6 +18,13 @@ y = 1 driven down by 0.0055, frictionless on the rigid flat y = 0.
 Reference: Hertz's plane strain cylinder at the load P that the computed
 contact carries.
 
+The contact patch test (issue 36): two blocks on non-matching meshes
+(tests/mortar_test.cc, patch_scene), E = 1000, nu = 0.3, plane strain,
+the upper [0, 1] x [0.5, 1] on the lower [0, 1] x [0, 0.5], frictionless
+(the upper top pushed down, the right sides free) or sticking (every
+outer side moved homogeneously). Reference: the uniform stress, each slave
+node's traction equal to the applied one (patch_figures).
+
 The module needs only numpy; hertz_mesh needs gmsh, which lives in
 Debian's /usr/bin/python3 (it runs itself there when imported elsewhere).
 
@@ -331,6 +338,47 @@ def hertz_edge(x, force):
         return 0.0
     k = loaded[-1]
     return float(x[k] + (x[k + 1] - x[k]) / 2) if k + 1 < len(x) else float(x[k])
+
+
+# ---------------------------------------------------------- patch test
+PATCH_E = 1000.0
+PATCH_NU = 0.3
+PATCH_DRIVE = 0.02      # the upper top's downward displacement
+PATCH_SHEAR = 0.004     # friction: u = (0.004 y, -0.02 y) on every side
+PATCH_MU = 0.5          # the friction coefficient (shear / pressure 0.057)
+PATCH_MESHES = ((5, 8), (7, 13))     # cells along x, upper on lower
+PATCH_LAYERS = {"upper": 3, "lower": 4}   # cells across each block
+
+
+def patch_figures(x, force, tributary, applied, in_contact):
+    """(largest, largest_interior, n) of the patch test, as glissade's
+    test (mortar_patch_test) reads it:
+
+    x           the slave nodes' abscissae,
+    force       each one's contact force vector (n, 2) on the slave,
+    tributary   each one's tributary length (the integral of its hat
+                function on the slave boundary),
+    applied     the traction vector the slave should carry,
+    in_contact  which nodes count (glissade: active; a peer: pressed).
+
+    largest = max |force / tributary - applied| / |applied| over the nodes
+    in contact; largest_interior the same without the interface's two end
+    nodes (with friction both blocks' ends are supported: glissade's mortar
+    leaves them inactive, a peer may load them); n the nodes in contact.
+    """
+    order = np.argsort(np.asarray(x, dtype=float))
+    force = np.asarray(force, dtype=float)[order]
+    tributary = np.asarray(tributary, dtype=float)[order]
+    counted = np.asarray(in_contact, dtype=bool)[order]
+    applied = np.asarray(applied, dtype=float)
+    deviation = (np.linalg.norm(force / tributary[:, None] - applied, axis=1)
+                 / np.linalg.norm(applied))
+    interior = counted.copy()
+    interior[[0, -1]] = False
+
+    def largest(among):
+        return float(deviation[among].max()) if among.any() else math.nan
+    return largest(counted), largest(interior), int(counted.sum())
 
 
 def _write_hertz_mesh_with_gmsh(h_contact, path):

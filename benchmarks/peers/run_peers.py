@@ -11,13 +11,15 @@ against the closed form (Lame for the rings, Hertz for the disk).
     /usr/bin/python3 benchmarks/peers/run_peers.py [--problems rings,hertz]
         [--rings 40,80,160] [--hertz 0.01,0.005,0.0025,0.00125]
         (--problems sphere: Hertz's sphere, axisymmetric, on the --hertz
-        meshes)
+        meshes; --problems patch: the contact patch test, two blocks on
+        non-matching meshes, [--patch 5x8,7x13] [--patch-order K])
         [--repeats 3] [--codes glissade,getfem,calculix]
         [--masters bspline,faceted,hermite] [--plot peers.png]
         [--glissade build/glissade] [--work /tmp/glissade-peers]
 
 Every row also goes to WORK/peers.csv; --plot draws the times and the
-ratios against the dofs as a PNG (Debian's matplotlib).
+ratios against the dofs as a PNG (Debian's matplotlib). The patch test's
+rows also go to WORK/patch.csv, with each program's deviations.
 
 It needs the peers (README.md): GetFEM's Python module and gmsh's live in
 Debian's /usr/bin/python3, CalculiX is `ccx`. Nothing here is a test: the
@@ -147,6 +149,62 @@ def glissade_hertz_result(out):
     return {"dofs": glissade_dofs(out), "P": P, "p0": p0, "a": a}
 
 
+PATCH_MOTION = (f"xy: {problems.PATCH_SHEAR!r}*y*t, "
+                f"-{problems.PATCH_DRIVE!r}*y*t")
+
+
+def glissade_patch_command(glissade, case, discretisation, out):
+    """glissade_patch.prm for one case (upper cells, lower cells, slave
+    body, friction): the meshes, the slave side and, with friction, the
+    homogeneous motion of every outer side instead of the frictionless
+    supports."""
+    upper, lower, slave, friction = case
+    master = "lower" if slave == "upper" else "upper"
+    side = {"upper": "bottom", "lower": "top"}
+    command = [glissade, os.path.join(HERE, "glissade_patch.prm"),
+               "--set", "Body upper/Mesh/Subdivisions="
+                        f"{upper}, {problems.PATCH_LAYERS['upper']}",
+               "--set", "Body lower/Mesh/Subdivisions="
+                        f"{lower}, {problems.PATCH_LAYERS['lower']}",
+               "--set", f"Contact interface/Slave body={slave}",
+               "--set", f"Contact interface/Slave boundary={side[slave]}",
+               "--set", f"Contact interface/Master body={master}",
+               "--set", f"Contact interface/Master boundary={side[master]}",
+               "--set", f"Contact interface/Discretisation={discretisation}",
+               "--set", f"Output/Directory={out}"]
+    if friction:
+        for body, held in (("upper", "top"), ("lower", "bottom")):
+            conditions = f"Body {body}/Boundary conditions/"
+            command += ["--set", conditions + "Fixed=",
+                        "--set", conditions + "Prescribed displacement=" +
+                        "; ".join(f"{s}: {PATCH_MOTION}"
+                                  for s in (held, "left", "right"))]
+        command += ["--set", "Contact interface/Friction coefficient="
+                             f"{problems.PATCH_MU!r}"]
+    return command
+
+
+def glissade_patch_result(out, slave):
+    """The patch test's figures as tests/mortar_test.cc reads them: each
+    active slave node's force over its tributary length (the contact
+    table) against the top support's force over the top's current width
+    (history.csv), minus it on the upper block's bottom."""
+    last = read_csv(os.path.join(out, "history.csv"))[-1]
+    width = 1 + float(last["upper_ux_1_1"]) - float(last["upper_ux_0_1"])
+    sign = -1 if slave == "upper" else 1
+    applied = [sign * float(last["upper_Rx_top"]) / width,
+               sign * float(last["upper_Ry_top"]) / width]
+    table = read_csv(last_contact_table(out, "interface"))
+    error, interior, n = problems.patch_figures(
+        [float(row["X"]) for row in table],
+        [(float(row["fx"]), float(row["fy"])) for row in table],
+        [float(row["tributary_length"]) for row in table], applied,
+        [row["active"] == "1" for row in table])
+    return {"dofs": glissade_dofs(out), "applied": applied, "error": error,
+            "error_interior": interior, "n_checked": n,
+            "n_slave": len(table)}
+
+
 # -------------------------------------------------------------------- rows
 def fresh_folder(args, name):
     work = os.path.join(args.work, name)
@@ -268,6 +326,60 @@ def sphere_row(args, h):
     return f"sphere h={h}", times, results, errors
 
 
+def patch_row(args, case):
+    """The contact patch test, one mesh pair, slave side and contact law:
+    glissade's node-to-segment and mortar, GetFEM's nodal and integral
+    contact between non-matching meshes (CalculiX has no row here)."""
+    upper, lower, slave, friction = case
+    law = "friction" if friction else "frictionless"
+    work = fresh_folder(args, f"patch-{upper}x{lower}-{slave}-{law}")
+    for code, variant in (("glissade", "glissade-mortar"),
+                          ("getfem", "getfem-integral")):
+        if code in args.codes and variant not in args.codes:
+            args.codes.append(variant)
+    getfem = [PYTHON, os.path.join(HERE, "getfem_patch.py"), str(upper),
+              str(lower), "--slave", slave]
+    if friction:
+        getfem.append("--friction")
+    runs = {
+        "glissade": (glissade_patch_command(
+            args.glissade, case, "node-to-segment",
+            os.path.join(work, "glissade")), work),
+        "glissade-mortar": (glissade_patch_command(
+            args.glissade, case, "mortar",
+            os.path.join(work, "glissade-mortar")), work),
+        "getfem": (getfem + ["--contact", "nodal", "--out",
+                             os.path.join(work, "getfem")], work),
+        "getfem-integral": (getfem + ["--out",
+                                      os.path.join(work, "getfem-integral")],
+                            work),
+    }
+    readers = {
+        "glissade": lambda: glissade_patch_result(
+            os.path.join(work, "glissade"), slave),
+        "glissade-mortar": lambda: glissade_patch_result(
+            os.path.join(work, "glissade-mortar"), slave),
+        "getfem": lambda: last_json(os.path.join(work, "getfem.log")),
+        "getfem-integral": lambda: last_json(
+            os.path.join(work, "getfem-integral.log")),
+    }
+    # The integral brick with a finer rule on the slave faces: its kinked
+    # projected master functions integrated more exactly.
+    for order in args.patch_order:
+        code = f"getfem-integral-o{order}"
+        runs[code] = (getfem + ["--contact-order", str(order), "--out",
+                                os.path.join(work, code)], work)
+        readers[code] = lambda code=code: last_json(
+            os.path.join(work, f"{code}.log"))
+        if "getfem" in args.codes and code not in args.codes:
+            args.codes.append(code)
+    times, results = run_and_read(args, work, runs, readers)
+    errors = {code: (r["error"], r["error_interior"])
+              for code, r in results.items()}
+    return (f"patch {upper} on {lower}, slave {slave}, {law}", times,
+            results, errors)
+
+
 def read_calculix(arguments):
     output = subprocess.run([PYTHON, os.path.join(HERE, "calculix.py"),
                              "read"] + arguments, check=True,
@@ -289,6 +401,7 @@ def race(runs, repeats, work):
 
 
 RECORDS = []  # (problem, row label, program, dofs, median wall time)
+PATCH_RECORDS = []  # the patch rows: (label, times, results, errors)
 
 
 def print_row(label, times, results, errors, problem):
@@ -301,6 +414,11 @@ def print_row(label, times, results, errors, problem):
         if problem == "rings":
             figure = (f"u_r(2) {100 * error[0]:+.3f} %, interface pressure "
                       f"{100 * error[1]:+.3f} %")
+        elif problem == "patch":
+            figure = (f"largest deviation {100 * error[0]:.2g} % "
+                      f"({results[code]['n_checked']} of "
+                      f"{results[code]['n_slave']} slave nodes), without "
+                      f"the two ends {100 * error[1]:.2g} %")
         else:
             figure = (f"P {results[code]['P']:.4f}, p0 {100 * error[0]:+.2f} %,"
                       f" a {100 * error[1]:+.2f} %")
@@ -319,9 +437,20 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--problems", default="rings,hertz",
                         help="rings, hertz (plane strain), sphere (Hertz's "
-                             "sphere, axisymmetric: glissade and CalculiX)")
+                             "sphere, axisymmetric: glissade and CalculiX), "
+                             "patch (the contact patch test: glissade and "
+                             "GetFEM)")
     parser.add_argument("--rings", default="40,80,160")
     parser.add_argument("--hertz", default="0.01,0.005,0.0025,0.00125")
+    parser.add_argument("--patch", default=",".join(
+                            f"{upper}x{lower}"
+                            for upper, lower in problems.PATCH_MESHES),
+                        help="the patch test's meshes, upper x lower cells "
+                             "along the interface; each is run with either "
+                             "block as slave, frictionless and sticking")
+    parser.add_argument("--patch-order", default="",
+                        help="also GetFEM's integral brick with these Gauss "
+                             "orders on the contact faces (e.g. 9,19)")
     parser.add_argument("--repeats", type=int, default=3)
     parser.add_argument("--codes", default="glissade,getfem,calculix",
                         help="the programs to run (GetFEM takes more than "
@@ -338,6 +467,7 @@ def main():
     args.glissade = os.path.abspath(args.glissade)
     args.codes = args.codes.split(",")
     args.masters = args.masters.split(",")
+    args.patch_order = [int(v) for v in args.patch_order.split(",") if v]
     if "calculix" in args.codes and not shutil.which("ccx"):
         sys.exit("ccx not found: apt-get install calculix-ccx (README.md)")
     selected = args.problems.split(",")
@@ -351,8 +481,18 @@ def main():
     if "sphere" in selected:
         for h in (float(v) for v in args.hertz.split(",")):
             print_row(*sphere_row(args, h), "sphere")
+    if "patch" in selected:
+        for meshes in args.patch.split(","):
+            upper, lower = (int(v) for v in meshes.split("x"))
+            for slave in ("upper", "lower"):
+                for friction in (False, True):
+                    row = patch_row(args, (upper, lower, slave, friction))
+                    print_row(*row, "patch")
+                    PATCH_RECORDS.append(row)
     os.makedirs(args.work, exist_ok=True)
     write_records(os.path.join(args.work, "peers.csv"))
+    if PATCH_RECORDS:
+        write_patch_records(os.path.join(args.work, "patch.csv"))
     if args.plot:
         plot_records(os.path.abspath(args.plot))
 
@@ -363,6 +503,19 @@ def write_records(path):
         out.writerow(["problem", "row", "program", "dofs", "wall_s"])
         for record in RECORDS:
             out.writerow(record)
+
+
+def write_patch_records(path):
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["row", "program", "dofs", "wall_s", "n_checked",
+                      "n_slave", "largest_deviation",
+                      "largest_deviation_without_ends"])
+        for label, times, results, errors in PATCH_RECORDS:
+            for code in times:
+                out.writerow([label, code, results[code]["dofs"],
+                              times[code], results[code]["n_checked"],
+                              results[code]["n_slave"], *errors[code]])
 
 
 def plot_records(path):

@@ -158,6 +158,77 @@ namespace glissade
       }
     };
 
+    /**
+     * The tangent's terms with proportional rows, merged: load_1 (x) row_1
+     * + load_2 (x) r row_1 = (load_1 + r load_2) (x) row_1. A curve's force
+     * weights come in such families (a node's two components; a Hermite
+     * end's four derivative dofs, T_k times one integral), and every term
+     * costs the condensed step one more solve with the bodies' tangents.
+     * (Proportional to round-off: rows that differ by more are kept apart.)
+     */
+    void
+    merge_proportional_terms(std::vector<ContactLinearization::Term> &terms)
+    {
+      std::vector<ContactLinearization::Term> merged;
+      for (auto &term : terms)
+        {
+          merge_entries(term.row);
+          if (term.row.empty() || term.load.empty())
+            continue;
+          const auto largest_entry = [](const DofVector &row) {
+            return std::max_element(row.begin(),
+                                    row.end(),
+                                    [](const auto &a, const auto &b) {
+                                      return std::abs(a.value) <
+                                             std::abs(b.value);
+                                    }) -
+                   row.begin();
+          };
+          const auto   i      = largest_entry(term.row);
+          const double top    = std::abs(term.row[i].value);
+          bool         joined = false;
+          for (auto &kept : merged)
+            {
+              if (kept.row.size() != term.row.size() ||
+                  kept.row[i].body != term.row[i].body ||
+                  kept.row[i].dof != term.row[i].dof || kept.row[i].value == 0.)
+                continue;
+              const double ratio        = term.row[i].value / kept.row[i].value;
+              bool         proportional = true;
+              for (std::size_t k = 0; proportional && k < term.row.size(); ++k)
+                proportional =
+                  kept.row[k].body == term.row[k].body &&
+                  kept.row[k].dof == term.row[k].dof &&
+                  std::abs(term.row[k].value - ratio * kept.row[k].value) <=
+                    1e-12 * top;
+              if (!proportional)
+                continue;
+              // The larger row stays, so that no load is scaled up: a
+              // Hermite end whose reference tangent lies along an axis has
+              // a row of round-off beside its other component's.
+              if (std::abs(ratio) <= 1.)
+                for (const auto &e : term.load)
+                  kept.load.push_back({e.body, e.dof, ratio * e.value});
+              else
+                {
+                  for (auto &e : kept.load)
+                    e.value /= ratio;
+                  kept.load.insert(kept.load.end(),
+                                   term.load.begin(),
+                                   term.load.end());
+                  kept.row = std::move(term.row);
+                }
+              joined = true;
+              break;
+            }
+          if (!joined)
+            merged.push_back(std::move(term));
+        }
+      for (auto &term : merged)
+        merge_entries(term.load);
+      terms = std::move(merged);
+    }
+
     /** c a, appended to `out`. */
     void
     add_scaled(DofVector &out, const double c, const DofVector &a)
@@ -234,6 +305,16 @@ namespace glissade
       integrate(unsigned int f, unsigned int i);
 
       /**
+       * Where the line through x along n meets curve segment i, by Newton
+       * from `start`; NaN if Newton leaves.
+       */
+      double
+      curve_parameter(unsigned int     i,
+                      const DualPoint &x,
+                      const DualPoint &n,
+                      double           start) const;
+
+      /**
        * Adds the integrals of slave face f against a rigid obstacle: the
        * obstacle's points y(x) closest to the face's points, and the
        * motion of its material there since the increment began.
@@ -253,11 +334,13 @@ namespace glissade
       const MasterChain   *chain;
       const MasterSurface &surface;
       /**
-       * A smooth master (B-spline) as the integration geometry; nullptr
-       * for the faceted one (its straight segments) and for obstacles.
+       * A smooth master (B-spline, Hermite) as the integration geometry;
+       * nullptr for the faceted one (its straight segments) and for
+       * obstacles.
        */
-      const MasterCurve *curve = nullptr;
-      const double       search_distance;
+      const CurveSurface *curve_surface = nullptr;
+      const MasterCurve  *curve         = nullptr;
+      const double        search_distance;
 
       std::vector<SidePoint>               slave_points, master_points;
       std::map<unsigned int, unsigned int> point_of_vertex;
@@ -275,6 +358,12 @@ namespace glissade
         DofVector                           rotation_row; // d theta / dU
         Accumulated                         D;
         std::map<unsigned int, Accumulated> M; // by master point
+        /**
+         * On a smooth curve, int Phi_j w by (master dof, component), w the
+         * curve's force weights there: where the reaction goes.
+         */
+        std::map<std::pair<types::global_dof_index, unsigned int>, Accumulated>
+          F;
         /**
          * Against a rigid obstacle or a smooth curve: int Phi_j y and
          * int Phi_j m (the obstacle's closest points or the curve's
@@ -299,10 +388,11 @@ namespace glissade
                    .master_chain() :
                 nullptr)
       , surface(context.surface)
-      , curve(context.master && context.description.surface != "faceted" ?
-                &dynamic_cast<const CurveSurface &>(context.surface)
-                   .master_curve() :
-                nullptr)
+      , curve_surface(context.master &&
+                          context.description.surface != "faceted" ?
+                        &dynamic_cast<const CurveSurface &>(context.surface) :
+                        nullptr)
+      , curve(curve_surface ? &curve_surface->master_curve() : nullptr)
       , search_distance(context.description.alert_distance)
     {
       for (const ContactNode &node : context.nodes)
@@ -509,62 +599,56 @@ namespace glissade
       const MortarDual       length = sqrt(dX.x * dX.x + dX.y * dX.y);
       MortarDual             Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
       // On a smooth curve: int Phi y and int Phi m (the curve's points and
-      // their motion) per component, and the curve's weights at each Gauss
-      // point (which map the variables 12 + 2q, 13 + 2q to the nodes).
-      MortarDual                             Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
-      MortarDual                             ma[2] = {0., 0.}, mb[2] = {0., 0.};
-      MasterCurve::NodeWeightsAndDerivatives weights[4];
+      // their motion) per component, the curve point's dof weights at each
+      // Gauss point (which map the variables 12 + 2q, 13 + 2q to the dofs),
+      // and the force weights' integrals int Phi w by (dof, component).
+      MortarDual Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
+      MortarDual ma[2] = {0., 0.}, mb[2] = {0., 0.};
+      std::array<std::vector<SurfaceWeight>, 4> kinematics;
+      std::map<std::pair<types::global_dof_index, unsigned int>,
+               std::array<MortarDual, 2>>
+        Fab;
       for (unsigned int q = 0; q < 4; ++q)
         {
-          const MortarDual s = lower + gauss.point(q)[0] * (upper - lower);
-          const MortarDual w = gauss.weight(q) * (upper - lower) * length;
-          const DualPoint  x = Xa + s * dX;
-          const DualPoint  n = Na + s * dN;
+          const MortarDual s    = lower + gauss.point(q)[0] * (upper - lower);
+          const MortarDual w    = gauss.weight(q) * (upper - lower) * length;
+          const DualPoint  x    = Xa + s * dX;
+          const DualPoint  n    = Na + s * dN;
+          const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
           // The master point on the normal: (y(eta) - x) x n = 0.
           MortarDual eta = cross(x - Yc, n) / cross(Yd - Yc, n);
           if (curve)
             {
-              // Newton on the curve in plain numbers, then one step on the
-              // Duals: (c(eta) - x) x n = 0 with c moved by its nodes.
-              double             t = std::min(1., std::max(0., eta.value));
-              MasterCurve::Point c0{}, c1{}, c2{};
-              for (unsigned int it = 0; it < 30; ++it)
-                {
-                  curve->evaluate(i, t, c0, c1, c2);
-                  const double F = (c0[0] - x.x.value) * n.y.value -
-                                   (c0[1] - x.y.value) * n.x.value;
-                  const double dF   = c1[0] * n.y.value - c1[1] * n.x.value;
-                  const double step = F / dF;
-                  t -= step;
-                  if (!std::isfinite(t) || std::abs(step) < 1e-15)
-                    break;
-                }
+              const double t = curve_parameter(i, x, n, eta.value);
               // (the normal runs along the curve: no master point here,
               // and the segment pair adds nothing)
               if (!std::isfinite(t))
                 return;
+              MasterCurve::Point c0{}, c1{}, c2{};
               curve->evaluate(i, t, c0, c1, c2);
-              // The curve point at t, moved by its nodes: C + dC_q, with
-              // dC_q = sum_k phi_k(t) dX_k the variables 12 + 2q, 13 + 2q.
+              // The curve point at t, moved by its dofs: C + dC_q, with
+              // dC_q = sum_w w du_w the variables 12 + 2q, 13 + 2q; one
+              // Newton step on the Duals from t: (c(eta) - x) x n = 0.
               const DualPoint C{MortarDual::variable(c0[0], 12 + 2 * q),
                                 MortarDual::variable(c0[1], 13 + 2 * q)};
               const DualPoint dC{MortarDual(c1[0]), MortarDual(c1[1])};
-              eta = t - cross(C - x, n) / cross(dC, n);
-              curve->weights_and_derivatives(i, t, weights[q]);
-              Tensor<1, 2> m0, m1;
-              for (const auto &e : weights[q])
+              eta           = t - cross(C - x, n) / cross(dC, n);
+              kinematics[q] = curve_surface->kinematics_at(i, t);
+              Tensor<1, 2>          m0, m1;
+              const Vector<double> &u  = master->displacement();
+              const Vector<double> &u0 = master->stored_displacement();
+              for (const SurfaceWeight &e : kinematics[q])
                 {
-                  const Tensor<1, 2> moved = motion(master_points[e.node]);
-                  m0 += e.value * moved;
-                  m1 += e.derivative * moved;
+                  const double moved = u(e.dof) - u0(e.dof);
+                  m0[e.component] += e.value * moved;
+                  m1[e.component] += e.derivative * moved;
                 }
-              // (the motion's change by the nodes is the point's, dC_q:
-              // the nodes' positions at the increment's start are fixed)
+              // (the motion's change by the dofs is the point's, dC_q:
+              // the dofs' values at the increment's start are fixed)
               const MortarDual deta = eta - t;
               const MortarDual y[2] = {C.x + c1[0] * deta, C.y + c1[1] * deta};
               const MortarDual m[2] = {m0[0] + (C.x - c0[0]) + m1[0] * deta,
                                        m0[1] + (C.y - c0[1]) + m1[1] * deta};
-              const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
               for (unsigned int k = 0; k < 2; ++k)
                 {
                   Ya[k] += w * phia * y[k];
@@ -572,51 +656,108 @@ namespace glissade
                   ma[k] += w * phia * m[k];
                   mb[k] += w * phib * m[k];
                 }
-              // The forces go to the underlying segment's two nodes, by
-              // the hat functions at the curve point's place along the
-              // chord (not at the curve's parameter, whose speed need not
-              // be uniform: on a straight master the two differ near its
-              // ends, and the patch test would fail by their difference).
-              const DualPoint Y{y[0], y[1]}, chord = Yd - Yc;
-              const DualPoint from_c = Y - Yc;
-              eta = (from_c.x * chord.x + from_c.y * chord.y) /
+              const auto add_force_weight =
+                [&](const types::global_dof_index dof,
+                    const unsigned int            component,
+                    const MortarDual             &weight) {
+                  auto &[to_a, to_b] = Fab[{dof, component}];
+                  to_a += w * phia * weight;
+                  to_b += w * phib * weight;
+                };
+              if (curve_surface->transfers_by_segment())
+                {
+                  // The underlying segment's two nodes, by the hat
+                  // functions at the curve point's place along the chord
+                  // (not at the curve's parameter, whose speed need not be
+                  // uniform: on a straight master the two differ near its
+                  // ends, and the patch test would fail by their
+                  // difference).
+                  const DualPoint  Y{y[0], y[1]}, chord = Yd - Yc;
+                  const DualPoint  from_c = Y - Yc;
+                  const MortarDual along =
+                    (from_c.x * chord.x + from_c.y * chord.y) /
                     (chord.x * chord.x + chord.y * chord.y);
+                  for (unsigned int k = 0; k < 2; ++k)
+                    {
+                      add_force_weight(master_points[c].dofs[k], k, 1. - along);
+                      add_force_weight(master_points[d].dofs[k], k, along);
+                    }
+                }
+              else
+                // The curve's own weights (the Hermite edge's, the
+                // spline's): the reaction's work conjugate to the gap.
+                for (const SurfaceWeight &e : curve_surface->forces_at(i, t))
+                  add_force_weight(e.dof,
+                                   e.component,
+                                   e.value + e.derivative * deta);
             }
-          const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
           Da += w * phia;
           Db += w * phib;
-          Mac += w * phia * (1. - eta);
-          Mad += w * phia * eta;
-          Mbc += w * phib * (1. - eta);
-          Mbd += w * phib * eta;
+          if (!curve)
+            {
+              Mac += w * phia * (1. - eta);
+              Mad += w * phia * eta;
+              Mbc += w * phib * (1. - eta);
+              Mbd += w * phib * eta;
+            }
         }
-      // On a curve, the curve points' variables go to its nodes' dofs.
+      // On a curve, the curve points' variables go to its dofs.
       const auto add = [&](Accumulated &to, const MortarDual &v) {
         to.add(v, dofs, n_used);
         if (curve)
           for (unsigned int q = 0; q < 4; ++q)
-            for (unsigned int k = 0; k < 2; ++k)
-              if (v.derivative[12 + 2 * q + k] != 0.)
-                for (const auto &e : weights[q])
-                  to.gradient.push_back(
-                    {1,
-                     master_points[e.node].dofs[k],
-                     v.derivative[12 + 2 * q + k] * e.value});
+            for (const SurfaceWeight &e : kinematics[q])
+              if (const double dv = v.derivative[12 + 2 * q + e.component];
+                  dv != 0.)
+                to.gradient.push_back({1, e.dof, dv * e.value});
       };
       add(state[a].D, Da);
       add(state[b].D, Db);
-      add(state[a].M[c], Mac);
-      add(state[a].M[d], Mad);
-      add(state[b].M[c], Mbc);
-      add(state[b].M[d], Mbd);
-      if (curve)
-        for (unsigned int k = 0; k < 2; ++k)
-          {
-            add(state[a].Y[k], Ya[k]);
-            add(state[b].Y[k], Yb[k]);
-            add(state[a].moved[k], ma[k]);
-            add(state[b].moved[k], mb[k]);
-          }
+      if (!curve)
+        {
+          add(state[a].M[c], Mac);
+          add(state[a].M[d], Mad);
+          add(state[b].M[c], Mbc);
+          add(state[b].M[d], Mbd);
+          return;
+        }
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          add(state[a].Y[k], Ya[k]);
+          add(state[b].Y[k], Yb[k]);
+          add(state[a].moved[k], ma[k]);
+          add(state[b].moved[k], mb[k]);
+        }
+      for (const auto &[key, weights] : Fab)
+        {
+          add(state[a].F[key], weights[0]);
+          add(state[b].F[key], weights[1]);
+        }
+    }
+
+
+
+    double
+    Mortar::curve_parameter(const unsigned int i,
+                            const DualPoint   &x,
+                            const DualPoint   &n,
+                            const double       start) const
+    {
+      // Newton on (c(t) - x) x n = 0 in plain numbers.
+      double             t = std::min(1., std::max(0., start));
+      MasterCurve::Point c0{}, c1{}, c2{};
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          curve->evaluate(i, t, c0, c1, c2);
+          const double F =
+            (c0[0] - x.x.value) * n.y.value - (c0[1] - x.y.value) * n.x.value;
+          const double dF   = c1[0] * n.y.value - c1[1] * n.x.value;
+          const double step = F / dF;
+          t -= step;
+          if (!std::isfinite(t) || std::abs(step) < 1e-15)
+            break;
+        }
+      return t;
     }
 
 
@@ -748,12 +889,14 @@ namespace glissade
           for (const unsigned int g : faces_of_point[j])
             tributary += 0.5 * position(slave_points[faces[g][0]])
                                  .distance(position(slave_points[faces[g][1]]));
-          s.coverage = chain == nullptr ? (s.uncovered ? 0. : 1.) :
-                       s.M.empty()      ? 0. :
-                                          s.D.value / tributary;
+          s.coverage = chain == nullptr           ? (s.uncovered ? 0. : 1.) :
+                       s.M.empty() && s.F.empty() ? 0. :
+                                                    s.D.value / tributary;
           merge_entries(s.D.gradient);
           for (auto &[k, M] : s.M)
             merge_entries(M.gradient);
+          for (auto &[key, F] : s.F)
+            merge_entries(F.gradient);
           for (unsigned int c = 0; c < 2; ++c)
             {
               merge_entries(s.Y[c].gradient);
@@ -806,13 +949,16 @@ namespace glissade
       l.slip = t * d;
 
       // The force of a unit reaction (and the weights of x - y): the slave
-      // node with 1, master point k with -m_k.
+      // node with 1, master point k with -m_k (on a curve, each force
+      // weight's dof with -F / D).
       const auto relative = [&](const Tensor<1, 2> &v, DofVector &out) {
         for (unsigned int c = 0; c < 2; ++c)
           out.push_back({0, node.dofs[c], v[c]});
         for (const auto &[k, M] : s.M)
           for (unsigned int c = 0; c < 2; ++c)
             out.push_back({1, master_points[k].dofs[c], -M.value / D * v[c]});
+        for (const auto &[key, F] : s.F)
+          out.push_back({1, key.first, -F.value / D * v[key.second]});
       };
       relative(n, l.normal_force);
       relative(t, l.tangential_force);
@@ -863,20 +1009,20 @@ namespace glissade
           turn.row = s.rotation_row;
           l.tangent_terms.push_back(std::move(turn));
         }
+      const auto change_of = [&](const Accumulated &weight) {
+        DofVector dm;
+        add_scaled(dm, 1. / D, weight.gradient);
+        add_scaled(dm, -weight.value / D / D, s.D.gradient);
+        return dm;
+      };
       for (const auto &[k, M] : s.M)
         {
-          const double m = M.value / D;
-          DofVector    dm;
-          add_scaled(dm, 1. / D, M.gradient);
-          add_scaled(dm, -m / D, s.D.gradient);
+          DofVector      dm = change_of(M);
           const Point<2> yk = position(master_points[k]);
-          if (!curve_points)
-            {
-              add_scaled(l.gap_row, -(n * (yk - s.x)), dm);
-              add_scaled(l.slip_row,
-                         -(t * (motion(master_points[k]) - s.motion)),
-                         dm);
-            }
+          add_scaled(l.gap_row, -(n * (yk - s.x)), dm);
+          add_scaled(l.slip_row,
+                     -(t * (motion(master_points[k]) - s.motion)),
+                     dm);
           if (lambda.norm() > 0.)
             {
               ContactLinearization::Term change;
@@ -887,7 +1033,18 @@ namespace glissade
               l.tangent_terms.push_back(std::move(change));
             }
         }
+      // On a curve, y_j's change is in the Y rows above; the force
+      // weights' change at fixed reaction remains.
+      if (lambda.norm() > 0.)
+        for (const auto &[key, F] : s.F)
+          {
+            ContactLinearization::Term change;
+            change.load.push_back({1, key.first, -lambda[key.second]});
+            change.row = change_of(F);
+            l.tangent_terms.push_back(std::move(change));
+          }
 
+      merge_proportional_terms(l.tangent_terms);
       merge_entries(l.gap_row);
       merge_entries(l.slip_row);
       node.segment       = -1;
@@ -908,14 +1065,11 @@ namespace glissade
   {
     const std::string entry = context.description.entry;
     if (context.master != nullptr &&
-        (dynamic_cast<const CurveSurface *>(&context.surface) == nullptr ||
-         context.description.surface == "hermite"))
+        dynamic_cast<const CurveSurface *>(&context.surface) == nullptr)
       throw InputError(entry + "/Surface",
-                       "mortar contact integrates over a faceted or a "
-                       "B-spline master (Surface = faceted or bspline); the "
-                       "Hermite master ('" +
-                         context.description.surface +
-                         "') is met node-to-segment in this version");
+                       "mortar contact integrates over a master curve "
+                       "(Surface = faceted, bspline or hermite); '" +
+                         context.description.surface + "' is not one");
     return std::make_unique<Mortar>(context);
   }
 } // namespace glissade

@@ -30,6 +30,12 @@ namespace glissade
                          BSplineCurve::EndCondition::double_vertex);
       }
 
+      bool
+      transfers_by_segment() const override
+      {
+        return segment_transfer;
+      }
+
     protected:
       void
       set_forces(SurfacePoint &point) const override

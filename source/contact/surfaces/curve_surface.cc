@@ -156,22 +156,42 @@ namespace glissade
     point.gap               = (x - point.point) * point.normal;
 
     // The weights, continued linearly past an open end like the curve.
-    const double                           s_weights = end < 0. ? s : end;
-    MasterCurve::NodeWeightsAndDerivatives weights;
-    curve->weights_and_derivatives(segment, s_weights, weights);
-    for (const auto &w : weights)
-      for (unsigned int comp = 0; comp < 2; ++comp)
-        point.kinematics.push_back({chain.value_dofs[w.node][comp],
-                                    comp,
-                                    w.value + (s - s_weights) * w.derivative,
-                                    w.derivative});
-    const std::size_t first_extra = point.kinematics.size();
-    add_kinematics(segment, s_weights, point.kinematics);
-    for (std::size_t i = first_extra; i < point.kinematics.size(); ++i)
-      point.kinematics[i].value +=
-        (s - s_weights) * point.kinematics[i].derivative;
+    const double s_weights = end < 0. ? s : end;
+    point.kinematics       = kinematics_at(segment, s_weights);
+    for (auto &w : point.kinematics)
+      w.value += (s - s_weights) * w.derivative;
     set_forces(point);
     return point;
+  }
+
+
+
+  std::vector<SurfaceWeight>
+  CurveSurface::kinematics_at(const unsigned int segment, const double s) const
+  {
+    std::vector<SurfaceWeight>             kinematics;
+    MasterCurve::NodeWeightsAndDerivatives weights;
+    curve->weights_and_derivatives(segment, s, weights);
+    for (const auto &w : weights)
+      for (unsigned int comp = 0; comp < 2; ++comp)
+        kinematics.push_back(
+          {chain.value_dofs[w.node][comp], comp, w.value, w.derivative});
+    add_kinematics(segment, s, kinematics);
+    return kinematics;
+  }
+
+
+
+  std::vector<SurfaceWeight>
+  CurveSurface::forces_at(const unsigned int segment, const double s) const
+  {
+    SurfacePoint point;
+    point.valid      = true;
+    point.segment    = segment;
+    point.s          = s;
+    point.kinematics = kinematics_at(segment, s);
+    set_forces(point);
+    return point.forces;
   }
 
 

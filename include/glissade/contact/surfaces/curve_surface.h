@@ -58,6 +58,30 @@ namespace glissade
       return chain;
     }
 
+    /**
+     * The dof weights of the curve point at (segment, s), s in [0, 1],
+     * with their derivatives in s: the node weights on the value dofs and
+     * what the curve adds (the Hermite edge's derivative dofs). A point's
+     * change is sum_w w.value du(w.dof) in component w.component.
+     */
+    std::vector<SurfaceWeight>
+    kinematics_at(unsigned int segment, double s) const;
+
+    /** Where a force at (segment, s) goes, with the weights' derivatives. */
+    std::vector<SurfaceWeight>
+    forces_at(unsigned int segment, double s) const;
+
+    /**
+     * True when the reaction goes to the two nodes of the straight
+     * segment under the curve point (the paper's segment transfer) rather
+     * than by the kinematic weights.
+     */
+    virtual bool
+    transfers_by_segment() const
+    {
+      return false;
+    }
+
   protected:
     /** Rebuilds the curve from the current node positions. */
     virtual void
