@@ -1,9 +1,9 @@
 #include <deal.II/base/quadrature_lib.h>
 
-#include <glissade/base/dual_number.h>
 #include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/discretisation/mortar_variables.h>
 #include <glissade/contact/surfaces/curve_surface.h>
 #include <glissade/description/scene_description.h>
 
@@ -18,225 +18,61 @@ namespace glissade
 
   namespace
   {
-    /**
-     * The coordinates a segment pair's integrals depend on: up to four
-     * slave points (the slave segment's two nodes and their neighbours,
-     * whose faces make the nodal normals) and the master segment's two
-     * nodes, two coordinates each (12); on a smooth master curve, eight
-     * more: at each of the four Gauss points, the curve point's change
-     * sum_k phi_k dX_k, through which every node of the curve acts
-     * (mapped to them afterwards).
-     */
-    constexpr int n_mortar_variables = 20;
-    using MortarDual                 = Dual<n_mortar_variables>;
+    using mortar::Accumulated;
+    using mortar::add_scaled;
+    using mortar::DualPoint;
+    using mortar::LocalVariables;
+    using mortar::merge_entries;
+    using mortar::merge_proportional_terms;
+    using mortar::MortarDual;
+    using mortar::root_near_linear;
 
-    struct DualPoint
+    /** What Mortar::update() finds for each slave point. */
+    struct NodeState
     {
-      MortarDual x, y;
+      /** D_j over the node's tributary length (1: fully covered). */
+      double                              coverage = 0.;
+      Point<2>                            x;
+      Tensor<1, 2>                        normal, tangent, motion;
+      DofVector                           rotation_row; // d theta / dU
+      Accumulated                         D;
+      std::map<unsigned int, Accumulated> M; // by master point
+      /**
+       * On a smooth curve, int Phi_j w by (master dof, component), w the
+       * curve's force weights there: where the reaction goes.
+       */
+      std::map<std::pair<types::global_dof_index, unsigned int>, Accumulated> F;
+      /**
+       * Against a rigid obstacle or a smooth curve: int Phi_j y and
+       * int Phi_j m (the obstacle's closest points or the curve's
+       * points, and their material's motion), per component.
+       */
+      std::array<Accumulated, 2> Y, moved;
+      /** A face point had no counterpart on the obstacle. */
+      bool uncovered = false;
     };
 
-    DualPoint
-    operator-(const DualPoint &a, const DualPoint &b)
-    {
-      return {a.x - b.x, a.y - b.y};
-    }
 
-    DualPoint
-    operator+(const DualPoint &a, const DualPoint &b)
-    {
-      return {a.x + b.x, a.y + b.y};
-    }
 
-    DualPoint
-    operator*(const MortarDual &s, const DualPoint &a)
+    /**
+     * On a smooth curve, what a slave face's integrals over a segment
+     * add up besides D and M: int Phi y and int Phi m (the curve's points
+     * and their motion) per slave node and component, the curve point's
+     * dof weights at each Gauss point (which map the variables 12 + 2q,
+     * 13 + 2q to the dofs), and the force weights' integrals int Phi w
+     * by (dof, component).
+     */
+    struct CurveIntegrals
     {
-      return {s * a.x, s * a.y};
-    }
-
-    MortarDual
-    cross(const DualPoint &a, const DualPoint &b)
-    {
-      return a.x * b.y - a.y * b.x;
-    }
-
-    /** e3 x v: the left normal of a direction of travel. */
-    DualPoint
-    left_normal(const DualPoint &v)
-    {
-      return {-v.y, v.x};
-    }
-
-    /** A value and its derivatives over the pair's dofs, summed from
-     * segment pairs. */
-    struct Accumulated
-    {
-      double    value = 0.;
-      DofVector gradient;
-
-      /** Adds a segment pair's value; `dofs` maps its variables to dofs. */
-      void
-      add(const MortarDual                     &v,
-          const std::array<std::pair<unsigned int, types::global_dof_index>,
-                           n_mortar_variables> &dofs,
-          const unsigned int                    n_used)
-      {
-        value += v.value;
-        for (unsigned int i = 0; i < n_used; ++i)
-          if (v.derivative[i] != 0.)
-            gradient.push_back(
-              {dofs[i].first, dofs[i].second, v.derivative[i]});
-      }
+      std::array<DualPoint, 2>                  segment_ends;
+      MortarDual                                Y[2][2] = {}, moved[2][2] = {};
+      std::array<std::vector<SurfaceWeight>, 4> kinematics;
+      std::map<std::pair<types::global_dof_index, unsigned int>,
+               std::array<MortarDual, 2>>
+        F;
     };
 
-    /** One entry per dof. */
-    void
-    merge_entries(DofVector &v)
-    {
-      std::sort(v.begin(),
-                v.end(),
-                [](const DofCoefficient &a, const DofCoefficient &b) {
-                  return std::make_pair(a.body, a.dof) <
-                         std::make_pair(b.body, b.dof);
-                });
-      DofVector merged;
-      for (const auto &e : v)
-        if (!merged.empty() && merged.back().body == e.body &&
-            merged.back().dof == e.dof)
-          merged.back().value += e.value;
-        else
-          merged.push_back(e);
-      v = std::move(merged);
-    }
 
-    /**
-     * The root of A s^2 + B s + C that Newton reaches from the linear
-     * estimate -C / B; NaN if it does not.
-     */
-    double
-    root_near_linear(const double A, const double B, const double C)
-    {
-      double s = -C / B;
-      for (unsigned int it = 0; it < 20 && std::isfinite(s); ++it)
-        {
-          const double step = (A * s * s + B * s + C) / (2. * A * s + B);
-          s -= step;
-          if (std::abs(step) < 1e-15)
-            break;
-        }
-      return s;
-    }
-
-    /**
-     * The coordinates of some points as dual variables 0, 1, 2, ... in
-     * the order they are added, and the dofs each variable stands for.
-     */
-    struct LocalVariables
-    {
-      std::vector<DualPoint> coordinates;
-      std::array<std::pair<unsigned int, types::global_dof_index>,
-                 n_mortar_variables>
-        dofs{};
-
-      /** Adds a point of `body` at x with dofs `point_dofs`; its index. */
-      unsigned int
-      add(const unsigned int                            body,
-          const std::array<types::global_dof_index, 2> &point_dofs,
-          const Point<2>                               &x)
-      {
-        const unsigned int l = coordinates.size();
-        coordinates.push_back({MortarDual::variable(x[0], 2 * l),
-                               MortarDual::variable(x[1], 2 * l + 1)});
-        dofs[2 * l]     = {body, point_dofs[0]};
-        dofs[2 * l + 1] = {body, point_dofs[1]};
-        return l;
-      }
-
-      unsigned int
-      n_used() const
-      {
-        return 2 * coordinates.size();
-      }
-    };
-
-    /**
-     * The tangent's terms with proportional rows, merged: load_1 (x) row_1
-     * + load_2 (x) r row_1 = (load_1 + r load_2) (x) row_1. A curve's force
-     * weights come in such families (a node's two components; a Hermite
-     * end's four derivative dofs, T_k times one integral), and every term
-     * costs the condensed step one more solve with the bodies' tangents.
-     * (Proportional to round-off: rows that differ by more are kept apart.)
-     */
-    void
-    merge_proportional_terms(std::vector<ContactLinearization::Term> &terms)
-    {
-      std::vector<ContactLinearization::Term> merged;
-      for (auto &term : terms)
-        {
-          merge_entries(term.row);
-          if (term.row.empty() || term.load.empty())
-            continue;
-          const auto largest_entry = [](const DofVector &row) {
-            return std::max_element(row.begin(),
-                                    row.end(),
-                                    [](const auto &a, const auto &b) {
-                                      return std::abs(a.value) <
-                                             std::abs(b.value);
-                                    }) -
-                   row.begin();
-          };
-          const auto   i      = largest_entry(term.row);
-          const double top    = std::abs(term.row[i].value);
-          bool         joined = false;
-          for (auto &kept : merged)
-            {
-              if (kept.row.size() != term.row.size() ||
-                  kept.row[i].body != term.row[i].body ||
-                  kept.row[i].dof != term.row[i].dof || kept.row[i].value == 0.)
-                continue;
-              const double ratio        = term.row[i].value / kept.row[i].value;
-              bool         proportional = true;
-              for (std::size_t k = 0; proportional && k < term.row.size(); ++k)
-                proportional =
-                  kept.row[k].body == term.row[k].body &&
-                  kept.row[k].dof == term.row[k].dof &&
-                  std::abs(term.row[k].value - ratio * kept.row[k].value) <=
-                    1e-12 * top;
-              if (!proportional)
-                continue;
-              // The larger row stays, so that no load is scaled up: a
-              // Hermite end whose reference tangent lies along an axis has
-              // a row of round-off beside its other component's.
-              if (std::abs(ratio) <= 1.)
-                for (const auto &e : term.load)
-                  kept.load.push_back({e.body, e.dof, ratio * e.value});
-              else
-                {
-                  for (auto &e : kept.load)
-                    e.value /= ratio;
-                  kept.load.insert(kept.load.end(),
-                                   term.load.begin(),
-                                   term.load.end());
-                  kept.row = std::move(term.row);
-                }
-              joined = true;
-              break;
-            }
-          if (!joined)
-            merged.push_back(std::move(term));
-        }
-      for (auto &term : merged)
-        merge_entries(term.load);
-      terms = std::move(merged);
-    }
-
-    /** c a, appended to `out`. */
-    void
-    add_scaled(DofVector &out, const double c, const DofVector &a)
-    {
-      if (c != 0.)
-        for (const auto &e : a)
-          out.push_back({e.body, e.dof, c * e.value});
-    }
 
     /**
      * Segment-to-segment mortar contact with dual Lagrange multipliers
@@ -305,6 +141,35 @@ namespace glissade
       integrate(unsigned int f, unsigned int i);
 
       /**
+       * Cheap tests, in plain numbers: master segment i faces slave face
+       * f, lies within reach of it, and its nodes' images overlap it;
+       * [eta_low, eta_high] the segment's extent (an open master's end
+       * segments continue past its ends).
+       */
+      bool
+      may_overlap(unsigned int f,
+                  unsigned int i,
+                  double      &eta_low,
+                  double      &eta_high) const;
+
+
+      /**
+       * The curve point of Gauss point q on segment i, where the slave
+       * normal n through x meets it, added with the weights wa, wb of the
+       * face's two nodes; eta becomes its parameter (along the chord where
+       * the reaction goes by segment transfer). False if there is none.
+       */
+      bool
+      add_curve_point(unsigned int      i,
+                      unsigned int      q,
+                      const DualPoint  &x,
+                      const DualPoint  &n,
+                      const MortarDual &wa,
+                      const MortarDual &wb,
+                      MortarDual       &eta,
+                      CurveIntegrals   &on_curve) const;
+
+      /**
        * Where the line through x along n meets curve segment i, by Newton
        * from `start`; NaN if Newton leaves.
        */
@@ -321,6 +186,26 @@ namespace glissade
        */
       void
       integrate_on_obstacle(unsigned int f);
+
+      /**
+       * The dof forces of a unit reaction v at node `node` (and the weights
+       * of x - y), added to `out`.
+       */
+      void
+      add_unit_reaction(const NodeState    &s,
+                        const ContactNode  &node,
+                        const Tensor<1, 2> &v,
+                        DofVector          &out) const;
+
+      /**
+       * What the change of the node's weights adds: the gap and slip rows'
+       * dm_k terms (faceted master), and the contact tangent at fixed
+       * reaction, the turn of the nodal normal and each weight's change.
+       */
+      void
+      add_weight_changes(const NodeState      &s,
+                         const ContactNode    &node,
+                         ContactLinearization &l) const;
 
       /** The unit normal at slave node j as Duals over `local`'s points. */
       DualPoint
@@ -348,31 +233,6 @@ namespace glissade
       std::vector<std::array<unsigned int, 2>> faces;
       std::vector<std::vector<unsigned int>>   faces_of_point;
 
-      /** What update() finds for each slave point. */
-      struct NodeState
-      {
-        /** D_j over the node's tributary length (1: fully covered). */
-        double                              coverage = 0.;
-        Point<2>                            x;
-        Tensor<1, 2>                        normal, tangent, motion;
-        DofVector                           rotation_row; // d theta / dU
-        Accumulated                         D;
-        std::map<unsigned int, Accumulated> M; // by master point
-        /**
-         * On a smooth curve, int Phi_j w by (master dof, component), w the
-         * curve's force weights there: where the reaction goes.
-         */
-        std::map<std::pair<types::global_dof_index, unsigned int>, Accumulated>
-          F;
-        /**
-         * Against a rigid obstacle or a smooth curve: int Phi_j y and
-         * int Phi_j m (the obstacle's closest points or the curve's
-         * points, and their material's motion), per component.
-         */
-        std::array<Accumulated, 2> Y, moved;
-        /** A face point had no counterpart on the obstacle. */
-        bool uncovered = false;
-      };
       std::vector<NodeState> state;
       /** The current positions of the slave and master points. */
       std::vector<Point<2>> slave_positions, master_positions;
@@ -497,47 +357,9 @@ namespace glissade
       const unsigned int a = faces[f][0], b = faces[f][1];
       const unsigned int c = i, d = (i + 1) % master_points.size();
 
-      // Cheap tests first, in plain numbers: the segment faces the slave
-      // face, lies within reach of it, and its nodes' images overlap it.
-      const Point<2>    &xa = slave_positions[a], &xb = slave_positions[b];
-      const Point<2>    &yc = master_positions[c], &yd = master_positions[d];
-      const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
-      const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
-      if (slave_out * master_out >= 0.)
+      double eta_low = 0., eta_high = 1.;
+      if (!may_overlap(f, i, eta_low, eta_high))
         return;
-      const double reach =
-        search_distance + (xb - xa).norm() + (yd - yc).norm();
-      const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
-      if (slave_mid.distance(master_mid) > reach)
-        return;
-      // An open master's end segments continue past its ends by half
-      // their length (linear shape functions extrapolated), as a
-      // node-to-segment node may keep its end segment: a slave node that
-      // slides off the end loses its counterpart over half a segment, not
-      // at once.
-      const bool open_start = !curve && !chain->closed && i == 0;
-      const bool open_end =
-        !curve && !chain->closed && i + 2 == master_points.size();
-      const double eta_low  = open_start ? -0.5 : 0.,
-                   eta_high = open_end ? 1.5 : 1.;
-      {
-        const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
-        const auto cross2 = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
-          return u[0] * v[1] - u[1] * v[0];
-        };
-        const auto image = [&](const Point<2> &y) {
-          const Tensor<1, 2> r = xa - y, dx = xb - xa, dn = nb - na;
-          return root_near_linear(cross2(dx, dn),
-                                  cross2(r, dn) + cross2(dx, na),
-                                  cross2(r, na));
-        };
-        const double sc = image(yc + eta_low * (yd - yc)),
-                     sd = image(yc + eta_high * (yd - yc));
-        if (!std::isfinite(sc) || !std::isfinite(sd) ||
-            std::min(1., std::max(sc, sd)) - std::max(0., std::min(sc, sd)) <=
-              1e-12)
-          return;
-      }
 
       // The local variables: the slave points of both nodal normals, then
       // the master segment's nodes.
@@ -598,16 +420,8 @@ namespace glissade
       static const QGauss<1> gauss(4);
       const MortarDual       length = sqrt(dX.x * dX.x + dX.y * dX.y);
       MortarDual             Da(0.), Db(0.), Mac(0.), Mad(0.), Mbc(0.), Mbd(0.);
-      // On a smooth curve: int Phi y and int Phi m (the curve's points and
-      // their motion) per component, the curve point's dof weights at each
-      // Gauss point (which map the variables 12 + 2q, 13 + 2q to the dofs),
-      // and the force weights' integrals int Phi w by (dof, component).
-      MortarDual Ya[2] = {0., 0.}, Yb[2] = {0., 0.};
-      MortarDual ma[2] = {0., 0.}, mb[2] = {0., 0.};
-      std::array<std::vector<SurfaceWeight>, 4> kinematics;
-      std::map<std::pair<types::global_dof_index, unsigned int>,
-               std::array<MortarDual, 2>>
-        Fab;
+      CurveIntegrals         on_curve;
+      on_curve.segment_ends = {{Yc, Yd}};
       for (unsigned int q = 0; q < 4; ++q)
         {
           const MortarDual s    = lower + gauss.point(q)[0] * (upper - lower);
@@ -617,80 +431,11 @@ namespace glissade
           const MortarDual phia = 2. - 3. * s, phib = 3. * s - 1.;
           // The master point on the normal: (y(eta) - x) x n = 0.
           MortarDual eta = cross(x - Yc, n) / cross(Yd - Yc, n);
-          if (curve)
-            {
-              const double t = curve_parameter(i, x, n, eta.value);
-              // (the normal runs along the curve: no master point here,
-              // and the segment pair adds nothing)
-              if (!std::isfinite(t))
-                return;
-              MasterCurve::Point c0{}, c1{}, c2{};
-              curve->evaluate(i, t, c0, c1, c2);
-              // The curve point at t, moved by its dofs: C + dC_q, with
-              // dC_q = sum_w w du_w the variables 12 + 2q, 13 + 2q; one
-              // Newton step on the Duals from t: (c(eta) - x) x n = 0.
-              const DualPoint C{MortarDual::variable(c0[0], 12 + 2 * q),
-                                MortarDual::variable(c0[1], 13 + 2 * q)};
-              const DualPoint dC{MortarDual(c1[0]), MortarDual(c1[1])};
-              eta           = t - cross(C - x, n) / cross(dC, n);
-              kinematics[q] = curve_surface->kinematics_at(i, t);
-              Tensor<1, 2>          m0, m1;
-              const Vector<double> &u  = master->displacement();
-              const Vector<double> &u0 = master->stored_displacement();
-              for (const SurfaceWeight &e : kinematics[q])
-                {
-                  const double moved = u(e.dof) - u0(e.dof);
-                  m0[e.component] += e.value * moved;
-                  m1[e.component] += e.derivative * moved;
-                }
-              // (the motion's change by the dofs is the point's, dC_q:
-              // the dofs' values at the increment's start are fixed)
-              const MortarDual deta = eta - t;
-              const MortarDual y[2] = {C.x + c1[0] * deta, C.y + c1[1] * deta};
-              const MortarDual m[2] = {m0[0] + (C.x - c0[0]) + m1[0] * deta,
-                                       m0[1] + (C.y - c0[1]) + m1[1] * deta};
-              for (unsigned int k = 0; k < 2; ++k)
-                {
-                  Ya[k] += w * phia * y[k];
-                  Yb[k] += w * phib * y[k];
-                  ma[k] += w * phia * m[k];
-                  mb[k] += w * phib * m[k];
-                }
-              const auto add_force_weight =
-                [&](const types::global_dof_index dof,
-                    const unsigned int            component,
-                    const MortarDual             &weight) {
-                  auto &[to_a, to_b] = Fab[{dof, component}];
-                  to_a += w * phia * weight;
-                  to_b += w * phib * weight;
-                };
-              if (curve_surface->transfers_by_segment())
-                {
-                  // The underlying segment's two nodes, by the hat
-                  // functions at the curve point's place along the chord
-                  // (not at the curve's parameter, whose speed need not be
-                  // uniform: on a straight master the two differ near its
-                  // ends, and the patch test would fail by their
-                  // difference).
-                  const DualPoint  Y{y[0], y[1]}, chord = Yd - Yc;
-                  const DualPoint  from_c = Y - Yc;
-                  const MortarDual along =
-                    (from_c.x * chord.x + from_c.y * chord.y) /
-                    (chord.x * chord.x + chord.y * chord.y);
-                  for (unsigned int k = 0; k < 2; ++k)
-                    {
-                      add_force_weight(master_points[c].dofs[k], k, 1. - along);
-                      add_force_weight(master_points[d].dofs[k], k, along);
-                    }
-                }
-              else
-                // The curve's own weights (the Hermite edge's, the
-                // spline's): the reaction's work conjugate to the gap.
-                for (const SurfaceWeight &e : curve_surface->forces_at(i, t))
-                  add_force_weight(e.dof,
-                                   e.component,
-                                   e.value + e.derivative * deta);
-            }
+          // (on a curve, no master point where the normal runs along it:
+          // the segment pair adds nothing)
+          if (curve &&
+              !add_curve_point(i, q, x, n, w * phia, w * phib, eta, on_curve))
+            return;
           Da += w * phia;
           Db += w * phib;
           if (!curve)
@@ -706,7 +451,7 @@ namespace glissade
         to.add(v, dofs, n_used);
         if (curve)
           for (unsigned int q = 0; q < 4; ++q)
-            for (const SurfaceWeight &e : kinematics[q])
+            for (const SurfaceWeight &e : on_curve.kinematics[q])
               if (const double dv = v.derivative[12 + 2 * q + e.component];
                   dv != 0.)
                 to.gradient.push_back({1, e.dof, dv * e.value});
@@ -723,16 +468,152 @@ namespace glissade
         }
       for (unsigned int k = 0; k < 2; ++k)
         {
-          add(state[a].Y[k], Ya[k]);
-          add(state[b].Y[k], Yb[k]);
-          add(state[a].moved[k], ma[k]);
-          add(state[b].moved[k], mb[k]);
+          add(state[a].Y[k], on_curve.Y[0][k]);
+          add(state[b].Y[k], on_curve.Y[1][k]);
+          add(state[a].moved[k], on_curve.moved[0][k]);
+          add(state[b].moved[k], on_curve.moved[1][k]);
         }
-      for (const auto &[key, weights] : Fab)
+      for (const auto &[key, weights] : on_curve.F)
         {
           add(state[a].F[key], weights[0]);
           add(state[b].F[key], weights[1]);
         }
+    }
+
+
+
+    bool
+    Mortar::may_overlap(const unsigned int f,
+                        const unsigned int i,
+                        double            &eta_low,
+                        double            &eta_high) const
+    {
+      const unsigned int a = faces[f][0], b = faces[f][1];
+      const unsigned int c = i, d = (i + 1) % master_points.size();
+
+      // Cheap tests first, in plain numbers: the segment faces the slave
+      // face, lies within reach of it, and its nodes' images overlap it.
+      const Point<2>    &xa = slave_positions[a], &xb = slave_positions[b];
+      const Point<2>    &yc = master_positions[c], &yd = master_positions[d];
+      const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
+      const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
+      if (slave_out * master_out >= 0.)
+        return false;
+      const double reach =
+        search_distance + (xb - xa).norm() + (yd - yc).norm();
+      const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
+      if (slave_mid.distance(master_mid) > reach)
+        return false;
+      // An open master's end segments continue past its ends by half
+      // their length (linear shape functions extrapolated), as a
+      // node-to-segment node may keep its end segment: a slave node that
+      // slides off the end loses its counterpart over half a segment, not
+      // at once.
+      const bool open_start = !curve && !chain->closed && i == 0;
+      const bool open_end =
+        !curve && !chain->closed && i + 2 == master_points.size();
+      eta_low                = open_start ? -0.5 : 0.;
+      eta_high               = open_end ? 1.5 : 1.;
+      const Tensor<1, 2> &na = state[a].normal, &nb = state[b].normal;
+      const auto cross2 = [](const Tensor<1, 2> &u, const Tensor<1, 2> &v) {
+        return u[0] * v[1] - u[1] * v[0];
+      };
+      const auto image = [&](const Point<2> &y) {
+        const Tensor<1, 2> r = xa - y, dx = xb - xa, dn = nb - na;
+        return root_near_linear(cross2(dx, dn),
+                                cross2(r, dn) + cross2(dx, na),
+                                cross2(r, na));
+      };
+      const double sc = image(yc + eta_low * (yd - yc)),
+                   sd = image(yc + eta_high * (yd - yc));
+      return std::isfinite(sc) && std::isfinite(sd) &&
+             std::min(1., std::max(sc, sd)) - std::max(0., std::min(sc, sd)) >
+               1e-12;
+    }
+
+
+
+    bool
+    Mortar::add_curve_point(const unsigned int i,
+                            const unsigned int q,
+                            const DualPoint   &x,
+                            const DualPoint   &n,
+                            const MortarDual  &wa,
+                            const MortarDual  &wb,
+                            MortarDual        &eta,
+                            CurveIntegrals    &on_curve) const
+    {
+      const double t = curve_parameter(i, x, n, eta.value);
+      if (!std::isfinite(t))
+        return false;
+      MasterCurve::Point c0{}, c1{}, c2{};
+      curve->evaluate(i, t, c0, c1, c2);
+      // The curve point at t, moved by its dofs: C + dC_q, with
+      // dC_q = sum_w w du_w the variables 12 + 2q, 13 + 2q; one
+      // Newton step on the Duals from t: (c(eta) - x) x n = 0.
+      const DualPoint C{MortarDual::variable(c0[0], 12 + 2 * q),
+                        MortarDual::variable(c0[1], 13 + 2 * q)};
+      const DualPoint dC{MortarDual(c1[0]), MortarDual(c1[1])};
+      eta                    = t - cross(C - x, n) / cross(dC, n);
+      on_curve.kinematics[q] = curve_surface->kinematics_at(i, t);
+      Tensor<1, 2>          m0, m1;
+      const Vector<double> &u  = master->displacement();
+      const Vector<double> &u0 = master->stored_displacement();
+      for (const SurfaceWeight &e : on_curve.kinematics[q])
+        {
+          const double moved = u(e.dof) - u0(e.dof);
+          m0[e.component] += e.value * moved;
+          m1[e.component] += e.derivative * moved;
+        }
+      // (the motion's change by the dofs is the point's, dC_q:
+      // the dofs' values at the increment's start are fixed)
+      const MortarDual deta = eta - t;
+      const MortarDual y[2] = {C.x + c1[0] * deta, C.y + c1[1] * deta};
+      const MortarDual m[2] = {m0[0] + (C.x - c0[0]) + m1[0] * deta,
+                               m0[1] + (C.y - c0[1]) + m1[1] * deta};
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          on_curve.Y[0][k] += wa * y[k];
+          on_curve.Y[1][k] += wb * y[k];
+          on_curve.moved[0][k] += wa * m[k];
+          on_curve.moved[1][k] += wb * m[k];
+        }
+      const auto add_force_weight = [&](const types::global_dof_index dof,
+                                        const unsigned int            component,
+                                        const MortarDual             &weight) {
+        auto &[to_a, to_b] = on_curve.F[{dof, component}];
+        to_a += wa * weight;
+        to_b += wb * weight;
+      };
+      if (curve_surface->transfers_by_segment())
+        {
+          // The underlying segment's two nodes, by the hat
+          // functions at the curve point's place along the chord
+          // (not at the curve's parameter, whose speed need not be
+          // uniform: on a straight master the two differ near its
+          // ends, and the patch test would fail by their
+          // difference).
+          const DualPoint &Yc = on_curve.segment_ends[0],
+                          &Yd = on_curve.segment_ends[1];
+          const DualPoint  Y{y[0], y[1]}, chord = Yd - Yc;
+          const DualPoint  from_c = Y - Yc;
+          const MortarDual along  = (from_c.x * chord.x + from_c.y * chord.y) /
+                                   (chord.x * chord.x + chord.y * chord.y);
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              add_force_weight(master_points[i].dofs[k], k, 1. - along);
+              add_force_weight(
+                master_points[(i + 1) % master_points.size()].dofs[k],
+                k,
+                along);
+            }
+        }
+      else
+        // The curve's own weights (the Hermite edge's, the
+        // spline's): the reaction's work conjugate to the gap.
+        for (const SurfaceWeight &e : curve_surface->forces_at(i, t))
+          add_force_weight(e.dof, e.component, e.value + e.derivative * deta);
+      return true;
     }
 
 
@@ -907,96 +788,33 @@ namespace glissade
 
 
 
-    bool
-    Mortar::project(ContactNode &node, const bool keep_segment) const
+    void
+    Mortar::add_unit_reaction(const NodeState    &s,
+                              const ContactNode  &node,
+                              const Tensor<1, 2> &v,
+                              DofVector          &out) const
     {
-      // A node needs half its support covered to come into contact, and
-      // keeps its counterpart within the increment down to a twentieth: a node
-      // at the master's end whose coverage crosses one threshold from one
-      // Newton iteration to the next would otherwise come and go, and
-      // Newton cycle (case 2's square sliding past the rings' ends). The
-      // next increment's detection drops it below half.
-      const NodeState &s = state[point_of_vertex.at(node.vertex)];
-      if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
-        return false;
+      // The slave node with 1, master point k with -m_k (on a curve, each
+      // force weight's dof with -F / D).
+      const double D = s.D.value;
+      for (unsigned int c = 0; c < 2; ++c)
+        out.push_back({0, node.dofs[c], v[c]});
+      for (const auto &[k, M] : s.M)
+        for (unsigned int c = 0; c < 2; ++c)
+          out.push_back({1, master_points[k].dofs[c], -M.value / D * v[c]});
+      for (const auto &[key, F] : s.F)
+        out.push_back({1, key.first, -F.value / D * v[key.second]});
+    }
+
+
+
+    void
+    Mortar::add_weight_changes(const NodeState      &s,
+                               const ContactNode    &node,
+                               ContactLinearization &l) const
+    {
       const Tensor<1, 2> &n = s.normal, &t = s.tangent;
       const double        D = s.D.value;
-
-      // The mortar point y_j = sum m_k y_k, and the master's motion there.
-      Point<2>     y;
-      Tensor<1, 2> master_motion;
-      for (const auto &[k, M] : s.M)
-        {
-          const double m = M.value / D;
-          y += m * Tensor<1, 2>(position(master_points[k]));
-          master_motion += m * motion(master_points[k]);
-        }
-      // Against an obstacle or a smooth curve: y_j = int Phi_j y / D_j,
-      // and its material's motion likewise (the curve's forces still go
-      // through the weights m_k of the underlying segments).
-      const bool curve_points = chain == nullptr || curve != nullptr;
-      if (curve_points)
-        for (unsigned int c = 0; c < 2; ++c)
-          {
-            y[c]             = s.Y[c].value / D;
-            master_motion[c] = s.moved[c].value / D;
-          }
-      const Tensor<1, 2> x_minus_y = s.x - y;
-      const Tensor<1, 2> d         = s.motion - master_motion;
-
-      ContactLinearization l;
-      l.gap  = n * x_minus_y;
-      l.slip = t * d;
-
-      // The force of a unit reaction (and the weights of x - y): the slave
-      // node with 1, master point k with -m_k (on a curve, each force
-      // weight's dof with -F / D).
-      const auto relative = [&](const Tensor<1, 2> &v, DofVector &out) {
-        for (unsigned int c = 0; c < 2; ++c)
-          out.push_back({0, node.dofs[c], v[c]});
-        for (const auto &[k, M] : s.M)
-          for (unsigned int c = 0; c < 2; ++c)
-            out.push_back({1, master_points[k].dofs[c], -M.value / D * v[c]});
-        for (const auto &[key, F] : s.F)
-          out.push_back({1, key.first, -F.value / D * v[key.second]});
-      };
-      relative(n, l.normal_force);
-      relative(t, l.tangential_force);
-
-      // dg = -(t . (x - y)) d theta + n . d(x - y)|_m - sum (n . y_k) dm_k,
-      // du_t = (n . d) d theta + t . d(x - y)|_m - sum (t . dy_k) dm_k,
-      // with dm_k = dM_k / D - m_k dD / D. As sum m_k = 1 (the integrand's
-      // master shape functions sum to one), sum dm_k = 0: y_k and dy_k
-      // enter relative to x_j and dx_j, which keeps the terms that cancel
-      // (a flat master: n . (y_k - y_l) = 0) from leaving round-off.
-      for (unsigned int c = 0; c < 2; ++c)
-        {
-          l.gap_row.push_back({0, node.dofs[c], n[c]});
-          l.slip_row.push_back({0, node.dofs[c], t[c]});
-        }
-      if (!curve_points)
-        for (const auto &[k, M] : s.M)
-          for (unsigned int c = 0; c < 2; ++c)
-            {
-              l.gap_row.push_back(
-                {1, master_points[k].dofs[c], -M.value / D * n[c]});
-              l.slip_row.push_back(
-                {1, master_points[k].dofs[c], -M.value / D * t[c]});
-            }
-      add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
-      add_scaled(l.slip_row, n * d, s.rotation_row);
-      // Against an obstacle or a curve, y_j and its motion change with
-      // the slave face's points (and the curve's nodes): dy_j = dY / D -
-      // y_j dD / D.
-      if (curve_points)
-        for (unsigned int c = 0; c < 2; ++c)
-          {
-            add_scaled(l.gap_row, -n[c] / D, s.Y[c].gradient);
-            add_scaled(l.gap_row, n[c] * y[c] / D, s.D.gradient);
-            add_scaled(l.slip_row, -t[c] / D, s.moved[c].gradient);
-            add_scaled(l.slip_row, t[c] * master_motion[c] / D, s.D.gradient);
-          }
-
       // The contact tangent at fixed r: F = lambda . (e_j - sum m_k e_k)
       // with lambda = r_t t + r_n n: the turn, d lambda = theta mu with
       // mu = r_t n - r_n t, and each weight's change, -lambda on y_k.
@@ -1005,7 +823,7 @@ namespace glissade
       if (!s.rotation_row.empty() && mu.norm() > 0.)
         {
           ContactLinearization::Term turn;
-          relative(mu, turn.load);
+          add_unit_reaction(s, node, mu, turn.load);
           turn.row = s.rotation_row;
           l.tangent_terms.push_back(std::move(turn));
         }
@@ -1043,7 +861,89 @@ namespace glissade
             change.row = change_of(F);
             l.tangent_terms.push_back(std::move(change));
           }
+    }
 
+
+
+    bool
+    Mortar::project(ContactNode &node, const bool keep_segment) const
+    {
+      // A node needs half its support covered to come into contact, and
+      // keeps its counterpart within the increment down to a twentieth: a node
+      // at the master's end whose coverage crosses one threshold from one
+      // Newton iteration to the next would otherwise come and go, and
+      // Newton cycle (case 2's square sliding past the rings' ends). The
+      // next increment's detection drops it below half.
+      const NodeState &s = state[point_of_vertex.at(node.vertex)];
+      if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
+        return false;
+      const Tensor<1, 2> &n = s.normal, &t = s.tangent;
+      const double        D = s.D.value;
+
+      // The mortar point y_j = sum m_k y_k, and the master's motion there.
+      Point<2>     y;
+      Tensor<1, 2> master_motion;
+      for (const auto &[k, M] : s.M)
+        {
+          const double m = M.value / D;
+          y += m * Tensor<1, 2>(position(master_points[k]));
+          master_motion += m * motion(master_points[k]);
+        }
+      // Against an obstacle or a smooth curve: y_j = int Phi_j y / D_j,
+      // and its material's motion likewise (the curve's forces go by its
+      // force weights F).
+      const bool curve_points = chain == nullptr || curve != nullptr;
+      if (curve_points)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            y[c]             = s.Y[c].value / D;
+            master_motion[c] = s.moved[c].value / D;
+          }
+      const Tensor<1, 2> x_minus_y = s.x - y;
+      const Tensor<1, 2> d         = s.motion - master_motion;
+
+      ContactLinearization l;
+      l.gap  = n * x_minus_y;
+      l.slip = t * d;
+
+      add_unit_reaction(s, node, n, l.normal_force);
+      add_unit_reaction(s, node, t, l.tangential_force);
+
+      // dg = -(t . (x - y)) d theta + n . d(x - y)|_m - sum (n . y_k) dm_k,
+      // du_t = (n . d) d theta + t . d(x - y)|_m - sum (t . dy_k) dm_k,
+      // with dm_k = dM_k / D - m_k dD / D. As sum m_k = 1 (the integrand's
+      // master shape functions sum to one), sum dm_k = 0: y_k and dy_k
+      // enter relative to x_j and dx_j, which keeps the terms that cancel
+      // (a flat master: n . (y_k - y_l) = 0) from leaving round-off.
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          l.gap_row.push_back({0, node.dofs[c], n[c]});
+          l.slip_row.push_back({0, node.dofs[c], t[c]});
+        }
+      if (!curve_points)
+        for (const auto &[k, M] : s.M)
+          for (unsigned int c = 0; c < 2; ++c)
+            {
+              l.gap_row.push_back(
+                {1, master_points[k].dofs[c], -M.value / D * n[c]});
+              l.slip_row.push_back(
+                {1, master_points[k].dofs[c], -M.value / D * t[c]});
+            }
+      add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
+      add_scaled(l.slip_row, n * d, s.rotation_row);
+      // Against an obstacle or a curve, y_j and its motion change with
+      // the slave face's points (and the curve's nodes): dy_j = dY / D -
+      // y_j dD / D.
+      if (curve_points)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            add_scaled(l.gap_row, -n[c] / D, s.Y[c].gradient);
+            add_scaled(l.gap_row, n[c] * y[c] / D, s.D.gradient);
+            add_scaled(l.slip_row, -t[c] / D, s.moved[c].gradient);
+            add_scaled(l.slip_row, t[c] * master_motion[c] / D, s.D.gradient);
+          }
+
+      add_weight_changes(s, node, l);
       merge_proportional_terms(l.tangent_terms);
       merge_entries(l.gap_row);
       merge_entries(l.slip_row);
