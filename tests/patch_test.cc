@@ -20,6 +20,8 @@ namespace
 {
   const double young_modulus = 1000.;
   const double poisson_ratio = 0.3;
+  /** The Mooney-Rivlin law's third constant, c2 / (c1 + c2). */
+  const double mooney_rivlin_ratio = 0.3;
 
   std::string
   patch_scene(const std::string  &space,
@@ -54,6 +56,7 @@ namespace
       conditions += (conditions.empty() ? "" : "; ") + side + ": xy: " + both;
     prm << " subsection Element\n  set Space = " << space << "\n end\n"
         << " subsection Material\n  set Law = " << law << "\n"
+        << "  set Mooney-Rivlin ratio = " << mooney_rivlin_ratio << "\n"
         << "  set Young modulus = " << young_modulus << "\n"
         << "  set Poisson ratio = " << poisson_ratio << "\n"
         << "  set Hypothesis = " << hypothesis << "\n end\n"
@@ -99,6 +102,36 @@ namespace
     return sigma;
   }
 
+  /**
+   * Closed-form plane-strain Mooney-Rivlin Cauchy stress, from W = c1 (I1
+   * - 3) + c2 (I2 - 3) - (2 c1 + 4 c2) ln J + lambda_w / 2 (ln J)^2 with c1
+   * + c2 = mu / 2, c2 = ratio mu / 2, lambda_w = lambda - 4 c2 (Hooke's
+   * constants at small strain): sigma = (2 c1 B + 2 c2 (I1 B - B^2) - (2
+   * c1 + 4 c2 - lambda_w ln J) I) / J, B = F F^T.
+   */
+  SymmetricTensor<2, 3>
+  mooney_rivlin_cauchy(const Tensor<2, 2> &F2)
+  {
+    const double lambda = young_modulus * poisson_ratio /
+                          ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
+    const double mu       = young_modulus / (2 * (1 + poisson_ratio));
+    const double c2       = 0.5 * mooney_rivlin_ratio * mu;
+    const double c1       = 0.5 * mu - c2;
+    const double lambda_w = lambda - 4 * c2;
+    Tensor<2, 3> F;
+    for (unsigned int i = 0; i < 2; ++i)
+      for (unsigned int j = 0; j < 2; ++j)
+        F[i][j] = F2[i][j];
+    F[2][2]                = 1.;
+    const Tensor<2, 3> B   = F * transpose(F);
+    const double       J   = determinant(F);
+    const Tensor<2, 3> sig = (2 * c1 * B + 2 * c2 * (trace(B) * B - B * B) -
+                              (2 * c1 + 4 * c2 - lambda_w * std::log(J)) *
+                                Tensor<2, 3>(unit_symmetric_tensor<3>())) /
+                             J;
+    return symmetrize(sig);
+  }
+
   /** Closed-form plane-stress Saint Venant-Kirchhoff Cauchy stress. */
   SymmetricTensor<2, 3>
   svk_plane_stress_cauchy(const Tensor<2, 2> &F)
@@ -142,8 +175,9 @@ namespace
     // Gauss rule richer than the assembly's, against u = (F - I) X.
     const bool                  plane_stress = (hypothesis == "plane stress");
     const SymmetricTensor<2, 3> exact_sigma =
-      law == "neo-Hookean" ? neo_hookean_cauchy(F, plane_stress) :
-                             svk_plane_stress_cauchy(F);
+      law == "neo-Hookean"   ? neo_hookean_cauchy(F, plane_stress) :
+      law == "Mooney-Rivlin" ? mooney_rivlin_cauchy(F) :
+                               svk_plane_stress_cauchy(F);
     const auto          evaluator = body.space().create_evaluator(5);
     std::vector<double> values(evaluator->dofs_per_cell());
     const Tensor<2, 2>  exact_H = F - unit_symmetric_tensor<2>();
@@ -233,4 +267,18 @@ GLISSADE_TEST(patch_large_strain_svk_q1)
 {
   run_patch(
     "q1", large_strain_gradient(), "Saint Venant-Kirchhoff", "plane stress", 4);
+}
+
+// A law with a third constant (LawRegistry, doc/adding_a_material.md): the
+// Mooney-Rivlin law with c2 / (c1 + c2) = 0.3, large strain, plane strain,
+// on Q1 and on Q2 meshes of the ring.
+GLISSADE_TEST(patch_large_strain_mooney_rivlin_q1)
+{
+  run_patch("q1", large_strain_gradient(), "Mooney-Rivlin", "plane strain", 4);
+}
+
+GLISSADE_TEST(patch_ring_large_strain_mooney_rivlin_q2)
+{
+  run_patch(
+    "q2", large_strain_gradient(), "Mooney-Rivlin", "plane strain", 4, true);
 }

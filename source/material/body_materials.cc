@@ -15,7 +15,8 @@ namespace glissade
                                      description.young_modulus,
                                      description.poisson_ratio,
                                      description.hypothesis,
-                                     description.kinematics),
+                                     description.kinematics,
+                                     description.law_settings),
                     description.young_modulus,
                     "Material",
                     description.density}
@@ -42,7 +43,8 @@ namespace glissade
                                                         region.young_modulus,
                                                         region.poisson_ratio,
                                                         description.hypothesis,
-                                                        description.kinematics),
+                                                        description.kinematics,
+                                                        region.law_settings),
                                        region.young_modulus,
                                        "Material " + region.name,
                                        region.density});

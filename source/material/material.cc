@@ -1,8 +1,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/material/law_registry.h>
 #include <glissade/material/material.h>
-#include <glissade/material/neo_hookean.h>
-#include <glissade/material/saint_venant_kirchhoff.h>
 
 #include <cmath>
 #include <functional>
@@ -14,32 +13,6 @@
 namespace glissade
 {
   using namespace dealii;
-
-  namespace
-  {
-    /** A law from the Lame constants (lambda, mu). */
-    using LawFactory =
-      std::function<std::unique_ptr<HyperelasticLaw>(double, double)>;
-
-    /**
-     * The hyperelastic laws by the name Material/Law gives (its pattern
-     * is made from these names): a new law is a class and one line here.
-     */
-    const std::vector<std::pair<std::string, LawFactory>> &
-    laws()
-    {
-      static const std::vector<std::pair<std::string, LawFactory>> table = {
-        {"neo-Hookean",
-         [](const double lambda, const double mu) {
-           return std::make_unique<NeoHookean>(lambda, mu);
-         }},
-        {"Saint Venant-Kirchhoff", [](const double lambda, const double mu) {
-           return std::make_unique<SaintVenantKirchhoff>(lambda, mu);
-         }}};
-      return table;
-    }
-  } // namespace
-
 
   Material::Material(std::unique_ptr<HyperelasticLaw> law,
                      const PlaneHypothesis            hypothesis,
@@ -59,32 +32,16 @@ namespace glissade
                    const double          young_modulus,
                    const double          poisson_ratio,
                    const PlaneHypothesis hypothesis,
-                   const Kinematics      kinematics)
+                   const Kinematics      kinematics,
+                   const std::any       &law_settings)
   {
     const double E      = young_modulus;
     const double nu     = poisson_ratio;
     const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
     const double mu     = E / (2. * (1. + nu));
-    for (const auto &[name, create_law] : laws())
-      if (name == law_name)
-        return Material(create_law(lambda, mu), hypothesis, kinematics);
-    throw InputError("Material/Law",
-                     "unknown law '" + law_name +
-                       "' (known: " + text::joined(law_names(), ", ") + ")");
-  }
-
-
-
-  const std::vector<std::string> &
-  Material::law_names()
-  {
-    static const std::vector<std::string> names = [] {
-      std::vector<std::string> names;
-      for (const auto &law : laws())
-        names.push_back(law.first);
-      return names;
-    }();
-    return names;
+    return Material(LawRegistry::create(law_name, lambda, mu, law_settings),
+                    hypothesis,
+                    kinematics);
   }
 
 

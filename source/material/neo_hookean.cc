@@ -1,10 +1,20 @@
 #include <glissade/material/neo_hookean.h>
 
+#include <any>
 #include <cmath>
+#include <memory>
 
 namespace glissade
 {
   using namespace dealii;
+
+  std::unique_ptr<HyperelasticLaw>
+  make_neo_hookean(const double lambda, const double mu, const std::any &)
+  {
+    return std::make_unique<NeoHookean>(lambda, mu);
+  }
+
+
 
   NeoHookean::NeoHookean(const double lambda, const double mu)
     : lambda(lambda)

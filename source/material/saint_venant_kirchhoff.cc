@@ -1,8 +1,21 @@
 #include <glissade/material/saint_venant_kirchhoff.h>
 
+#include <any>
+#include <memory>
+
 namespace glissade
 {
   using namespace dealii;
+
+  std::unique_ptr<HyperelasticLaw>
+  make_saint_venant_kirchhoff(const double lambda,
+                              const double mu,
+                              const std::any &)
+  {
+    return std::make_unique<SaintVenantKirchhoff>(lambda, mu);
+  }
+
+
 
   SaintVenantKirchhoff::SaintVenantKirchhoff(const double lambda,
                                              const double mu)

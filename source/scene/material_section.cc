@@ -6,7 +6,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/description/scene_description.h>
-#include <glissade/material/material.h>
+#include <glissade/material/law_registry.h>
 #include <glissade/scene/section_reader.h>
 
 #include <algorithm>
@@ -39,6 +39,7 @@ namespace glissade
                         "",
                         Patterns::Anything(),
                         "As Material/Density; empty: the body's.");
+      LawRegistry::declare_parameters(prm);
     }
   } // namespace
 
@@ -54,8 +55,10 @@ namespace glissade
       prm.declare_entry("Law",
                         "neo-Hookean",
                         Patterns::Selection(
-                          text::joined(Material::law_names(), "|")),
-                        "Hyperelastic law (total Lagrangian).");
+                          text::joined(LawRegistry::names(), "|")),
+                        "Hyperelastic law (total Lagrangian): " +
+                          LawRegistry::documentation() + ".");
+      LawRegistry::declare_parameters(prm);
       prm.declare_entry("Young modulus",
                         "1",
                         Patterns::Double(),
@@ -140,6 +143,8 @@ namespace glissade
                    Kinematics::small_strain :
                    Kinematics::large_strain;
     thickness  = prm.get_double("Thickness");
+    law_settings =
+      LawRegistry::parse_parameters(prm.handler(), law, where + "/Material");
     const std::vector<std::string> region_names =
       Utilities::split_string_list(prm.get("Regions"), ',');
     prm.leave_subsection();
@@ -174,17 +179,21 @@ namespace glissade
                                   where + "/" + subsection);
         region.density =
           prm.number_or_inherited("Density", density, where + "/" + subsection);
-        prm.leave_subsection();
-        if (!(region.density >= 0.))
-          throw InputError(where + "/" + subsection + "/Density",
-                           "must be >= 0");
         if (region.law.empty())
           region.law = law;
-        const auto &laws = Material::law_names();
+        const auto laws = LawRegistry::names();
         if (std::find(laws.begin(), laws.end(), region.law) == laws.end())
           throw InputError(where + "/" + subsection + "/Law",
                            "'" + region.law + "' is not a law (" +
                              text::joined(laws, ", ") + ")");
+        region.law_settings =
+          LawRegistry::parse_parameters(prm.handler(),
+                                        region.law,
+                                        where + "/" + subsection);
+        prm.leave_subsection();
+        if (!(region.density >= 0.))
+          throw InputError(where + "/" + subsection + "/Density",
+                           "must be >= 0");
         check_moduli(region.young_modulus, region.poisson_ratio, subsection);
         regions.push_back(region);
       }

@@ -117,16 +117,20 @@ namespace glissade
     double      young_modulus = 1.;
     double      poisson_ratio = 0.3;
     double      density       = 0.;
+    /** The law's own settings (LawRegistry), opaque here. */
+    std::any law_settings;
   };
 
   struct MaterialDescription
   {
-    std::string     law           = "neo-Hookean";
-    double          young_modulus = 1.;
-    double          poisson_ratio = 0.3;
-    PlaneHypothesis hypothesis    = PlaneHypothesis::plane_strain;
-    Kinematics      kinematics    = Kinematics::large_strain;
-    double          thickness     = 1.;
+    std::string law           = "neo-Hookean";
+    double      young_modulus = 1.;
+    double      poisson_ratio = 0.3;
+    /** The law's own settings (LawRegistry), opaque here. */
+    std::any        law_settings;
+    PlaneHypothesis hypothesis = PlaneHypothesis::plane_strain;
+    Kinematics      kinematics = Kinematics::large_strain;
+    double          thickness  = 1.;
     /** Mass per unit reference volume: inertia (Time integration) and
      *  Gravity need it; 0 (the default) for a scene without either. */
     double density = 0.;

@@ -7,6 +7,7 @@
 #include <glissade/description/plane_hypothesis.h>
 #include <glissade/material/hyperelastic_law.h>
 
+#include <any>
 #include <memory>
 #include <string>
 #include <vector>
@@ -58,17 +59,17 @@ namespace glissade
              const PlaneHypothesis            hypothesis,
              const Kinematics kinematics = Kinematics::large_strain);
 
-    /** The names create() knows, for the .prm's patterns and checks. */
-    static const std::vector<std::string> &
-    law_names();
-
-    /** Creates the law by name (one of law_names()). */
+    /**
+     * The law by name (LawRegistry) with the Lame constants of E and nu,
+     * and the law's own settings (what its parse_parameters returned).
+     */
     static Material
     create(const std::string    &law_name,
            const double          young_modulus,
            const double          poisson_ratio,
            const PlaneHypothesis hypothesis,
-           const Kinematics      kinematics = Kinematics::large_strain);
+           const Kinematics      kinematics   = Kinematics::large_strain,
+           const std::any       &law_settings = {});
 
     /**
      * `hoop_strain_ratio` is u_r / r at the point (axisymmetric bodies
