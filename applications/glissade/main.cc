@@ -19,10 +19,51 @@
 
 #include <cstring>
 #include <iostream>
-#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
+  /** A study driver, by the name its file's Study entry gives. */
+  struct StudyDriver
+  {
+    std::string name;
+    std::string sentence;
+    void (*run)(const std::string &, const std::vector<std::string> &);
+  };
+
+  /** The study drivers of applications/paper_studies: one line each. */
+  const std::vector<StudyDriver> &
+  study_drivers()
+  {
+    using namespace glissade;
+    static const std::vector<StudyDriver> drivers = {
+      {"geometric",
+       "the geometric study of the paper's section 3.3 (see "
+       "prm/geometric_study.prm)",
+       &GeometricStudy::run},
+      {"case1",
+       "the beam on a half ring (section 4.1; prm/case1_study.prm)",
+       &ContactCaseStudy::run},
+      {"case2",
+       "the square between two half rings (section 4.2; "
+       "prm/case2_study.prm)",
+       &ContactCaseStudy::run},
+      {"case3",
+       "the concentric rings of section 4.3 in several variants (see "
+       "prm/case3_default.prm)",
+       &Case3Study::run},
+      {"friction",
+       "a scene for every master and friction coefficient "
+       "(prm/case3_friction.prm)",
+       &FrictionStudy::run},
+      {"trade",
+       "time and dofs against accuracy (prm/trade_study.prm)",
+       &TradeStudy::run}};
+    return drivers;
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -49,6 +90,13 @@ main(int argc, char **argv)
       print_usage(std::cerr);
       return 1;
     }
+  {
+    // (the Study entry's pattern and help are made from the drivers)
+    std::vector<std::pair<std::string, std::string>> names;
+    for (const StudyDriver &driver : study_drivers())
+      names.emplace_back(driver.name, driver.sentence);
+    SceneReader::register_studies(names);
+  }
   if (std::strcmp(argv[1], "--print-parameters") == 0)
     {
       SceneReader::print_parameters(std::cout);
@@ -97,21 +145,12 @@ main(int argc, char **argv)
                            study +
                            "' study driver, which runs its scenes "
                            "from the start");
-      // The study drivers, by the name their file's Study entry gives.
-      using StudyDriver =
-        void (*)(const std::string &, const std::vector<std::string> &);
-      const std::map<std::string, StudyDriver> studies = {
-        {"geometric", &GeometricStudy::run},
-        {"case1", &ContactCaseStudy::run},
-        {"case2", &ContactCaseStudy::run},
-        {"case3", &Case3Study::run},
-        {"friction", &FrictionStudy::run},
-        {"trade", &TradeStudy::run}};
-      if (const auto driver = studies.find(study); driver != studies.end())
-        {
-          driver->second(argv[1], overrides);
-          return 0;
-        }
+      for (const StudyDriver &driver : study_drivers())
+        if (driver.name == study)
+          {
+            driver.run(argv[1], overrides);
+            return 0;
+          }
       const SceneDescription scene = SceneReader::read_file(argv[1], overrides);
       Simulation             simulation(scene);
       interruption::install_handlers();

@@ -147,6 +147,27 @@ namespace glissade
 
 
 
+  namespace
+  {
+    std::vector<std::pair<std::string, std::string>> &
+    registered_studies()
+    {
+      static std::vector<std::pair<std::string, std::string>> studies;
+      return studies;
+    }
+  } // namespace
+
+
+
+  void
+  SceneReader::register_studies(
+    const std::vector<std::pair<std::string, std::string>> &studies)
+  {
+    registered_studies() = studies;
+  }
+
+
+
   void
   SceneReader::declare_parameters(
     ParameterHandler                                      &prm,
@@ -154,23 +175,19 @@ namespace glissade
     const std::vector<std::string>                        &contact_names,
     const std::map<std::string, std::vector<std::string>> &regions)
   {
-    prm.declare_entry(
-      "Study",
-      "simulation",
-      Patterns::Selection(
-        "simulation|geometric|case1|case2|case3|friction|trade"),
-      "simulation: run the scene below. geometric: the "
-      "geometric study of the paper's section 3.3 (see "
-      "prm/geometric_study.prm); case1, case2: the beam on a "
-      "half ring and the square between two half rings "
-      "(sections 4.1, 4.2; prm/case1_study.prm, "
-      "prm/case2_study.prm); case3: the concentric rings "
-      "of section 4.3 in several variants (see "
-      "prm/case3_default.prm); friction: a scene for every "
-      "master and friction coefficient "
-      "(prm/case3_friction.prm); trade: time and dofs "
-      "against accuracy (prm/trade_study.prm). A study's "
-      "own entries replace these.");
+    std::string pattern = "simulation",
+                help    = "simulation: run the scene below.";
+    for (const auto &[name, sentence] : registered_studies())
+      {
+        pattern += "|" + name;
+        help += " " + name + ": " + sentence + ".";
+      }
+    if (!registered_studies().empty())
+      help += " A study's own entries replace these.";
+    prm.declare_entry("Study",
+                      "simulation",
+                      Patterns::Selection(pattern),
+                      help);
     prm.enter_subsection("Scene");
     prm.declare_entry("Bodies",
                       "body",

@@ -48,10 +48,16 @@ namespace glissade
     study_type(const std::string &filename);
 
     /**
-     * Parses a study driver's file into `prm` (whose entries the driver has
-     * declared) and applies the command line's overrides, with the same
-     * messages as for scenes.
+     * The study drivers a program offers beside "simulation", by name with
+     * one sentence each: the Study entry's pattern and help are made from
+     * them. The program registers its table before it reads a file
+     * (applications/glissade/main.cc); a program without drivers (the
+     * tests) registers none, and its Study is "simulation".
      */
+    static void
+    register_studies(
+      const std::vector<std::pair<std::string, std::string>> &studies);
+
     /**
      * prm.get_double() and get_integer() for study drivers: a value that
      * matches its pattern but does not convert (a denormal, an integer out
@@ -68,6 +74,11 @@ namespace glissade
                 const std::string              &entry,
                 const std::string              &filename);
 
+    /**
+     * Parses a study driver's file into `prm` (whose entries the driver has
+     * declared) and applies the command line's overrides, with the same
+     * messages as for scenes.
+     */
     static void
     parse_study(dealii::ParameterHandler       &prm,
                 const std::string              &filename,
