@@ -61,7 +61,7 @@ namespace glissade
           if (variant == "mortar")
             overrides.push_back("Contact " + contact.name +
                                 "/Discretisation=mortar");
-          if (contact.master_body == "rigid")
+          if (contact.master == ContactDescription::MasterKind::obstacle)
             continue;
           overrides.push_back("Contact " + contact.name +
                               "/Surface=" + surface);
@@ -228,16 +228,17 @@ namespace glissade
       for (const auto &pair : pairs)
         {
           const ContactDescription &c = pair->settings();
-          if (c.master_body != "rigid" || c.obstacle != "disk")
+          if (c.master != ContactDescription::MasterKind::obstacle ||
+              c.obstacle != "disk")
             continue;
           const auto u        = pair->slave().vertex_displacements();
           double     smallest = std::numeric_limits<double>::max();
           for (const auto &node : pair->nodes())
             {
               const Point<2> x = node.reference_position + u[node.vertex];
-              const double   distance =
-                x.distance(c.obstacle_point) - c.obstacle_radius;
-              smallest = std::min(smallest, distance);
+              // (the disk's gap: the distance to its circle)
+              const double distance = pair->surface().project(x).gap;
+              smallest              = std::min(smallest, distance);
               if (node.reaction[1] > 0.)
                 result.max_active_distance =
                   std::max(result.max_active_distance, std::abs(distance));
@@ -555,7 +556,7 @@ namespace glissade
         const SceneDescription scene = SceneReader::read_file(scene_file);
         bool                   rigid = true;
         for (const auto &c : scene.contacts)
-          rigid = rigid && c.master_body == "rigid";
+          rigid = rigid && c.master == ContactDescription::MasterKind::obstacle;
         std::vector<ContactCaseResult> runs;
         for (const auto &variant : variants)
           {

@@ -53,7 +53,7 @@ namespace glissade
           overrides.push_back(
             "Contact " + contact.name +
             "/Friction coefficient=" + short_number(friction));
-          if (contact.master_body == "rigid")
+          if (contact.master == ContactDescription::MasterKind::obstacle)
             continue;
           overrides.push_back("Contact " + contact.name + "/Surface=" +
                               (variant == "q4" ? "faceted" : variant));

@@ -166,18 +166,12 @@ namespace glissade
                         SurfaceRegistry::Kind::rigid)),
                       SurfaceRegistry::documentation(
                         SurfaceRegistry::Kind::rigid));
+    // The pose of every obstacle: a reference point, its translation and a
+    // rotation about it. Each kind's shape is its own (below).
     prm.declare_entry("Point",
                       "0, 0",
                       Patterns::Anything(),
-                      "line: a point on it; disk, hole: the centre.");
-    prm.declare_entry("Normal",
-                      "0, 1",
-                      Patterns::Anything(),
-                      "line: the normal pointing out of the obstacle.");
-    prm.declare_entry("Radius",
-                      "1",
-                      Patterns::Double(0.),
-                      "disk, hole; casing: the mean radius R.");
+                      "line: a point on it; disk, hole, casing: the centre.");
     prm.declare_entry("Motion",
                       "0, 0",
                       Patterns::Anything(),
@@ -191,18 +185,7 @@ namespace glissade
       "casing's lobes, and for every obstacle it moves the material that "
       "friction rubs against (a turning drum). A blade turning at Omega "
       "sees its casing turn as '-Omega*t'.");
-    prm.declare_entry("Lobes",
-                      "2",
-                      Patterns::Integer(1),
-                      "casing: the number n of lobes, r(phi) = R - "
-                      "depth cos(n (phi - rotation)).");
-    prm.declare_entry("Lobe depth",
-                      "0",
-                      Patterns::Double(0.),
-                      "casing: how far the lobes come in from the circle "
-                      "of radius R (below R / (1 + n^2), so that the "
-                      "casing stays convex).");
-    // The rigid obstacles' own entries.
+    // The rigid obstacles' own entries (Normal, Radius, Lobes, ...).
     SurfaceRegistry::declare_parameters(prm, SurfaceRegistry::Kind::rigid);
     prm.leave_subsection();
   }
@@ -261,14 +244,15 @@ namespace glissade
     SectionReader                  &prm,
     const std::vector<std::string> &body_names)
   {
-    entry           = prm.file() + ": Contact " + name;
-    slave_body      = prm.get("Slave body");
-    slave_boundary  = prm.get("Slave boundary");
-    master_body     = prm.get("Master body");
+    entry          = prm.file() + ": Contact " + name;
+    slave_body     = prm.get("Slave body");
+    slave_boundary = prm.get("Slave boundary");
+    master_body    = prm.get("Master body");
+    master = master_body == "rigid" ? MasterKind::obstacle : MasterKind::body;
     master_boundary = prm.get("Master boundary");
     surface         = prm.get("Surface");
     discretisation  = prm.get("Discretisation");
-    if (master_body != "rigid")
+    if (master == MasterKind::body)
       surface_settings = SurfaceRegistry::parse_parameters(
         prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);
     force_transfer = prm.get("Force transfer") == "spline" ?
@@ -294,25 +278,15 @@ namespace glissade
     obstacle = prm.get("Type");
     obstacle_point =
       entry_format::coordinates(prm.get("Point"), entry + "/Obstacle/Point");
-    const Point<2> normal =
-      entry_format::coordinates(prm.get("Normal"), entry + "/Obstacle/Normal");
-    obstacle_normal     = normal;
-    obstacle_radius     = prm.get_double("Radius");
-    obstacle_motion     = text::split_top_level(prm.get("Motion"), ',');
-    obstacle_rotation   = text::trim(prm.get("Rotation"));
-    obstacle_lobes      = prm.get_integer("Lobes");
-    obstacle_lobe_depth = prm.get_double("Lobe depth");
-    if (master_body == "rigid")
+    obstacle_motion   = text::split_top_level(prm.get("Motion"), ',');
+    obstacle_rotation = text::trim(prm.get("Rotation"));
+    if (master == MasterKind::obstacle)
       surface_settings =
         SurfaceRegistry::parse_parameters(prm.handler(),
                                           SurfaceRegistry::Kind::rigid,
                                           obstacle,
                                           entry + "/Obstacle");
     prm.leave_subsection();
-    if (!(obstacle_radius <= 1e100))
-      throw InputError(entry + "/Obstacle/Radius",
-                       "must be finite and below 1e100 (squared distances "
-                       "would overflow)");
 
     const auto known = [&](const std::string &b) {
       return std::find(body_names.begin(), body_names.end(), b) !=
@@ -321,7 +295,7 @@ namespace glissade
     if (!known(slave_body))
       throw InputError(entry + "/Slave body",
                        "there is no body '" + slave_body + "'");
-    if (master_body != "rigid" && !known(master_body))
+    if (master == MasterKind::body && !known(master_body))
       throw InputError(entry + "/Master body",
                        "there is no body '" + master_body +
                          "' (or use 'rigid')");
@@ -330,7 +304,7 @@ namespace glissade
                        "a body cannot be its own master");
     if (slave_boundary.empty())
       throw InputError(entry + "/Slave boundary", "must be given");
-    if (master_body != "rigid" && master_boundary.empty())
+    if (master == MasterKind::body && master_boundary.empty())
       throw InputError(entry + "/Master boundary", "must be given");
     if (obstacle_motion.size() != 2)
       throw InputError(entry + "/Obstacle/Motion",
@@ -339,28 +313,5 @@ namespace glissade
                                     entry + "/Obstacle/Motion");
     entry_format::check_expressions({obstacle_rotation},
                                     entry + "/Obstacle/Rotation");
-    if (master_body == "rigid" && obstacle == "casing" &&
-        !(obstacle_radius > 0. &&
-          obstacle_lobe_depth * (1. + obstacle_lobes * obstacle_lobes) <
-            obstacle_radius))
-      throw InputError(entry + "/Obstacle/Lobe depth",
-                       "must be below Radius / (1 + Lobes^2) = " +
-                         std::to_string(
-                           obstacle_radius /
-                           (1. + obstacle_lobes * obstacle_lobes)) +
-                         ", and the Radius above 0: a deeper lobe makes the "
-                         "casing concave, where a node has two closest "
-                         "points");
-    if (master_body == "rigid" && obstacle == "line" && normal.norm() == 0.)
-      throw InputError(entry + "/Obstacle/Normal", "must not be zero");
-    // A disk of radius 0 is a point and a hole of radius 0 has no inside:
-    // no slave node would ever touch either, and the run would end with
-    // no contact and exit 0.
-    if (master_body == "rigid" && (obstacle == "disk" || obstacle == "hole") &&
-        !(obstacle_radius > 0.))
-      throw InputError(entry + "/Obstacle/Radius",
-                       "must be > 0 for a " + obstacle +
-                         " (a radius of 0 makes it a point that no slave "
-                         "node ever touches)");
   }
 } // namespace glissade

@@ -102,30 +102,7 @@ namespace glissade
     Point<2>
     coordinates(const std::string &text_value, const std::string &where)
     {
-      const auto parts = text::split_top_level(text_value, ',');
-      if (parts.size() != 2)
-        throw InputError(where,
-                         "expected two coordinates 'x, y', got '" + text_value +
-                           "'");
-      // Every character must belong to the number ("0.5abc" and "0.5*t"
-      // were read as 0.5), and the number must be finite and small enough
-      // that squared distances do not overflow.
-      double x[2];
-      for (unsigned int i = 0; i < 2; ++i)
-        {
-          const std::string part = text::trim(parts[i]);
-          char             *end  = nullptr;
-          x[i]                   = std::strtod(part.c_str(), &end);
-          if (part.empty() || *end != '\0')
-            throw InputError(where,
-                             "cannot read coordinates '" + text_value + "': '" +
-                               part + "' is not a number");
-          if (!std::isfinite(x[i]) || std::abs(x[i]) > 1e100)
-            throw InputError(where,
-                             "coordinates '" + text_value +
-                               "': each must be finite and below 1e100 in "
-                               "magnitude");
-        }
+      const auto x = text::coordinates(text_value, where);
       return Point<2>(x[0], x[1]);
     }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <exception>
 #include <string>
 #include <vector>
@@ -22,6 +23,14 @@ namespace glissade
     /** The items with `separator` between them ("a|b|c", "a, b, c"). */
     std::string
     joined(const std::vector<std::string> &items, const std::string &separator);
+
+    /**
+     * "x, y": two finite numbers below 1e100 in magnitude and nothing else
+     * ("0.5abc" and "0.5*t" are refused); an InputError naming `where`
+     * otherwise.
+     */
+    std::array<double, 2>
+    coordinates(const std::string &text_value, const std::string &where);
 
     /** True for "point(x, y)"; fills x and y. */
     bool

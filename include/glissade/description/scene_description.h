@@ -354,7 +354,17 @@ namespace glissade
     std::string name;
     std::string slave_body;
     std::string slave_boundary;
-    std::string master_body; // "rigid" for an analytic obstacle
+    /**
+     * The master: another body's boundary, or a rigid analytic obstacle
+     * (`Master body = rigid`, subsection Obstacle).
+     */
+    enum class MasterKind
+    {
+      body,
+      obstacle
+    };
+    MasterKind  master = MasterKind::body;
+    std::string master_body; // "rigid" for an obstacle, as the .prm says
     std::string master_boundary;
     std::string surface = "faceted"; // faceted | bspline | hermite
     /** B-spline master: the force goes to the two nodes of the segment
@@ -375,16 +385,13 @@ namespace glissade
     std::string discretisation = "node-to-segment";
     double      alert_distance = 0.;
     double      friction       = 0.;
-    // Rigid obstacle.
+    // A rigid obstacle: its kind and its pose (its shape, Normal, Radius,
+    // ..., is the kind's own, in surface_settings).
     std::string              obstacle = "line"; // line | disk | hole | casing
     dealii::Point<2>         obstacle_point; // line: a point; disk/hole: centre
-    dealii::Tensor<1, 2>     obstacle_normal; // line: normal pointing out of it
-    double                   obstacle_radius = 1.;
-    std::vector<std::string> obstacle_motion = {"0", "0"}; // translation(t)
-    std::string  obstacle_rotation   = "0"; // angle(t) about obstacle_point
-    unsigned int obstacle_lobes      = 2;   // casing
-    double       obstacle_lobe_depth = 0.;  // casing
-    std::string  entry;                     // "Contact <name>"
+    std::vector<std::string> obstacle_motion   = {"0", "0"}; // translation(t)
+    std::string              obstacle_rotation = "0"; // angle(t) about point
+    std::string              entry;                   // "Contact <name>"
 
     /** The subsection Contact <name> (source/scene/contact_section.cc). */
     static void

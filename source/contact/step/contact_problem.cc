@@ -33,12 +33,13 @@ namespace glissade
     InputErrorList mistakes;
     for (const auto &c : scene.contacts)
       mistakes.collect([&]() {
-        auto pair = std::make_unique<ContactPair>(c,
-                                                  *find(c.slave_body),
-                                                  c.master_body == "rigid" ?
-                                                    nullptr :
-                                                    find(c.master_body),
-                                                  timer);
+        auto pair = std::make_unique<ContactPair>(
+          c,
+          *find(c.slave_body),
+          c.master == ContactDescription::MasterKind::obstacle ?
+            nullptr :
+            find(c.master_body),
+          timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
       });

@@ -1,10 +1,14 @@
+#include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/base/user_function.h>
 #include <glissade/contact/surfaces/master_surface.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/description/scene_description.h>
 
+#include <any>
 #include <cmath>
 #include <memory>
+#include <string>
 
 namespace glissade
 {
@@ -12,6 +16,14 @@ namespace glissade
 
   namespace
   {
+    /** A casing's shape (`Obstacle/Radius`, `Lobes`, `Lobe depth`). */
+    struct CasingShape
+    {
+      double       radius = 1.;
+      unsigned int lobes  = 2;
+      double       depth  = 0.;
+    };
+
     /**
      * What the rigid obstacles share: no dofs, a prescribed translation
      * m(t) of their reference point (`Obstacle/Motion`) and a rotation
@@ -149,8 +161,8 @@ namespace glissade
     public:
       LineObstacle(const SurfaceContext &context)
         : RigidObstacle(context.description)
-        , normal(context.description.obstacle_normal /
-                 std::max(context.description.obstacle_normal.norm(), 1e-300))
+        , normal(
+            std::any_cast<Tensor<1, 2>>(context.description.surface_settings))
       {}
 
       SurfacePoint
@@ -187,7 +199,7 @@ namespace glissade
     public:
       CircleObstacle(const SurfaceContext &context, const bool hole)
         : RigidObstacle(context.description)
-        , radius(context.description.obstacle_radius)
+        , radius(std::any_cast<double>(context.description.surface_settings))
         , hole(hole)
       {}
 
@@ -243,9 +255,13 @@ namespace glissade
     public:
       CasingObstacle(const SurfaceContext &context)
         : RigidObstacle(context.description)
-        , radius(context.description.obstacle_radius)
-        , depth(context.description.obstacle_lobe_depth)
-        , lobes(context.description.obstacle_lobes)
+        , radius(
+            std::any_cast<CasingShape>(context.description.surface_settings)
+              .radius)
+        , depth(std::any_cast<CasingShape>(context.description.surface_settings)
+                  .depth)
+        , lobes(std::any_cast<CasingShape>(context.description.surface_settings)
+                  .lobes)
       {}
 
       SurfacePoint
@@ -339,5 +355,136 @@ namespace glissade
   make_casing_obstacle(const SurfaceContext &context)
   {
     return std::make_unique<CasingObstacle>(context);
+  }
+
+
+
+  // The obstacles' own entries: each kind declares and reads the entries of
+  // its shape (SurfaceRegistry); Point, Motion and Rotation, the pose of
+  // every obstacle, are the pair's. An entry that several kinds read
+  // (Radius) is declared by each with the same text.
+
+  namespace
+  {
+    void
+    declare_radius(ParameterHandler &prm)
+    {
+      prm.declare_entry("Radius",
+                        "1",
+                        Patterns::Double(0.),
+                        "disk, hole: the radius; casing: the mean radius R.");
+    }
+
+    double
+    parse_radius(const ParameterHandler &prm,
+                 const std::string      &where,
+                 const std::string      &kind)
+    {
+      const double radius = prm.get_double("Radius");
+      if (!(radius <= 1e100))
+        throw InputError(where + "/Radius",
+                         "must be finite and below 1e100 (squared distances "
+                         "would overflow)");
+      // A disk of radius 0 is a point and a hole of radius 0 has no inside:
+      // no slave node would ever touch either, and the run would end with
+      // no contact and exit 0.
+      if (!(radius > 0.))
+        throw InputError(where + "/Radius",
+                         "must be > 0 for a " + kind +
+                           " (a radius of 0 makes it a point that no slave "
+                           "node ever touches)");
+      return radius;
+    }
+  } // namespace
+
+
+
+  void
+  declare_line_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Normal",
+                      "0, 1",
+                      Patterns::Anything(),
+                      "line: the normal pointing out of the obstacle.");
+  }
+
+
+
+  std::any
+  parse_line_parameters(const ParameterHandler &prm, const std::string &where)
+  {
+    const auto n = text::coordinates(prm.get("Normal"), where + "/Normal");
+    const Tensor<1, 2> normal({n[0], n[1]});
+    if (normal.norm() == 0.)
+      throw InputError(where + "/Normal", "must not be zero");
+    return Tensor<1, 2>(normal / normal.norm());
+  }
+
+
+
+  void
+  declare_circle_parameters(ParameterHandler &prm)
+  {
+    declare_radius(prm);
+  }
+
+
+
+  std::any
+  parse_disk_parameters(const ParameterHandler &prm, const std::string &where)
+  {
+    return parse_radius(prm, where, "disk");
+  }
+
+
+
+  std::any
+  parse_hole_parameters(const ParameterHandler &prm, const std::string &where)
+  {
+    return parse_radius(prm, where, "hole");
+  }
+
+
+
+  void
+  declare_casing_parameters(ParameterHandler &prm)
+  {
+    declare_radius(prm);
+    prm.declare_entry("Lobes",
+                      "2",
+                      Patterns::Integer(1),
+                      "casing: the number n of lobes, r(phi) = R - "
+                      "depth cos(n (phi - rotation)).");
+    prm.declare_entry("Lobe depth",
+                      "0",
+                      Patterns::Double(0.),
+                      "casing: how far the lobes come in from the circle "
+                      "of radius R (below R / (1 + n^2), so that the "
+                      "casing stays convex).");
+  }
+
+
+
+  std::any
+  parse_casing_parameters(const ParameterHandler &prm, const std::string &where)
+  {
+    CasingShape shape;
+    shape.radius = prm.get_double("Radius");
+    shape.lobes  = prm.get_integer("Lobes");
+    shape.depth  = prm.get_double("Lobe depth");
+    if (!(shape.radius <= 1e100))
+      throw InputError(where + "/Radius",
+                       "must be finite and below 1e100 (squared distances "
+                       "would overflow)");
+    if (!(shape.radius > 0. &&
+          shape.depth * (1. + shape.lobes * shape.lobes) < shape.radius))
+      throw InputError(where + "/Lobe depth",
+                       "must be below Radius / (1 + Lobes^2) = " +
+                         std::to_string(shape.radius /
+                                        (1. + shape.lobes * shape.lobes)) +
+                         ", and the Radius above 0: a deeper lobe makes the "
+                         "casing concave, where a node has two closest "
+                         "points");
+    return shape;
   }
 } // namespace glissade

@@ -19,12 +19,26 @@ namespace glissade
   make_hermite_surface(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
   make_line_obstacle(const SurfaceContext &);
+  void
+  declare_line_parameters(ParameterHandler &);
+  std::any
+  parse_line_parameters(const ParameterHandler &, const std::string &);
   std::unique_ptr<MasterSurface>
   make_disk_obstacle(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
   make_hole_obstacle(const SurfaceContext &);
+  void
+  declare_circle_parameters(ParameterHandler &);
+  std::any
+  parse_disk_parameters(const ParameterHandler &, const std::string &);
+  std::any
+  parse_hole_parameters(const ParameterHandler &, const std::string &);
   std::unique_ptr<MasterSurface>
   make_casing_obstacle(const SurfaceContext &);
+  void
+  declare_casing_parameters(ParameterHandler &);
+  std::any
+  parse_casing_parameters(const ParameterHandler &, const std::string &);
 
 
 
@@ -48,17 +62,31 @@ namespace glissade
        Kind::deformable,
        "the C1 edges of a master body of Hermite elements",
        make_hermite_surface},
-      {"line", Kind::rigid, "the half-plane behind a line", make_line_obstacle},
-      {"disk", Kind::rigid, "a solid disk", make_disk_obstacle},
+      {"line",
+       Kind::rigid,
+       "the half-plane behind a line (Point, Normal)",
+       make_line_obstacle,
+       declare_line_parameters,
+       parse_line_parameters},
+      {"disk",
+       Kind::rigid,
+       "a solid disk (Point its centre, Radius)",
+       make_disk_obstacle,
+       declare_circle_parameters,
+       parse_disk_parameters},
       {"hole",
        Kind::rigid,
-       "the outside of a circular hole",
-       make_hole_obstacle},
+       "the outside of a circular hole (Point its centre, Radius)",
+       make_hole_obstacle,
+       declare_circle_parameters,
+       parse_hole_parameters},
       {"casing",
        Kind::rigid,
-       "the inside of a casing ovalised into lobes (Lobes, Lobe depth), "
-       "e.g. about a turning blade",
-       make_casing_obstacle},
+       "the inside of a casing ovalised into lobes (Point its centre, "
+       "Radius, Lobes, Lobe depth), e.g. about a turning blade",
+       make_casing_obstacle,
+       declare_casing_parameters,
+       parse_casing_parameters},
     };
     return list;
   }
