@@ -1,9 +1,8 @@
 #pragma once
 
-// A deliberately small test harness: each test is a function registered by
-// name; ctest runs `glissade_tests <name>`. A failed check throws, the
-// program prints why and exits non-zero. Every test prints the figures it
-// checks, so a ctest log is also a record of what was measured.
+// What glissade_tests' tests share beyond the harness (harness.h): checks
+// of figures against references, and scenes and closed forms that several
+// tests use.
 
 #include <cmath>
 #include <functional>
@@ -14,34 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "harness.h"
+
 namespace glissade_tests
 {
-  using TestFunction = std::function<void()>;
-
-  std::map<std::string, TestFunction> &
-  registry();
-
-  struct Registration
-  {
-    Registration(const std::string &name, TestFunction f)
-    {
-      registry()[name] = std::move(f);
-    }
-  };
-
-  class CheckFailed : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
-
-  inline void
-  check(const bool condition, const std::string &what)
-  {
-    if (!condition)
-      throw CheckFailed(what);
-  }
-
   /** |measured - expected| <= tolerance * |expected|, printed either way. */
   inline void
   check_relative(const double       measured,
@@ -161,8 +136,3 @@ namespace glissade_tests
            conditions + "\n end\nend\n";
   }
 } // namespace glissade_tests
-
-#define GLISSADE_TEST(name)                                                    \
-  static void                         test_##name();                           \
-  static glissade_tests::Registration registration_##name(#name, test_##name); \
-  static void                         test_##name()

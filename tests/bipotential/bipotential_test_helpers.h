@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "../harness.h"
+
 namespace test_helpers
 {
   using glissade::BiPotentialSolver;
@@ -18,14 +20,11 @@ namespace test_helpers
   using Vector2    = BiPotentialSolver::Vector2;
   using NodeStatus = BiPotentialSolver::NodeStatus;
 
-  inline int n_failures = 0;
-
+  /** A line of the test's table (glissade_tests::expect). */
   inline void
   check(const bool passed, const std::string &what)
   {
-    std::printf("  [%s] %s\n", passed ? "pass" : "FAIL", what.c_str());
-    if (!passed)
-      ++n_failures;
+    glissade_tests::expect(passed, what);
   }
 
   inline std::string

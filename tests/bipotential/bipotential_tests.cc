@@ -16,7 +16,6 @@
 #include <random>
 #include <string>
 
-#include "../test_groups.h"
 #include "bipotential_hertz_timing.h"
 #include "bipotential_reference.h"
 #include "bipotential_test_helpers.h"
@@ -648,33 +647,17 @@ namespace
 
 // Each group is a ctest test of its own ("contact_local_<group>"); the
 // Hertz check also prints timings.
-int
-main(int argc, char **argv)
-{
-  // Each group of `tests` is a ctest test ("contact_local_<group>",
-  // tests/test_groups.h); the Hertz timing is printed by the benchmark
-  // target.
-  const glissade_tests::Groups tests = {
-    {"single_node_frictionless", test_single_node_frictionless},
-    {"coupled_frictionless", test_coupled_frictionless},
-    {"nonsymmetric_frictionless", test_nonsymmetric_frictionless},
-    {"single_node_coulomb", test_single_node_coulomb},
-    {"coupled_coulomb", test_coupled_coulomb},
-    {"beta_range", test_beta},
-    {"degenerate_input", test_degenerate_input},
-    {"block_sparse_storage", test_block_sparse_storage},
-    {"ill_conditioned_polish", test_ill_conditioned_polish}};
-  std::function<void()> group;
-  int                   exit_code = 0;
-  if (!glissade_tests::choose_group(argc,
-                                    argv,
-                                    tests,
-                                    {{"hertz_and_timing",
-                                      test_hertz_and_timing}},
-                                    group,
-                                    exit_code))
-    return exit_code;
-  group();
-  std::printf("\n%d failure(s)\n", n_failures);
-  return n_failures == 0 ? 0 : 1;
-}
+// Each is a ctest test of its own ("contact_local_<name>",
+// tests/harness.h); the Hertz timing is printed by the benchmark target.
+static const glissade_tests::Registrations tests = {
+  {{"single_node_frictionless", test_single_node_frictionless},
+   {"coupled_frictionless", test_coupled_frictionless},
+   {"nonsymmetric_frictionless", test_nonsymmetric_frictionless},
+   {"single_node_coulomb", test_single_node_coulomb},
+   {"coupled_coulomb", test_coupled_coulomb},
+   {"beta_range", test_beta},
+   {"degenerate_input", test_degenerate_input},
+   {"block_sparse_storage", test_block_sparse_storage},
+   {"ill_conditioned_polish", test_ill_conditioned_polish}}};
+static const glissade_tests::Registrations benchmarks =
+  {{{"hertz_and_timing", test_hertz_and_timing}}, false};

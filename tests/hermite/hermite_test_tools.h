@@ -10,9 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "../harness.h"
+
 namespace hermite_tests
 {
-  /** Prints each figure with its bound and counts the failures. */
+  /** Prints each figure with its bound (glissade_tests::expect). */
   class Checker
   {
   public:
@@ -20,14 +22,14 @@ namespace hermite_tests
     void
     at_most(const std::string &name, const double value, const double bound)
     {
-      const bool ok = value <= bound; // false for NaN, as wanted
-      std::printf("  %-66s %10.3e  (<= %.1e) %s\n",
-                  name.c_str(),
-                  value,
-                  bound,
-                  ok ? "ok" : "FAILED");
-      if (!ok)
-        ++n_failures;
+      char text[256];
+      std::snprintf(text,
+                    sizeof(text),
+                    "%-66s %10.3e  (<= %.1e)",
+                    name.c_str(),
+                    value,
+                    bound);
+      glissade_tests::expect(value <= bound, text); // NaN fails, as wanted
     }
 
     /** Passes if lower <= value <= upper (a rate, a rank). */
@@ -37,18 +39,16 @@ namespace hermite_tests
             const double       lower,
             const double       upper)
     {
-      const bool ok = value >= lower && value <= upper;
-      std::printf("  %-66s %10.4g  (in [%g, %g]) %s\n",
-                  name.c_str(),
-                  value,
-                  lower,
-                  upper,
-                  ok ? "ok" : "FAILED");
-      if (!ok)
-        ++n_failures;
+      char text[256];
+      std::snprintf(text,
+                    sizeof(text),
+                    "%-66s %10.4g  (in [%g, %g])",
+                    name.c_str(),
+                    value,
+                    lower,
+                    upper);
+      glissade_tests::expect(value >= lower && value <= upper, text);
     }
-
-    unsigned int n_failures = 0;
   };
 
   /** Uniform random numbers from a fixed seed, so every run is the same. */

@@ -15,7 +15,6 @@
 #include <map>
 #include <string>
 
-#include "../test_groups.h"
 #include "hermite_test_poisson.h"
 #include "hermite_test_reference.h"
 #include "hermite_test_tools.h"
@@ -606,26 +605,38 @@ namespace
 } // namespace
 
 // Each group is a ctest test of its own ("elements_hermite_<group>").
-int
-main(int argc, char **argv)
-{
-  // Each group is a ctest test ("elements_hermite_<group>",
-  // tests/test_groups.h).
-  Checker                      check;
-  Random                       random;
-  const glissade_tests::Groups tests = {
-    {"reference_functions", [&] { test_reference_functions(check, random); }},
-    {"numbering", [&] { test_numbering(check); }},
-    {"geometry_linear_fields",
-     [&] { test_geometry_and_linear_fields(check, random); }},
-    {"edges_c1", [&] { test_edges(check, random); }},
-    {"integration", [&] { test_integration(check); }},
-    {"poisson_convergence", [&] { test_poisson(check); }}};
-  std::function<void()> group;
-  int                   exit_code = 0;
-  if (!glissade_tests::choose_group(argc, argv, tests, {}, group, exit_code))
-    return exit_code;
-  group();
-  std::printf("\n%u Hermite element check(s) failed.\n", check.n_failures);
-  return check.n_failures == 0 ? 0 : 1;
-}
+// Each is a ctest test of its own ("elements_hermite_<name>",
+// tests/harness.h).
+static const glissade_tests::Registrations tests = {
+  {{"reference_functions",
+    [] {
+      Checker check;
+      Random  random;
+      test_reference_functions(check, random);
+    }},
+   {"numbering",
+    [] {
+      Checker check;
+      test_numbering(check);
+    }},
+   {"geometry_linear_fields",
+    [] {
+      Checker check;
+      Random  random;
+      test_geometry_and_linear_fields(check, random);
+    }},
+   {"edges_c1",
+    [] {
+      Checker check;
+      Random  random;
+      test_edges(check, random);
+    }},
+   {"integration",
+    [] {
+      Checker check;
+      test_integration(check);
+    }},
+   {"poisson_convergence", [] {
+      Checker check;
+      test_poisson(check);
+    }}}};

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "../harness.h"
+
 namespace surface_test_tools
 {
   using namespace glissade;
@@ -26,9 +28,8 @@ namespace surface_test_tools
   inline const double pi = std::acos(-1.);
 
   // ---------------------------------------------------------------- helpers
-  inline unsigned int n_checks = 0, n_failures = 0;
-
-  // Print the figure being checked and count failures.
+  // Print the figure being checked as a line of the table
+  // (glissade_tests::expect: counted, the test goes on).
   inline void
   check(const bool ok, const char *format, ...)
   {
@@ -37,10 +38,7 @@ namespace surface_test_tools
     va_start(args, format);
     std::vsnprintf(text, sizeof(text), format, args);
     va_end(args);
-    ++n_checks;
-    if (!ok)
-      ++n_failures;
-    std::printf("%s %s\n", ok ? "  [ ok ]" : "  [FAIL]", text);
+    glissade_tests::expect(ok, text);
   }
 
   // A deterministic generator (splitmix64), so the point sets are the same

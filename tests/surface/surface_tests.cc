@@ -11,7 +11,6 @@
 #include <map>
 #include <string>
 
-#include "../test_groups.h"
 #include "projection_tests.h"
 #include "surface_test_tools.h"
 
@@ -462,29 +461,17 @@ namespace
 } // namespace
 
 
-// Each group of `tests` is a ctest test of its own ("surface_<group>",
-// tests/test_groups.h); the timings are printed by the benchmark target, not
-// by a test.
-int
-main(int argc, char **argv)
-{
-  const glissade_tests::Groups tests = {
-    {"bspline_paper_system", test_against_paper_system},
-    {"interpolation_continuity", test_interpolation_and_continuity},
-    {"straight_line", test_straight_line},
-    {"weights", test_weights},
-    {"projection_on_curve", test_projection_of_curve_points},
-    {"projection_is_closest", test_projection_is_closest},
-    {"projection_circle_convergence", test_circle_convergence},
-    {"projection_robustness", test_projection_robustness}};
-  std::function<void()> group;
-  int                   exit_code = 0;
-  if (!glissade_tests::choose_group(
-        argc, argv, tests, {{"timings", print_timings}}, group, exit_code))
-    return exit_code;
-  group();
-  std::printf("\n%u checks, %u failed\n", n_checks, n_failures);
-  return n_failures == 0 && n_checks + (std::string(argv[1]) == "timings") > 0 ?
-           0 :
-           1;
-}
+// Each is a ctest test of its own ("surface_<name>", tests/harness.h); the
+// timings are printed by the benchmark target, not by a test.
+static const glissade_tests::Registrations tests = {
+  {{"bspline_paper_system", test_against_paper_system},
+   {"interpolation_continuity", test_interpolation_and_continuity},
+   {"straight_line", test_straight_line},
+   {"weights", test_weights},
+   {"projection_on_curve", test_projection_of_curve_points},
+   {"projection_is_closest", test_projection_is_closest},
+   {"projection_circle_convergence", test_circle_convergence},
+   {"projection_robustness", test_projection_robustness}}};
+static const glissade_tests::Registrations benchmarks = {{{"timings",
+                                                           print_timings}},
+                                                         false};

@@ -23,68 +23,7 @@ namespace glissade
     class HermiteSurface : public CurveSurface
     {
     public:
-      HermiteSurface(const SurfaceContext &context)
-        : CurveSurface(*context.master,
-                       context.description.master_boundary,
-                       context.description.entry + "/Master boundary")
-      {
-        const auto *hermite =
-          dynamic_cast<const HermiteSpace *>(&master.space());
-        if (hermite == nullptr)
-          throw InputError(context.description.entry + "/Surface",
-                           "a hermite surface needs a master body of "
-                           "Hermite elements (body '" +
-                             master.name() + "' uses " + master.space().name() +
-                             ")");
-        curve = std::make_unique<HermiteCurve>(chain.closed);
-
-        // Per node its six dofs (x, dx/dX, dx/dY, y, dy/dX, dy/dY), and per
-        // segment the reference tangents dX/ds at its two ends.
-        const FiniteElement<2> &fe = master.space().finite_element();
-        derivative_dofs.resize(chain.vertices.size());
-        for (unsigned int i = 0; i < chain.faces.size(); ++i)
-          {
-            const auto        &face = chain.faces[i];
-            const unsigned int a = i, b = (i + 1) % chain.vertices.size();
-            const auto         edge =
-              HermiteQuadrilateral::edge_from_dealii_face(face.face);
-            const auto ends = HermiteQuadrilateral::edge_nodes(edge.edge);
-            const auto dir =
-              HermiteQuadrilateral::edge_reference_direction(edge.edge);
-            const auto &element =
-              hermite->element(face.cell->active_cell_index());
-            std::array<Tensor<1, 2>, 2> tangent_at_end;
-            for (unsigned int e = 0; e < 2; ++e)
-              {
-                const auto ref =
-                  HermiteQuadrilateral::node_reference_point(ends[e]);
-                const auto J = element.jacobian(ref[0], ref[1]);
-                // d/ds on [-1, 1] -> d/dsigma on [0, 1]: a factor 2.
-                tangent_at_end[e] =
-                  2. * Tensor<1, 2>({J[0][0] * dir[0] + J[0][1] * dir[1],
-                                     J[1][0] * dir[0] + J[1][1] * dir[1]});
-                const unsigned int v =
-                  HermiteQuadrilateral::dealii_vertex_from_node(ends[e]);
-                const unsigned int node =
-                  face.cell->vertex_index(v) == chain.vertices[a] ? a : b;
-                for (unsigned int k = 0; k < 6; ++k)
-                  derivative_dofs[node][fe.system_to_component_index(v * 6 + k)
-                                          .first] =
-                    face.cell->vertex_dof_index(v, k);
-              }
-            const bool same_direction =
-              face.cell->vertex_index(
-                HermiteQuadrilateral::dealii_vertex_from_node(ends[0])) ==
-              chain.vertices[a];
-            reference_tangents.push_back(
-              same_direction ?
-                std::array<Tensor<1, 2>, 2>{
-                  {tangent_at_end[0], tangent_at_end[1]}} :
-                std::array<Tensor<1, 2>, 2>{
-                  {-tangent_at_end[1], -tangent_at_end[0]}});
-          }
-        check_reference_edge_is_smooth(context);
-      }
+      HermiteSurface(const SurfaceContext &context);
 
       std::vector<types::global_dof_index>
       dofs() const override
@@ -150,44 +89,112 @@ namespace glissade
        * polygonal boundary) are genuine.
        */
       void
-      check_reference_edge_is_smooth(const SurfaceContext &context) const
-      {
-        const unsigned int n_segments = reference_tangents.size();
-        unsigned int       interior = 0, kinks = 0;
-        double             largest = 0.;
-        for (unsigned int i = 0; i < n_segments; ++i)
-          {
-            if (!chain.closed && i + 1 == n_segments)
-              break;
-            const Tensor<1, 2> &before = reference_tangents[i][1];
-            const Tensor<1, 2> &after =
-              reference_tangents[(i + 1) % n_segments][0];
-            const double angle =
-              std::atan2(std::abs(cross_product_2d(before) * after),
-                         before * after);
-            ++interior;
-            largest = std::max(largest, angle);
-            if (angle > 1e-6)
-              ++kinks;
-          }
-        if (interior > 0 && 2 * kinks > interior)
-          throw InputError(
-            context.description.entry + "/Surface",
-            "a hermite surface on body '" + master.name() +
-              "': the reference geometry of its master boundary has a "
-              "tangent that jumps at " +
-              std::to_string(kinks) + " of its " + std::to_string(interior) +
-              " nodes (by up to " +
-              std::to_string(largest * 180. / numbers::PI) +
-              " degrees), as in a mesh read from a file, whose cells have "
-              "straight sides; such an edge is no smoother than a faceted "
-              "one. Use Surface = bspline, or a generated mesh (ring, half "
-              "ring) whose cells follow the curved boundary");
-      }
+      check_reference_edge_is_smooth(const SurfaceContext &context) const;
 
       std::vector<std::array<types::global_dof_index, 6>> derivative_dofs;
       std::vector<std::array<Tensor<1, 2>, 2>>            reference_tangents;
     };
+
+
+
+    HermiteSurface::HermiteSurface(const SurfaceContext &context)
+      : CurveSurface(*context.master,
+                     context.description.master_boundary,
+                     context.description.entry + "/Master boundary")
+    {
+      const auto *hermite = dynamic_cast<const HermiteSpace *>(&master.space());
+      if (hermite == nullptr)
+        throw InputError(context.description.entry + "/Surface",
+                         "a hermite surface needs a master body of "
+                         "Hermite elements (body '" +
+                           master.name() + "' uses " + master.space().name() +
+                           ")");
+      curve = std::make_unique<HermiteCurve>(chain.closed);
+
+      // Per node its six dofs (x, dx/dX, dx/dY, y, dy/dX, dy/dY), and per
+      // segment the reference tangents dX/ds at its two ends.
+      const FiniteElement<2> &fe = master.space().finite_element();
+      derivative_dofs.resize(chain.vertices.size());
+      for (unsigned int i = 0; i < chain.faces.size(); ++i)
+        {
+          const auto        &face = chain.faces[i];
+          const unsigned int a = i, b = (i + 1) % chain.vertices.size();
+          const auto         edge =
+            HermiteQuadrilateral::edge_from_dealii_face(face.face);
+          const auto ends = HermiteQuadrilateral::edge_nodes(edge.edge);
+          const auto dir =
+            HermiteQuadrilateral::edge_reference_direction(edge.edge);
+          const auto &element =
+            hermite->element(face.cell->active_cell_index());
+          std::array<Tensor<1, 2>, 2> tangent_at_end;
+          for (unsigned int e = 0; e < 2; ++e)
+            {
+              const auto ref =
+                HermiteQuadrilateral::node_reference_point(ends[e]);
+              const auto J = element.jacobian(ref[0], ref[1]);
+              // d/ds on [-1, 1] -> d/dsigma on [0, 1]: a factor 2.
+              tangent_at_end[e] =
+                2. * Tensor<1, 2>({J[0][0] * dir[0] + J[0][1] * dir[1],
+                                   J[1][0] * dir[0] + J[1][1] * dir[1]});
+              const unsigned int v =
+                HermiteQuadrilateral::dealii_vertex_from_node(ends[e]);
+              const unsigned int node =
+                face.cell->vertex_index(v) == chain.vertices[a] ? a : b;
+              for (unsigned int k = 0; k < 6; ++k)
+                derivative_dofs[node]
+                               [fe.system_to_component_index(v * 6 + k).first] =
+                                 face.cell->vertex_dof_index(v, k);
+            }
+          const bool same_direction =
+            face.cell->vertex_index(
+              HermiteQuadrilateral::dealii_vertex_from_node(ends[0])) ==
+            chain.vertices[a];
+          reference_tangents.push_back(
+            same_direction ? std::array<Tensor<1, 2>, 2>{{tangent_at_end[0],
+                                                          tangent_at_end[1]}} :
+                             std::array<Tensor<1, 2>, 2>{
+                               {-tangent_at_end[1], -tangent_at_end[0]}});
+        }
+      check_reference_edge_is_smooth(context);
+    }
+
+
+
+    void
+    HermiteSurface::check_reference_edge_is_smooth(
+      const SurfaceContext &context) const
+    {
+      const unsigned int n_segments = reference_tangents.size();
+      unsigned int       interior = 0, kinks = 0;
+      double             largest = 0.;
+      for (unsigned int i = 0; i < n_segments; ++i)
+        {
+          if (!chain.closed && i + 1 == n_segments)
+            break;
+          const Tensor<1, 2> &before = reference_tangents[i][1];
+          const Tensor<1, 2> &after =
+            reference_tangents[(i + 1) % n_segments][0];
+          const double angle =
+            std::atan2(std::abs(cross_product_2d(before) * after),
+                       before * after);
+          ++interior;
+          largest = std::max(largest, angle);
+          if (angle > 1e-6)
+            ++kinks;
+        }
+      if (interior > 0 && 2 * kinks > interior)
+        throw InputError(
+          context.description.entry + "/Surface",
+          "a hermite surface on body '" + master.name() +
+            "': the reference geometry of its master boundary has a "
+            "tangent that jumps at " +
+            std::to_string(kinks) + " of its " + std::to_string(interior) +
+            " nodes (by up to " + std::to_string(largest * 180. / numbers::PI) +
+            " degrees), as in a mesh read from a file, whose cells have "
+            "straight sides; such an edge is no smoother than a faceted "
+            "one. Use Surface = bspline, or a generated mesh (ring, half "
+            "ring) whose cells follow the curved boundary");
+    }
   } // namespace
 
 
