@@ -100,9 +100,9 @@ namespace glissade_tests
   static glissade_tests::Registration registration_##name(#name, test_##name); \
   static void                         test_##name()
 
-#define GLISSADE_BENCHMARK(name)                                    \
-  static void                         benchmark_##name();           \
-  static glissade_tests::Registration registration_##name(#name,    \
+#define GLISSADE_BENCHMARK(name)                                            \
+  static void                         benchmark_##name();                   \
+  static glissade_tests::Registration registration_##name(#name,            \
                                                           benchmark_##name, \
-                                                          false);   \
+                                                          false);           \
   static void                         benchmark_##name()

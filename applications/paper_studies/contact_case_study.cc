@@ -100,6 +100,21 @@ namespace glissade
       return v;
     }
 
+    /**
+     * The vertex that comes first by `before` (a strict order on points):
+     * the ring's crown (the highest), the square's lower left corner.
+     */
+    template <typename Before>
+    Point<2>
+    extreme_vertex(const Triangulation<2> &mesh, const Before &before)
+    {
+      Point<2> best = mesh.get_vertices()[0];
+      for (const auto &p : mesh.get_vertices())
+        if (before(p, best))
+          best = p;
+      return best;
+    }
+
     /** For every vertex of `a`, the vertex of `b` at its mirror image. */
     std::vector<unsigned int>
     mirror_vertices(const Triangulation<2> &a,
@@ -191,22 +206,33 @@ namespace glissade
     std::vector<unsigned int>   ring_mirror, square_mirror;
     std::array<unsigned int, 2> crown_vertex;
     unsigned int                corner_vertex = 0;
+    Point<2>                    square_corner;
     if (symmetric_scene)
       {
-        // The crowns (top of each ring's outer edge, fig 19) and the
-        // square's lower left corner (figs 20-23).
+        // The crowns (top of each ring's outer edge, fig 19: its highest
+        // vertex) and the square's lower left corner (figs 20-23).
         for (const unsigned int side : {0u, 1u})
           {
-            const BodyDescription &ring = side == 0 ? *left_ring : *right_ring;
+            const BodyDescription  &ring = side == 0 ? *left_ring : *right_ring;
+            const Triangulation<2> &mesh =
+              simulation.body(ring.name).triangulation();
             crown_vertex[side] =
-              vertex_at(simulation.body(ring.name).triangulation(),
-                        Point<2>(ring.mesh.center[0],
-                                 ring.mesh.center[1] + ring.mesh.outer_radius),
+              vertex_at(mesh,
+                        extreme_vertex(mesh,
+                                       [](const Point<2> &a,
+                                          const Point<2> &b) {
+                                         return a[1] > b[1];
+                                       }),
                         scene_file + ": Body " + ring.name);
           }
-        corner_vertex = vertex_at(simulation.body("square").triangulation(),
-                                  square->mesh.corner_1,
-                                  scene_file + ": Body square");
+        const Triangulation<2> &square_mesh =
+          simulation.body("square").triangulation();
+        square_corner =
+          extreme_vertex(square_mesh, [](const Point<2> &a, const Point<2> &b) {
+            return a[0] + a[1] < b[0] + b[1];
+          });
+        corner_vertex =
+          vertex_at(square_mesh, square_corner, scene_file + ": Body square");
         ring_mirror =
           mirror_vertices(simulation.body("left ring").triangulation(),
                           simulation.body("right ring").triangulation(),
@@ -290,7 +316,7 @@ namespace glissade
             {{u_left[crown_vertex[0]][1], u_right[crown_vertex[1]][1]}});
           result.corner_ux.push_back(u_square[corner_vertex][0]);
           result.corner_force.push_back(
-            left_pair->node_at(square->mesh.corner_1).force().norm());
+            left_pair->node_at(square_corner).force().norm());
         }
     };
 

@@ -25,38 +25,9 @@ namespace glissade
       "The mesh generator. " + MeshFactory::documentation() +
         " Must be set: it is how a body's subsection is known to exist.",
       true);
-    prm.declare_entry("Corner 1",
-                      "0, 0",
-                      Patterns::Anything(),
-                      "rectangle: lower left corner 'x, y'.");
-    prm.declare_entry("Corner 2",
-                      "1, 1",
-                      Patterns::Anything(),
-                      "rectangle: upper right corner 'x, y'.");
-    prm.declare_entry("Center",
-                      "0, 0",
-                      Patterns::Anything(),
-                      "square, rings: centre 'x, y'.");
-    prm.declare_entry("Side",
-                      "1",
-                      Patterns::Double(0.),
-                      "square: side length.");
-    prm.declare_entry("Inner radius",
-                      "0.5",
-                      Patterns::Double(0.),
-                      "rings: inner radius.");
-    prm.declare_entry("Outer radius",
-                      "1",
-                      Patterns::Double(0.),
-                      "rings: outer radius.");
-    prm.declare_entry("Start angle",
-                      "0",
-                      Patterns::Double(),
-                      "half ring: angle of the 'start' end, in degrees.");
-    prm.declare_entry("End angle",
-                      "180",
-                      Patterns::Double(),
-                      "half ring: angle of the 'end' end, in degrees.");
+    // The shapes' entries (Corner 1, Center, Inner radius, ...) belong to
+    // the mesh types (MeshFactory::types()).
+    MeshFactory::declare_parameters(prm);
     prm.declare_entry(
       "Subdivisions",
       "1, 1",
@@ -85,31 +56,14 @@ namespace glissade
   {
     prm.enter_subsection("Mesh");
     type = prm.get("Type");
-    corner_1 =
-      entry_format::coordinates(prm.get("Corner 1"), where + "/Mesh/Corner 1");
-    corner_2 =
-      entry_format::coordinates(prm.get("Corner 2"), where + "/Mesh/Corner 2");
-    center =
-      entry_format::coordinates(prm.get("Center"), where + "/Mesh/Center");
-    side         = prm.get_double("Side");
-    inner_radius = prm.get_double("Inner radius");
-    outer_radius = prm.get_double("Outer radius");
-    start_angle  = prm.get_double("Start angle");
-    end_angle    = prm.get_double("End angle");
     for (const auto &n :
          Utilities::split_string_list(prm.get("Subdivisions"), ','))
       subdivisions.push_back(Utilities::string_to_int(n));
     file       = prm.get("File");
     distortion = prm.get_double("Distortion");
+    shape      = MeshFactory::type(type).parse_parameters(prm.handler(), where);
     prm.leave_subsection();
 
-    if (type != "half ring" && (start_angle != 0. || end_angle != 180.))
-      throw InputError(where + "/Mesh/" +
-                         (start_angle != 0. ? "Start angle" : "End angle"),
-                       "applies to Type = half ring only (this mesh is a " +
-                         type +
-                         "); to turn a body, use Boundary conditions/"
-                         "Prescribed rotation");
     MeshFactory::type(type).check(*this, where);
     {
       // A generated mesh is allocated before anything else happens: a

@@ -35,17 +35,15 @@ namespace glissade
   struct MeshDescription
   {
     std::string               type;
-    dealii::Point<2>          corner_1;
-    dealii::Point<2>          corner_2;
-    dealii::Point<2>          center;
-    double                    side         = 1.;
-    double                    inner_radius = 0.5;
-    double                    outer_radius = 1.;
-    double                    start_angle  = 0.;   // degrees
-    double                    end_angle    = 180.; // degrees
     std::vector<unsigned int> subdivisions;
     std::string               file;
     double                    distortion = 0.;
+    /**
+     * The type's shape (Corner 1, Center, radii, ...), read by the type's
+     * own entry of MeshFactory::types() and handed back to its create();
+     * opaque here.
+     */
+    std::any shape;
 
     /** Body <name>/Mesh (source/scene/mesh_section.cc). */
     static void

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
 #include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_labels.h>
 
+#include <any>
 #include <functional>
 #include <map>
 #include <string>
@@ -38,7 +40,23 @@ namespace glissade
       /** Read from a file (its regions and cell order come from there),
        *  rather than generated from the entries. */
       bool from_file;
-      /** Refuses entries the type cannot use, naming `where`/Mesh/<entry>. */
+      /**
+       * Declares the entries of the type's shape in the Mesh subsection
+       * (Corner 1, Center, Inner radius, ...), for every body.
+       */
+      std::function<void(dealii::ParameterHandler &)> declare_parameters;
+      /**
+       * Reads them for a body of this type and checks them, naming
+       * `where`/Mesh/<entry>: the shape its create() finds in
+       * MeshDescription::shape.
+       */
+      std::function<std::any(const dealii::ParameterHandler &,
+                             const std::string &where)>
+        parse_parameters;
+      /**
+       * Checks what the generic entries mean for the type (a ring needs
+       * three elements around; gmsh, a File).
+       */
       std::function<void(const MeshDescription &, const std::string &where)>
         check;
       std::function<MeshLabels(const MeshDescription &,
@@ -53,6 +71,10 @@ namespace glissade
     /** The type named `name` (one of types(): the pattern checked it). */
     static const MeshType &
     type(const std::string &name);
+
+    /** Every type's own entries, in the current (Mesh) subsection. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
 
     /** "rectangle|square|..." for Patterns::Selection. */
     static std::string
@@ -69,17 +91,6 @@ namespace glissade
            const std::string        &where);
 
   private:
-    static BoundaryNames
-    create_rectangle(const dealii::Point<2>   &lower_left,
-                     const dealii::Point<2>   &upper_right,
-                     const MeshDescription    &description,
-                     dealii::Triangulation<2> &triangulation);
-
-    static BoundaryNames
-    create_ring(const MeshDescription    &description,
-                const bool                closed,
-                dealii::Triangulation<2> &triangulation);
-
     /** Refuses a mesh with a hanging node (a vertex inside another edge). */
     static void
     check_mesh_is_conforming(const dealii::Triangulation<2> &triangulation,
