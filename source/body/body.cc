@@ -26,7 +26,7 @@ namespace glissade
     const std::string where = source + ": Body " + description.name;
     const MeshLabels  labels =
       MeshFactory::create(description.mesh, mesh, where);
-    boundary_names     = labels.boundaries;
+    named_boundaries   = labels.boundaries;
     reference_size     = mesh_diameter(mesh);
     materials_of_cells = std::make_unique<BodyMaterials>(
       description.material,
@@ -58,7 +58,7 @@ namespace glissade
     element_space->setup(dofs, element_constraints);
 
     boundary_conditions =
-      std::make_unique<BoundaryConditions>(description, boundary_names, mesh);
+      std::make_unique<BoundaryConditions>(description, named_boundaries, mesh);
     if (!description.gravity.empty())
       gravity =
         std::make_unique<UserFunction>(description.gravity,
@@ -677,39 +677,6 @@ namespace glissade
 
 
   double
-  Body::strain_energy() const
-  {
-    const bool axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    auto evaluator = element_space->create_evaluator();
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
-    std::vector<double>                  values(local.size());
-    double                               energy = 0.;
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        evaluator->reinit(cell);
-        cell->get_dof_indices(local);
-        for (unsigned int i = 0; i < local.size(); ++i)
-          values[i] = solution(local[i]);
-        const Material &material =
-          materials_of_cells->of_cell(cell->material_id());
-        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
-          {
-            const double r = evaluator->quadrature_point(q)[0];
-            const double hoop =
-              axisymmetric ? evaluator->value(values, q)[0] / r : 0.;
-            energy +=
-              material.energy(evaluator->gradient(values, q), hoop) *
-              evaluator->JxW(q) *
-              (axisymmetric ? 2. * M_PI * r : description.material.thickness);
-          }
-      }
-    return energy;
-  }
-
-
-
-  double
   Body::residual_norm() const
   {
     // The equilibrium equations of the free dofs are the condensed ones: a
@@ -752,7 +719,7 @@ namespace glissade
   Body::boundary_id(const std::string &boundary, const std::string &entry) const
   {
     const Location where = BoundaryConditions::resolve(
-      boundary, boundary_names, mesh, description.name, entry);
+      boundary, named_boundaries, mesh, description.name, entry);
     if (where.is_vertex)
       throw InputError(entry, "expected a boundary name, not a point");
     return where.boundary;
@@ -782,125 +749,5 @@ namespace glissade
   {
     solution       = stored_solution;
     contact_forces = stored_contact_forces;
-  }
-
-
-
-  Tensor<1, 2>
-  Body::vertex_displacement(const Point<2> &point) const
-  {
-    const auto dof_pair = vertex_value_dofs(point);
-    return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
-  }
-
-
-
-  std::array<types::global_dof_index, 2>
-  Body::vertex_value_dofs(const Point<2> &point) const
-  {
-    std::ostringstream location;
-    location.precision(17);
-    location << "point(" << point[0] << ", " << point[1] << ")";
-    const Location where = BoundaryConditions::resolve(location.str(),
-                                                       boundary_names,
-                                                       mesh,
-                                                       description.name,
-                                                       "",
-                                                       false,
-                                                       reference_size);
-    return BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
-  }
-
-
-
-  std::vector<Tensor<1, 2>>
-  Body::vertex_displacements() const
-  {
-    std::vector<Tensor<1, 2>> result(mesh.n_vertices());
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const auto value_dofs =
-            BoundaryConditions::cell_vertex_dofs(cell, v, *element_space);
-          for (unsigned int d = 0; d < 2; ++d)
-            result[cell->vertex_index(v)][d] = solution(value_dofs[d]);
-        }
-    return result;
-  }
-
-
-
-  double
-  Body::max_displacement() const
-  {
-    // Nodal values: pair the x and y value dofs that share a node.
-    const FiniteElement<2> &fe = element_space->finite_element();
-    const unsigned int per_dim = element_space->components_per_displacement();
-    std::vector<std::pair<unsigned int, unsigned int>> pairs;
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci = fe.system_to_component_index(i);
-        if (ci.first != 0)
-          continue;
-        for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-          if (fe.system_to_component_index(j) ==
-              std::make_pair(per_dim, ci.second))
-            pairs.emplace_back(i, j);
-      }
-    std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
-    double                               largest = 0.;
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        cell->get_dof_indices(local_dofs);
-        for (const auto &p : pairs)
-          largest = std::max(largest,
-                             std::hypot(solution(local_dofs[p.first]),
-                                        solution(local_dofs[p.second])));
-      }
-    return largest;
-  }
-
-
-
-  Tensor<1, 2>
-  Body::reaction(const std::string &boundary) const
-  {
-    const Location where = BoundaryConditions::resolve(
-      boundary, boundary_names, mesh, description.name, "");
-    Tensor<1, 2> sum;
-    if (where.is_vertex)
-      {
-        const auto d =
-          BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
-        return Tensor<1, 2>(
-          {unconstrained_residual(d[0]) - contact_forces(d[0]),
-           unconstrained_residual(d[1]) - contact_forces(d[1])});
-      }
-    const FiniteElement<2>              &fe = element_space->finite_element();
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    std::vector<bool>                    counted(dofs.n_dofs(), false);
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() == where.boundary)
-          {
-            cell->face(f)->get_dof_indices(face_dofs);
-            for (unsigned int k = 0; k < face_dofs.size(); ++k)
-              if (!counted[face_dofs[k]])
-                {
-                  counted[face_dofs[k]] = true;
-                  // Only value dofs carry force; derivative dofs carry
-                  // its moments.
-                  const unsigned int per_dim =
-                    element_space->components_per_displacement();
-                  const unsigned int k_component =
-                    fe.face_system_to_component_index(k).first;
-                  if (k_component % per_dim == 0)
-                    sum[k_component / per_dim] +=
-                      unconstrained_residual(face_dofs[k]) -
-                      contact_forces(face_dofs[k]);
-                }
-          }
-    return sum;
   }
 } // namespace glissade

@@ -1,3 +1,4 @@
+#include <glissade/body/body_measures.h>
 #include <glissade/solver/time_integrator.h>
 
 #include <set>
@@ -145,7 +146,7 @@ namespace glissade
         for (const auto &body : bodies)
           {
             account.kinetic += body->inertia()->kinetic_energy();
-            account.strain += body->strain_energy();
+            account.strain += strain_energy(*body);
           }
       }
 

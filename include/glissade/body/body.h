@@ -98,10 +98,6 @@ namespace glissade
       return external_forces;
     }
 
-    /** The stored energy of the current state, int W dV. */
-    double
-    strain_energy() const;
-
     const BodyMaterials &
     materials() const
     {
@@ -244,6 +240,13 @@ namespace glissade
       return contact_forces;
     }
 
+    /** The named boundaries of the mesh. */
+    const BoundaryNames &
+    boundary_names() const
+    {
+      return named_boundaries;
+    }
+
     /** The boundary id of a named boundary; `entry` names the .prm entry. */
     dealii::types::boundary_id
     boundary_id(const std::string &boundary, const std::string &entry) const;
@@ -332,41 +335,6 @@ namespace glissade
       return reference_size;
     }
 
-    /** Displacement at a mesh vertex given as "point(x, y)". */
-    dealii::Tensor<1, 2>
-    vertex_displacement(const dealii::Point<2> &point) const;
-
-    /**
-     * The x and y value dofs of the mesh vertex at `point` (an input error
-     * if there is none): found once, read at every increment (history).
-     */
-    std::array<dealii::types::global_dof_index, 2>
-    vertex_value_dofs(const dealii::Point<2> &point) const;
-
-    /**
-     * The displacement of every vertex of the mesh, indexed like
-     * triangulation().get_vertices() (zero for unused vertices).
-     */
-    std::vector<dealii::Tensor<1, 2>>
-    vertex_displacements() const;
-
-    /** Largest nodal displacement norm over the body. */
-    double
-    max_displacement() const;
-
-    /**
-     * Sum of F_int - F_ext - F_contact over the dofs of a named boundary:
-     * on supported dofs, the force the support exerts on the body.
-     */
-    dealii::Tensor<1, 2>
-    reaction(const std::string &boundary) const;
-
-    /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
-    std::string
-    write_vtu(const std::string    &directory,
-              const unsigned int    index,
-              const OutputSettings &settings) const;
-
     const dealii::DoFHandler<2> &
     dof_handler() const
     {
@@ -429,7 +397,7 @@ namespace glissade
     std::string                    problem;
     const std::string              source;
     dealii::Triangulation<2>       mesh;
-    BoundaryNames                  boundary_names;
+    BoundaryNames                  named_boundaries;
     std::unique_ptr<ElementSpace>  element_space;
     dealii::DoFHandler<2>          dofs;
     std::unique_ptr<BodyMaterials> materials_of_cells;
