@@ -1,7 +1,6 @@
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/user_function.h>
@@ -68,31 +67,41 @@ namespace glissade
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());
-    system_rhs.reinit(dofs.n_dofs());
     unconstrained_residual.reinit(dofs.n_dofs());
     contact_forces.reinit(dofs.n_dofs());
 
-    // The set of constrained dofs never changes during a run (only the
-    // prescribed values do), so the sparsity pattern is built once.
+    // The constraints at t = 0 say which dofs are constrained, which never
+    // changes during a run: the system's sparsity pattern is built on them.
+    // (Cholesky where the tangent is symmetric, no follower pressure.)
+    AffineConstraints<double> constraints;
     boundary_conditions->make_constraints(
       dofs, *element_space, 0., solution, element_constraints, constraints);
-    DynamicSparsityPattern dsp(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
-    sparsity.copy_from(dsp);
-    tangent.reinit(sparsity);
-    // Cholesky where the tangent is symmetric (a body in contact sets its
-    // contact dofs to eliminate last later, set_contact_dofs).
-    factorization.use_cholesky(tangent_is_symmetric(), {});
+    bool symmetric = true;
+    for (const auto &load : boundary_conditions->surface_loads())
+      symmetric = symmetric && !load.is_pressure;
+    linear_system = std::make_unique<BodyLinearSystem>(
+      dofs,
+      *element_space,
+      std::move(constraints),
+      symmetric,
+      RigidMotionSprings(
+        free_motions_of_supports(), source, description.name, reference_size));
+  }
 
-    // The rigid motions the supports leave free, about the centre of the
-    // body's bounding box.
+
+
+  std::vector<RigidMotion>
+  Body::free_motions_of_supports() const
+  {
+    // About the centre of the body's bounding box.
     const auto box = GridTools::compute_bounding_box(mesh);
     const auto basis =
       rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
     const std::vector<RigidMotion> all(basis.begin(), basis.end());
     const auto                     rows =
       boundary_conditions->support_rows(dofs, *element_space, basis);
-    if (axisymmetric)
+    std::vector<RigidMotion> free_motions;
+    if (description.material.hypothesis == PlaneHypothesis::axisymmetric)
       {
         // A body of revolution has one rigid motion, along its axis (a
         // radial translation or a rotation would strain its hoops).
@@ -105,6 +114,7 @@ namespace glissade
     else
       for (const auto &coefficients : null_space(rows, 3))
         free_motions.push_back(combine(all, coefficients));
+    return free_motions;
   }
 
 
@@ -178,11 +188,14 @@ namespace glissade
   bool
   Body::assemble()
   {
-    boundary_conditions->make_constraints(
-      dofs, *element_space, time, solution, element_constraints, constraints);
+    boundary_conditions->make_constraints(dofs,
+                                          *element_space,
+                                          time,
+                                          solution,
+                                          element_constraints,
+                                          linear_system->constraints());
 
-    tangent                = 0.;
-    system_rhs             = 0.;
+    linear_system->clear();
     unconstrained_residual = 0.;
     Vector<double> internal_forces(dofs.n_dofs());
     Vector<double> viscous_forces(inertia_terms ? dofs.n_dofs() : 0);
@@ -500,8 +513,7 @@ namespace glissade
 
       for (unsigned int i = 0; i < n_local; ++i)
         unconstrained_residual(data.local_dofs[i]) -= cell_rhs(i);
-      constraints.distribute_local_to_global(
-        cell_matrix, cell_rhs, data.local_dofs, tangent, system_rhs);
+      linear_system->add_cell(cell_matrix, cell_rhs, data.local_dofs);
     };
 
     WorkStream::run(dofs.begin_active(),
@@ -523,17 +535,7 @@ namespace glissade
     if (inertia_terms)
       point_loads += inertia_terms->step_forces();
     unconstrained_residual -= point_loads;
-    {
-      std::vector<types::global_dof_index> index(1);
-      Vector<double>                       value(1);
-      for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
-        if (point_loads(i) != 0.)
-          {
-            index[0] = i;
-            value(0) = point_loads(i);
-            constraints.distribute_local_to_global(value, index, system_rhs);
-          }
-    }
+    linear_system->add_nodal_forces(point_loads);
 
     internal_force_norm = internal_forces.l2_norm();
     external_forces     = internal_forces;
@@ -682,7 +684,8 @@ namespace glissade
     // The equilibrium equations of the free dofs are the condensed ones: a
     // constrained dof a = sum_b w_b u_b + g hands its residual on to the
     // dofs b (serendipity interiors, Hermite tangential derivatives).
-    Vector<double> condensed = unconstrained_residual;
+    const AffineConstraints<double> &constraints = linear_system->constraints();
+    Vector<double>                   condensed   = unconstrained_residual;
     condensed -= contact_forces;
     constraints.condense(condensed);
     for (const auto &line : constraints.get_lines())

@@ -50,7 +50,7 @@ namespace glissade
         , bodies(bodies)
       {
         for (const auto &body : bodies)
-          body->hold_rigid_motions_by_inertia();
+          body->system().hold_rigid_motions_by_inertia();
       }
 
       bool

@@ -3,20 +3,16 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/body_inertia.h>
+#include <glissade/body/body_linear_system.h>
 #include <glissade/body/boundary_conditions.h>
-#include <glissade/body/rigid_motion.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space.h>
-#include <glissade/lac/direct_solver.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
 
-#include <map>
 #include <memory>
 #include <string>
 
@@ -24,13 +20,13 @@ namespace glissade
 {
   /**
    * One deformable solid in the total Lagrangian setting: its mesh, element
-   * space, material, boundary data, and its own tangent matrix and direct
-   * factorisation. Bodies meet only through contact forces, so the global
-   * system is block-diagonal by body and each block is solved here alone.
+   * space, material, boundary data, and its own linear system
+   * (BodyLinearSystem: the tangent, its factorisation, the contact port and
+   * the springs of a body held by contact).
    *
-   * A Newton iteration, seen from the body, is: set_time(t) for the increment,
-   * then assemble() -> factorize() -> solve() -> update() until the
-   * Simulation says it has converged.
+   * A Newton iteration, seen from the body, is: set_time(t) for the
+   * increment, then assemble() -> system().factorize() -> system().solve()
+   * -> update() until the Simulation says it has converged.
    */
   class Body
   {
@@ -71,17 +67,6 @@ namespace glissade
     inertia() const
     {
       return inertia_terms.get();
-    }
-
-    /**
-     * Under a dynamic scheme the mass holds the rigid motions that no
-     * support does: none is free (no check that contact holds them, no
-     * springs).
-     */
-    void
-    hold_rigid_motions_by_inertia()
-    {
-      free_motions.clear();
     }
 
     /** F_int - F_ext (with the inertia force, if any) on every dof. */
@@ -128,102 +113,17 @@ namespace glissade
     double
     force_scale() const;
 
-    /**
-     * Factorises the tangent, with the springs of regularization() added
-     * (the tangent itself is left as assembled).
-     */
-    void
-    factorize();
-
-    /**
-     * The rigid motions that the body's supports leave free, orthonormal
-     * combinations of rigid_motion_basis(); empty for a body its supports
-     * hold. Contact must hold these (ContactProblem checks that it can
-     * before computing).
-     */
-    const std::vector<RigidMotion> &
-    free_rigid_motions() const
+    /** The linear system of the last assembly and its factorisation. */
+    const BodyLinearSystem &
+    system() const
     {
-      return free_motions;
+      return *linear_system;
     }
-
-    /**
-     * For a body with free rigid motions, whose tangent alone is singular:
-     * springs k e_i e_i^T at one contact dof per free motion, added to the
-     * tangent before it is factorised so that the factorisation exists, as
-     * (dof, k). The contact problem takes them out again exactly, as
-     * rank-one terms of its Newton matrix (theory.md, section 4.6), so no
-     * spring is left in the answer.
-     */
-    const std::vector<std::pair<dealii::types::global_dof_index, double>> &
-    regularization() const
+    BodyLinearSystem &
+    system()
     {
-      return springs;
+      return *linear_system;
     }
-
-    /**
-     * The constraints of the current iteration (the element's own and the
-     * Dirichlet data, with the inhomogeneity this correction must bring):
-     * a step computed outside the body is completed by their distribute().
-     */
-    const dealii::AffineConstraints<double> &
-    dof_constraints() const
-    {
-      return constraints;
-    }
-
-    /** The tangent of the last assembly (benchmarks factorise it again). */
-    const dealii::SparseMatrix<double> &
-    tangent_matrix() const
-    {
-      return tangent;
-    }
-
-    /** The factorisation (method used, timings). */
-    const DirectSolver &
-    direct_solver() const
-    {
-      return factorization;
-    }
-
-    /** Solves K du = rhs; constrained dofs get their prescribed increment. */
-    void
-    solve(const dealii::Vector<double> &rhs,
-          dealii::Vector<double>       &increment) const;
-
-    /**
-     * The response to an external force vector f with the supports held:
-     * K x = f condensed, constrained dofs following their free ones with no
-     * prescribed part. The contact compliance columns K^-1 H^T.
-     */
-    void
-    solve_homogeneous(const dealii::Vector<double> &force,
-                      dealii::Vector<double>       &x) const;
-
-    /**
-     * The dofs that contact may load (declared contact areas). When the
-     * tangent is symmetric they are eliminated last, and the compliance
-     * between any two of them -- the entries of solve_homogeneous() at
-     * contact dofs -- comes from the factorisation itself.
-     */
-    void
-    set_contact_dofs(
-      const std::vector<dealii::types::global_dof_index> &contact_dofs);
-
-    /**
-     * The compliance between contact dofs, the contact block of the body's
-     * K^-1 with its supports held: block[i + j rows.size()] is entry
-     * `rows[i]` of solve_homogeneous(e_{columns[j]}). With a Cholesky
-     * factorisation (contact dofs last) and every dof among the declared
-     * contact dofs, from the inverse of the factor's trailing block, whose
-     * columns at `columns` only are formed; otherwise one solve per column,
-     * kept for the current factorisation.
-     */
-    void
-    compliance_block(
-      const std::vector<dealii::types::global_dof_index> &rows,
-      const std::vector<dealii::types::global_dof_index> &columns,
-      std::vector<double>                                &block);
 
     /**
      * Contact forces acting on the body (from the last contact solve); the
@@ -258,12 +158,6 @@ namespace glissade
       return stored_solution;
     }
 
-    const dealii::Vector<double> &
-    right_hand_side() const
-    {
-      return system_rhs;
-    }
-
     void
     update(const dealii::Vector<double> &increment);
 
@@ -276,13 +170,6 @@ namespace glissade
     {
       solution.swap(u);
     }
-
-    /**
-     * True for a dof whose value the boundary conditions prescribe (fixed
-     * or driven): no force moves it.
-     */
-    bool
-    dof_is_prescribed(const dealii::types::global_dof_index dof) const;
 
     /** Saves and restores the displacement (for cut-backs). */
     void
@@ -385,6 +272,10 @@ namespace glissade
     std::vector<dealii::types::global_dof_index>
     dofs_on_axis() const;
 
+    /** The rigid motions that the supports leave free. */
+    std::vector<RigidMotion>
+    free_motions_of_supports() const;
+
     void
     assemble_surface_loads(
       const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
@@ -412,43 +303,10 @@ namespace glissade
     double                               time           = 0.;
 
     dealii::AffineConstraints<double> element_constraints; // the space's own
-    dealii::AffineConstraints<double> constraints; // plus Dirichlet data
-    dealii::SparsityPattern           sparsity;
-    dealii::SparseMatrix<double>      tangent;
-    DirectSolver                      factorization;
-
-    /** False where follower pressure makes the tangent unsymmetric. */
-    bool
-    tangent_is_symmetric() const;
-
-    /** See free_rigid_motions() and regularization(). */
-    std::vector<RigidMotion> free_motions;
-    std::vector<std::pair<dealii::types::global_dof_index, double>> springs;
-
-    /**
-     * The springs' dofs: among the contact dofs, one per free motion, the
-     * best conditioned set (a pivoted Gram-Schmidt on the motions' values
-     * there).
-     */
-    void
-    choose_spring_dofs(
-      const std::vector<dealii::types::global_dof_index> &contact_dofs);
-
-    /**
-     * Per contact dof, the free unknowns it follows (itself, or the entries
-     * of its constraint line) with weights, as positions among the
-     * factorisation's last unknowns once prepared.
-     */
-    std::vector<long>                                 contact_position;
-    std::vector<std::vector<std::pair<long, double>>> contact_rows;
-    std::vector<std::vector<std::pair<long, double>>> contact_rows_resolved;
-    /** solve_homogeneous(e_dof) of the current factorisation, by dof. */
-    std::map<dealii::types::global_dof_index, dealii::Vector<double>>
-      compliance_columns;
+    std::unique_ptr<BodyLinearSystem> linear_system;
 
     dealii::Vector<double> solution;
     dealii::Vector<double> stored_solution;
-    dealii::Vector<double> system_rhs;             // F_ext - F_int, constrained
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
     dealii::Vector<double> external_forces;        // F_ext, all dofs
     dealii::Vector<double> contact_forces;         // H^T r, all dofs
