@@ -4,6 +4,7 @@
 // memory, one line, so that a loop over sizes gives a table. Each size runs
 // in its own process so that "peak memory" belongs to that size alone.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -56,7 +57,7 @@ main(int argc, char **argv)
                   s.newton_iterations,
                   total / 2.,
                   usage.ru_maxrss / 1024.,
-                  simulation.body("beam").max_displacement());
+                  max_displacement(simulation.body("beam")));
     }
   catch (const std::exception &e)
     {

@@ -36,8 +36,9 @@ namespace
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         bodies[b]->assemble();
-        bodies[b]->factorize();
-        bodies[b]->solve(bodies[b]->right_hand_side(), predictor[b]);
+        bodies[b]->system().factorize();
+        bodies[b]->system().solve(bodies[b]->system().right_hand_side(),
+                                  predictor[b]);
       }
     const double factorisation = timer.wall_time();
     simulation.contact().update_state();
@@ -142,7 +143,8 @@ main(int argc, char **argv)
               s.compliance_seconds / n,
               s.local_solve_seconds / n,
               c.last_result().sweeps);
-  const DirectSolver &solver = simulation.body("strip").direct_solver();
+  const DirectSolver &solver =
+    simulation.body("strip").system().direct_solver();
   std::printf("       factorisations: %u Cholesky (contact dofs last), %u LU; "
               "Cholesky analysis %.4f s, numeric %.4f s per factorisation, "
               "inverse block %.4f s per iteration (%ld of the %zu declared "
@@ -165,8 +167,9 @@ main(int argc, char **argv)
   // The same tangent, factorised by a bare UMFPACK LU and by Cholesky with
   // the fill-reducing ordering alone (no contact dofs last): what the
   // contact-last ordering costs in the factorisation itself.
-  const SparseMatrix<double> &K = simulation.body("strip").tangent_matrix();
-  DirectSolver                lu, plain_cholesky;
+  const SparseMatrix<double> &K =
+    simulation.body("strip").system().tangent_matrix();
+  DirectSolver lu, plain_cholesky;
   plain_cholesky.use_cholesky(true, {});
   for (DirectSolver *other : {&lu, &plain_cholesky})
     {

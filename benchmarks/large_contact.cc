@@ -11,6 +11,7 @@
 //
 // surface: the master's Surface entry, faceted (default) or bspline.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -125,7 +126,7 @@ main(int argc, char **argv)
       deviation =
         std::max(deviation, std::abs(node.reaction[1] - share * uniform));
     }
-  const double top = simulation.body("strip").reaction("top")[1];
+  const double top = support_reaction(simulation.body("strip"), "top")[1];
   std::printf(
     "%s, %s master: %u active nodes, %u dofs, %u Newton iterations, %.2f s "
     "(%.2f s per iteration, of which %.2f s the contact step's "

@@ -5,6 +5,7 @@
 // and between two spheres, and the balance of the contact force with the
 // support's reaction.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -102,19 +103,19 @@ GLISSADE_TEST(axisymmetric_thick_sphere_lame)
     const auto simulation =
       run(thick_sphere, {"Body sphere/Element/Space=q2"}, "sphere_q2");
     const Body &body = simulation->body("sphere");
-    check_relative(body.vertex_displacement(Point<2>(1., 0.))[0],
+    check_relative(vertex_displacement(body, Point<2>(1., 0.))[0],
                    sphere_u_r(1.),
                    1e-3,
                    "u_r(a) on the equator");
-    check_relative(body.vertex_displacement(Point<2>(2., 0.))[0],
+    check_relative(vertex_displacement(body, Point<2>(2., 0.))[0],
                    sphere_u_r(2.),
                    1e-3,
                    "u_r(b) on the equator");
-    check_relative(body.vertex_displacement(Point<2>(0., 1.))[1],
+    check_relative(vertex_displacement(body, Point<2>(0., 1.))[1],
                    sphere_u_r(1.),
                    1e-3,
                    "u_r(a) on the axis (the pole)");
-    check(body.vertex_displacement(Point<2>(0., 1.))[0] == 0.,
+    check(vertex_displacement(body, Point<2>(0., 1.))[0] == 0.,
           "the pole moved off the axis");
   }
   for (const auto &[space, rate] : std::vector<std::pair<std::string, double>>{
@@ -167,7 +168,7 @@ GLISSADE_TEST(axisymmetric_thick_cylinder_is_plane_strain)
         for (const double z : {0., 0.125, 0.25})
           {
             const double       r = 1. + i / 16.;
-            const Tensor<1, 2> u = body.vertex_displacement(Point<2>(r, z));
+            const Tensor<1, 2> u = vertex_displacement(body, Point<2>(r, z));
             worst = std::max(worst, std::abs(u[0] - u_r(r)) / u_r(a));
             axial = std::max(axial, std::abs(u[1]) / u_r(a));
           }
@@ -200,9 +201,9 @@ GLISSADE_TEST(axisymmetric_cylinder_large_strain_is_the_plane_strain_ring)
   for (const double r : {1., 2.})
     {
       const double axisymmetric =
-        cylinder->body("cylinder").vertex_displacement(Point<2>(r, 0.))[0];
+        vertex_displacement(cylinder->body("cylinder"), Point<2>(r, 0.))[0];
       const double plane =
-        ring->body("cylinder").vertex_displacement(Point<2>(r, 0.))[0];
+        vertex_displacement(ring->body("cylinder"), Point<2>(r, 0.))[0];
       check_relative(axisymmetric,
                      plane,
                      1e-6,
@@ -210,7 +211,7 @@ GLISSADE_TEST(axisymmetric_cylinder_large_strain_is_the_plane_strain_ring)
                        ") of the axisymmetric cylinder against the plane "
                        "strain ring");
     }
-  check(cylinder->body("cylinder").vertex_displacement(Point<2>(1., 0.))[0] >
+  check(vertex_displacement(cylinder->body("cylinder"), Point<2>(1., 0.))[0] >
           0.4,
         "the bore did not grow by 40 % or more");
 }
@@ -240,7 +241,7 @@ GLISSADE_TEST(axisymmetric_newton_quadratic_large_pressure)
       best =
         std::max(best, std::log(r[k + 1] / r[k]) / std::log(r[k] / r[k - 1]));
   const double growth =
-    simulation.body("sphere").vertex_displacement(Point<2>(1., 0.))[0];
+    vertex_displacement(simulation.body("sphere"), Point<2>(1., 0.))[0];
   std::cout << "  u_r(a) = " << growth << "; best asymptotic order " << best
             << " (expected 2)" << std::endl;
   check(growth > 0.15, "the sphere did not blow up by 15 % or more");
@@ -371,7 +372,7 @@ GLISSADE_TEST(axisymmetric_hertz_sphere_on_rigid_flat)
   const ContactPair &pair     = *simulation.contact().contact_pairs()[0];
   const HertzFigures measured = hertz_figures(pair, E_star, 1., hertz);
   check_hertz(measured, hertz);
-  const double reaction = simulation.body("upper").reaction("top")[1];
+  const double reaction = support_reaction(simulation.body("upper"), "top")[1];
   std::cout << std::setprecision(16) << "  contact force "
             << pair.total_force()[1] << ", reaction of the top " << reaction
             << std::endl;
@@ -395,8 +396,8 @@ GLISSADE_TEST(axisymmetric_hertz_two_spheres)
   const ContactPair &pair     = *simulation.contact().contact_pairs()[0];
   const HertzFigures measured = hertz_figures(pair, E_star, 0.5, hertz);
   check_hertz(measured, hertz);
-  const double upper = simulation.body("upper").reaction("top")[1],
-               lower = simulation.body("lower").reaction("top")[1];
+  const double upper = support_reaction(simulation.body("upper"), "top")[1],
+               lower = support_reaction(simulation.body("lower"), "top")[1];
   std::cout << std::setprecision(16) << "  reactions: upper " << upper
             << ", lower " << lower << "; contact force "
             << pair.total_force()[1] << std::endl;

@@ -109,6 +109,7 @@ GLISSADE_TEST(case3_rotation_spread_order)
   check(first_rotation_spread(q4) > 0.1, "Q4 should lose symmetry");
 }
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -123,7 +124,7 @@ namespace
       {
         const double       theta = 2. * M_PI * i / 40.;
         const Point<2>     X(r * std::cos(theta), r * std::sin(theta));
-        const Tensor<1, 2> d = body.vertex_displacement(X);
+        const Tensor<1, 2> d = vertex_displacement(body, X);
         u.push_back((d[0] * X[0] + d[1] * X[1]) / r);
       }
     return u;

@@ -4,6 +4,7 @@
 // appear once, and a Hertz contact's pressure must be Hertz's profile
 // within the discretisation error.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -127,7 +128,7 @@ GLISSADE_TEST(contact_surface_block_pressure_balances_support)
     SceneReader::read_string(block_on_line("bottom", "surface_block"),
                              "surface"));
   simulation.run();
-  const double top = simulation.body("block").reaction("top")[1];
+  const double top = support_reaction(simulation.body("block"), "top")[1];
 
   auto               table = read_csv("surface_block/contact-floor-00002.csv");
   const unsigned int n     = table["X"].size();
@@ -197,7 +198,8 @@ GLISSADE_TEST(contact_surface_hertz_pressure_profile)
         " set Directory = surface_hertz\nend\n";
       Simulation simulation(SceneReader::read_string(prm, "hertz"));
       simulation.run();
-      const double support = simulation.body("disk").reaction("inner")[1];
+      const double support =
+        support_reaction(simulation.body("disk"), "inner")[1];
 
       auto table = read_csv("surface_hertz/contact-flat-00002.csv");
       const unsigned int        n = table["X"].size();
@@ -258,7 +260,7 @@ GLISSADE_TEST(contact_pair_several_slave_boundaries)
   std::set<unsigned int> vertices;
   for (const auto &node : pair.nodes())
     vertices.insert(node.vertex);
-  const double top   = simulation.body("block").reaction("top")[1];
+  const double top   = support_reaction(simulation.body("block"), "top")[1];
   const double total = pair.total_force()[1];
   std::cout << "  " << pair.nodes().size() << " slave nodes ("
             << vertices.size() << " distinct); contact force " << total
@@ -428,7 +430,7 @@ GLISSADE_TEST(walkthrough_pad_on_roller)
             << worst_slip / mu << std::endl;
   check(slipping > 0 && sticking > 0, "the pad both sticks and slips");
   check(worst_slip / mu < 1e-8, "a slipping node is off the cone");
-  const Tensor<1, 2> top = simulation.body("pad").reaction("top");
+  const Tensor<1, 2> top = support_reaction(simulation.body("pad"), "top");
   check_relative(fx,
                  -top[0],
                  1e-8,

@@ -1,6 +1,7 @@
 // Contact, each against a reference independent of the code: balance laws,
 // symmetry, Coulomb's law, non-penetration.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -58,8 +59,9 @@ GLISSADE_TEST(contact_block_rigid_flat)
   const auto        &pair  = *simulation.contact().contact_pairs()[0];
   const Tensor<1, 2> total = pair.total_force();
   // The supports: y on the top nodes, x on the left ones (each dof once).
-  const Tensor<1, 2> support({simulation.body("block").reaction("left")[0],
-                              simulation.body("block").reaction("top")[1]});
+  const Tensor<1, 2> support(
+    {support_reaction(simulation.body("block"), "left")[0],
+     support_reaction(simulation.body("block"), "top")[1]});
   std::cout << "  contact force (" << total << "), support reactions ("
             << support << ")" << std::endl;
   check_relative(total[1], -support[1], 1e-10, "balance in y");
@@ -199,7 +201,8 @@ GLISSADE_TEST(contact_patch_two_blocks)
         const double mean = total / 1.;
         for (const double p : pressure)
           deviation = std::max(deviation, std::abs(p - mean) / mean);
-        const double support = -simulation.body("upper").reaction("top")[1];
+        const double support =
+          -support_reaction(simulation.body("upper"), "top")[1];
         const std::string label =
           surface + (matching ? ", matching meshes" : ", 5 cells on 8");
         std::cout << "  " << label << ": mean pressure " << mean

@@ -4,6 +4,7 @@
 // Kelvin-Voigt stress on the Green-Lagrange strain rate) brakes no rigid
 // spin, which a_K K_0 v would.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -51,7 +52,7 @@ GLISSADE_TEST(dynamics_rayleigh_damping_ratio)
               "Load program/Stage end times=" + std::to_string(8.5 * period),
               "Load program/Stage increments=340"}));
   const Body         &blade = simulation.body("blade");
-  const auto          tip   = blade.vertex_value_dofs(Point<2>(0., 300.));
+  const auto          tip   = vertex_value_dofs(blade, Point<2>(0., 300.));
   std::vector<double> times, tip_x;
   double              worst_balance = 0.;
   simulation.on_increment           = [&](unsigned int, double t) {
@@ -193,8 +194,8 @@ GLISSADE_TEST(dynamics_stiffness_damping_axisymmetric_is_the_plane_ring)
                  1e-4,
                  "the share of the energy the damping took");
   check_relative(
-    cylinder->body("cylinder").vertex_displacement(Point<2>(1., 0.))[0],
-    ring->body("cylinder").vertex_displacement(Point<2>(1., 0.))[0],
+    vertex_displacement(cylinder->body("cylinder"), Point<2>(1., 0.))[0],
+    vertex_displacement(ring->body("cylinder"), Point<2>(1., 0.))[0],
     1e-4,
     "the bore's radial displacement");
 }

@@ -6,6 +6,7 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -360,8 +361,8 @@ GLISSADE_TEST(dynamics_blade_first_bending_frequency)
                "Time integration/Newmark beta=0.25",
                "Load program/Stage end times=" + std::to_string(10.5 * period),
                "Load program/Stage increments=420"}));
-  const Body          &blade      = simulation.body("blade");
-  const auto           tip        = blade.vertex_value_dofs(Point<2>(0., 300.));
+  const Body          &blade = simulation.body("blade");
+  const auto           tip   = vertex_value_dofs(blade, Point<2>(0., 300.));
   double               previous_t = 0., previous_u = 0.;
   std::vector<double>  crossings;
   simulation.on_increment = [&](unsigned int, double t) {

@@ -5,6 +5,7 @@
 // Lame's closed form, force balance, path independence of a sticking
 // contact, and a run that reaches its load.
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -87,7 +88,8 @@ GLISSADE_TEST(held_by_contact_rings_one_support_lame)
   check_relative(u_one, u_four, 1e-8, "u_r(2), one support against four");
 
   // The support carries nothing but round-off of the 400 applied.
-  const Tensor<1, 2> reaction = one->body("outer").reaction("point(2, 0)");
+  const Tensor<1, 2> reaction =
+    support_reaction(one->body("outer"), "point(2, 0)");
   std::cout << "  reaction of the one support: " << reaction[1] << std::endl;
   check(std::abs(reaction[1]) <= 1e-10 * 400.,
         "the support's reaction is zero");
@@ -184,7 +186,7 @@ GLISSADE_TEST(held_by_contact_puck_squeezed_with_friction)
               stuck += node.status == BiPotentialSolver::NodeStatus::stick;
             }
       position[increments == 8u] =
-        simulation.body("puck").vertex_displacement(Point<2>(1., 0.75));
+        vertex_displacement(simulation.body("puck"), Point<2>(1., 0.75));
       std::cout << "  " << increments << " increments: lower (" << lower
                 << "), upper (" << upper << "), |balance| " << balance.norm()
                 << "; " << stuck << " of " << closed
@@ -241,7 +243,7 @@ GLISSADE_TEST(held_by_contact_rubber_block_to_half_height)
       const RunStatistics s = simulation.statistics();
       const Tensor<1, 2>  contact =
         simulation.contact().contact_pairs()[0]->total_force();
-      const double top = simulation.body("block").reaction("top")[1];
+      const double top = support_reaction(simulation.body("block"), "top")[1];
       std::cout << "  mesh " << subdivisions << ": 50 % compression in 40 "
                 << "increments, " << s.newton_iterations
                 << " Newton iterations, " << s.cut_backs << " cut-backs; "

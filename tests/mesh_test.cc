@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <glissade/body/body_measures.h>
 #include <glissade/mesh/mesh_diameter.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -98,10 +99,10 @@ GLISSADE_TEST(mesh_gmsh_import)
   Simulation simulation(SceneReader::read_string(prm, "gmsh plate"));
   simulation.advance_to(1., "increment 1");
   const Tensor<1, 2> u =
-    simulation.body("plate").vertex_displacement(Point<2>(2., 1.));
+    vertex_displacement(simulation.body("plate"), Point<2>(2., 1.));
   check_relative(u[0], 1. * 2. / 1e6, 1e-5, "u_x at (2, 1)");
   check_relative(u[1], -0.25 * 1. * 1. / 1e6, 1e-5, "u_y at (2, 1)");
-  check_relative(simulation.body("plate").reaction("clamp")[0],
+  check_relative(support_reaction(simulation.body("plate"), "clamp")[0],
                  -1.,
                  1e-9,
                  "reaction on 'clamp' (N)");
@@ -135,15 +136,18 @@ GLISSADE_TEST(mesh_gmsh_two_material_bar)
       Simulation simulation(SceneReader::read_string(prm, "two-material bar"));
       simulation.advance_to(1., "increment 1");
       const Body &bar = simulation.body("bar");
-      check_relative(bar.vertex_displacement(Point<2>(1., 0.5))[0],
+      check_relative(vertex_displacement(bar, Point<2>(1., 0.5))[0],
                      1. / 1e6,
                      1e-5,
                      "u_x at the interface x = 1");
-      check_relative(bar.vertex_displacement(Point<2>(2., 1.))[0],
+      check_relative(vertex_displacement(bar, Point<2>(2., 1.))[0],
                      1. / 1e6 + 1. / 3e6,
                      1e-5,
                      "u_x at x = 2 (elongation)");
-      check_relative(bar.reaction("clamp")[0], -1., 1e-9, "reaction (N)");
+      check_relative(support_reaction(bar, "clamp")[0],
+                     -1.,
+                     1e-9,
+                     "reaction (N)");
     }
 }
 
@@ -192,8 +196,8 @@ end
     Simulation simulation(SceneReader::read_string(prm, file));
     simulation.advance_to(1., "increment 1");
     const Body  &ring = simulation.body("ring");
-    const double u_x  = ring.vertex_displacement(Point<2>(2., 0.))[0];
-    const double u_y  = ring.vertex_displacement(Point<2>(0., 2.))[1];
+    const double u_x  = vertex_displacement(ring, Point<2>(2., 0.))[0];
+    const double u_y  = vertex_displacement(ring, Point<2>(0., 2.))[1];
     std::cout << "  " << file << " (" << space << "): u_r(2) = " << u_x
               << " at theta = 0, " << u_y << " at theta = pi/2; Lame " << exact
               << std::endl;

@@ -5,6 +5,7 @@
 // differences with the node-to-segment ones (contact_tangent_test.cc,
 // contact_tangent_mortar_*).
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -98,7 +99,7 @@ namespace
                          const std::string &label)
   {
     const Body        &upper   = simulation.body("upper");
-    const Tensor<1, 2> support = upper.reaction("top");
+    const Tensor<1, 2> support = support_reaction(upper, "top");
     const auto        &u       = upper.displacement();
     // The top's current width, from its two corners.
     double left = 1e300, right = -1e300;
@@ -381,7 +382,8 @@ GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
       const ContactPair    &pair = *simulation.contact().contact_pairs()[0];
       CylinderFigures       hertz{};
       const CylinderFigures measured = cylinder_figures(pair, E_star, hertz);
-      const double reaction = simulation.body("cylinder").reaction("top")[1];
+      const double          reaction =
+        support_reaction(simulation.body("cylinder"), "top")[1];
       std::cout << "  " << discretisation << ": P = " << measured.load
                 << " (support " << -2. * reaction
                 << "), a = " << measured.half_width << " (Hertz "
@@ -436,7 +438,8 @@ GLISSADE_TEST(mortar_ironing_steady_force)
   std::vector<double> time, normal, tangential;
   double              worst_balance = 0., largest_support = 0.;
   simulation.on_increment = [&](unsigned int, const double t) {
-    const Tensor<1, 2> support = simulation.body("die").reaction("top");
+    const Tensor<1, 2> support =
+      support_reaction(simulation.body("die"), "top");
     const Tensor<1, 2> contact =
       simulation.contact().contact_pairs()[0]->total_force();
     worst_balance   = std::max(worst_balance, (support + contact).norm());

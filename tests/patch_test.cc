@@ -197,7 +197,9 @@ namespace
             max_H_error = std::max(max_H_error, (H - exact_H).norm());
             max_sigma_error =
               std::max(max_sigma_error,
-                       (body.material().cauchy_stress(H) - exact_sigma).norm());
+                       (body.materials().of_body().cauchy_stress(H) -
+                        exact_sigma)
+                         .norm());
           }
       }
     std::cout << "  space " << space

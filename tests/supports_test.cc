@@ -2,6 +2,7 @@
 // boundary, against Lame's closed form for a thick ring under internal
 // pressure (plane strain, small strain: p / E = 1e-4).
 
+#include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -53,7 +54,7 @@ namespace
     for (const auto &X : ring.triangulation().get_vertices())
       if (std::abs(X.norm() - r) < 1e-9)
         {
-          const Tensor<1, 2> u  = ring.vertex_displacement(X);
+          const Tensor<1, 2> u  = vertex_displacement(ring, X);
           const Tensor<1, 2> er = X / X.norm();
           const double       ur = u * er;
           const double       ut = u[1] * er[0] - u[0] * er[1];

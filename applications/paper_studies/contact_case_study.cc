@@ -4,6 +4,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/body/body_measures.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/plotting.h>
 #include <glissade/mesh/mesh_diameter.h>
@@ -257,7 +258,7 @@ namespace glissade
           if (c.master != ContactDescription::MasterKind::obstacle ||
               c.obstacle != "disk")
             continue;
-          const auto u        = pair->slave().vertex_displacements();
+          const auto u        = vertex_displacements(pair->slave());
           double     smallest = std::numeric_limits<double>::max();
           for (const auto &node : pair->nodes())
             {
@@ -275,12 +276,11 @@ namespace glissade
       if (symmetric_scene)
         {
           const auto u_left =
-            simulation.body("left ring").vertex_displacements();
+            vertex_displacements(simulation.body("left ring"));
           const auto u_right =
-            simulation.body("right ring").vertex_displacements();
-          const auto u_square =
-            simulation.body("square").vertex_displacements();
-          double largest = 0., difference = 0.;
+            vertex_displacements(simulation.body("right ring"));
+          const auto u_square = vertex_displacements(simulation.body("square"));
+          double     largest = 0., difference = 0.;
           for (unsigned int v = 0; v < u_left.size(); ++v)
             {
               largest =
@@ -331,7 +331,7 @@ namespace glissade
       {
         result.body_names.push_back(b->name());
         result.vertices.push_back(b->triangulation().get_vertices());
-        result.final_displacement.push_back(b->vertex_displacements());
+        result.final_displacement.push_back(vertex_displacements(*b));
         std::vector<std::array<unsigned int, 4>> cells;
         for (const auto &cell : b->triangulation().active_cell_iterators())
           cells.push_back({{cell->vertex_index(0),
@@ -342,7 +342,7 @@ namespace glissade
       }
     for (const auto &pair : pairs)
       {
-        const auto u = pair->slave().vertex_displacements();
+        const auto u = vertex_displacements(pair->slave());
         for (const auto &node : pair->nodes())
           if (node.reaction[1] > 0.)
             result.contact_forces.emplace_back(node.reference_position +

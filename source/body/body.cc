@@ -1,12 +1,12 @@
+// A body: its set-up from the description, its state, and the assembly
+// that puts its parts together (include/glissade/body/body.h).
+
 #include <deal.II/base/work_stream.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <glissade/base/input_error.h>
-#include <glissade/base/user_function.h>
 #include <glissade/body/body.h>
-#include <glissade/body/viscous_stress.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/mesh_diameter.h>
 
@@ -19,6 +19,126 @@ namespace glissade
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * An axisymmetric body: refuses a Hermite space and a mesh with a
+     * vertex at x = r < 0, naming the cell.
+     */
+    void
+    check_axisymmetric_body(const BodyDescription  &description,
+                            const Triangulation<2> &mesh,
+                            const double            reference_size,
+                            const std::string      &where)
+    {
+      if (description.element_space == "hermite")
+        throw InputError(
+          where + "/Material/Hypothesis",
+          "axisymmetric bodies are not implemented for Hermite elements: "
+          "their derivative dofs would need the axis condition on the "
+          "derivatives of u_r too (du_r/dz = 0 on the axis), and the hoop "
+          "strain u_r / r of a C1 field near the axis is not what the "
+          "element was built for; use q1, q2, q3, q8 or q12");
+      // r >= 0: a cell with a vertex left of the axis would have a negative
+      // ring volume there.
+      const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
+      for (const auto &cell : mesh.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v)[0] < -tolerance)
+            {
+              std::ostringstream message;
+              message << "an axisymmetric body needs its mesh in x = r >= 0 "
+                      << "(x is the radius, y the axis): cell "
+                      << cell->active_cell_index() << " has a vertex at ("
+                      << cell->vertex(v)[0] << ", " << cell->vertex(v)[1]
+                      << ")";
+              throw InputError(where + "/Mesh", message.str());
+            }
+    }
+
+
+
+    /** The radial dofs of the nodes on the axis x = 0. */
+    std::vector<types::global_dof_index>
+    radial_dofs_on_axis(const DoFHandler<2> &dofs,
+                        const ElementSpace  &space,
+                        const double         reference_size)
+    {
+      // The x dofs whose support point lies on x = 0 (every space but
+      // Hermite's has one value dof per node and component).
+      std::map<types::global_dof_index, Point<2>> support_points;
+      DoFTools::map_dofs_to_support_points(space.mapping(),
+                                           dofs,
+                                           support_points);
+      const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
+      std::vector<types::global_dof_index> on_axis;
+      const FiniteElement<2>              &fe = dofs.get_fe();
+      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+      std::set<types::global_dof_index>    radial;
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          cell->get_dof_indices(local);
+          for (unsigned int i = 0; i < local.size(); ++i)
+            if (fe.system_to_component_index(i).first == 0)
+              radial.insert(local[i]);
+        }
+      for (const auto &[dof, X] : support_points)
+        if (radial.count(dof) && std::abs(X[0]) <= tolerance)
+          on_axis.push_back(dof);
+      return on_axis;
+    }
+
+
+
+    /**
+     * The rigid motions the supports leave free, about the centre of the
+     * body's bounding box.
+     */
+    std::vector<RigidMotion>
+    motions_free_of_supports(const BoundaryConditions &conditions,
+                             const DoFHandler<2>      &dofs,
+                             const ElementSpace       &space,
+                             const Triangulation<2>   &mesh,
+                             const double              reference_size,
+                             const bool                axisymmetric)
+    {
+      const auto box = GridTools::compute_bounding_box(mesh);
+      const auto basis =
+        rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
+      const std::vector<RigidMotion> all(basis.begin(), basis.end());
+      const auto rows = conditions.support_rows(dofs, space, basis);
+      std::vector<RigidMotion> free_motions;
+      if (axisymmetric)
+        {
+          // A body of revolution has one rigid motion, along its axis (a
+          // radial translation or a rotation would strain its hoops).
+          bool held = false;
+          for (const auto &row : rows)
+            held = held || std::abs(row[1]) > 1e-12;
+          if (!held)
+            free_motions.push_back(basis[1]);
+        }
+      else
+        for (const auto &coefficients : null_space(rows, 3))
+          free_motions.push_back(combine(all, coefficients));
+      return free_motions;
+    }
+
+
+
+    /** False where follower pressure makes the tangent unsymmetric. */
+    bool
+    without_follower_pressure(const BoundaryConditions &conditions)
+    {
+      for (const auto &load : conditions.surface_loads())
+        if (load.is_pressure)
+          return false;
+      return true;
+    }
+  } // namespace
+
+
+
   Body::Body(const BodyDescription &description, const std::string &source)
     : description(description)
     , source(source)
@@ -26,7 +146,7 @@ namespace glissade
     const std::string where = source + ": Body " + description.name;
     const MeshLabels  labels =
       MeshFactory::create(description.mesh, mesh, where);
-    boundary_names     = labels.boundaries;
+    named_boundaries   = labels.boundaries;
     reference_size     = mesh_diameter(mesh);
     materials_of_cells = std::make_unique<BodyMaterials>(
       description.material,
@@ -40,7 +160,7 @@ namespace glissade
     const bool axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
     if (axisymmetric)
-      check_axisymmetric_mesh(where);
+      check_axisymmetric_body(description, mesh, reference_size, where);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
     // the chords instead.
@@ -58,111 +178,43 @@ namespace glissade
     element_space->setup(dofs, element_constraints);
 
     boundary_conditions =
-      std::make_unique<BoundaryConditions>(description, boundary_names, mesh);
-    if (!description.gravity.empty())
-      gravity =
-        std::make_unique<UserFunction>(description.gravity,
-                                       where + "/Boundary conditions/Gravity");
+      std::make_unique<BoundaryConditions>(description, named_boundaries, mesh);
+    loads = std::make_unique<DistributedLoads>(description,
+                                               *boundary_conditions,
+                                               *materials_of_cells,
+                                               where);
     if (axisymmetric)
-      boundary_conditions->hold_on_axis(dofs_on_axis());
+      boundary_conditions->hold_on_axis(
+        radial_dofs_on_axis(dofs, *element_space, reference_size));
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());
-    system_rhs.reinit(dofs.n_dofs());
     unconstrained_residual.reinit(dofs.n_dofs());
     contact_forces.reinit(dofs.n_dofs());
+    cell_integration = std::make_unique<CellIntegration>(*element_space,
+                                                         *materials_of_cells,
+                                                         description.material,
+                                                         mesh.n_active_cells());
 
-    // The set of constrained dofs never changes during a run (only the
-    // prescribed values do), so the sparsity pattern is built once.
+    // The constraints at t = 0 say which dofs are constrained, which never
+    // changes during a run: the system's sparsity pattern is built on them.
+    AffineConstraints<double> constraints;
     boundary_conditions->make_constraints(
       dofs, *element_space, 0., solution, element_constraints, constraints);
-    DynamicSparsityPattern dsp(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
-    sparsity.copy_from(dsp);
-    tangent.reinit(sparsity);
-    // Cholesky where the tangent is symmetric (a body in contact sets its
-    // contact dofs to eliminate last later, set_contact_dofs).
-    factorization.use_cholesky(tangent_is_symmetric(), {});
-
-    // The rigid motions the supports leave free, about the centre of the
-    // body's bounding box.
-    const auto box = GridTools::compute_bounding_box(mesh);
-    const auto basis =
-      rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
-    const std::vector<RigidMotion> all(basis.begin(), basis.end());
-    const auto                     rows =
-      boundary_conditions->support_rows(dofs, *element_space, basis);
-    if (axisymmetric)
-      {
-        // A body of revolution has one rigid motion, along its axis (a
-        // radial translation or a rotation would strain its hoops).
-        bool held = false;
-        for (const auto &row : rows)
-          held = held || std::abs(row[1]) > 1e-12;
-        if (!held)
-          free_motions.push_back(basis[1]);
-      }
-    else
-      for (const auto &coefficients : null_space(rows, 3))
-        free_motions.push_back(combine(all, coefficients));
-  }
-
-
-
-  void
-  Body::check_axisymmetric_mesh(const std::string &where) const
-  {
-    if (description.element_space == "hermite")
-      throw InputError(
-        where + "/Material/Hypothesis",
-        "axisymmetric bodies are not implemented for Hermite elements: "
-        "their derivative dofs would need the axis condition on the "
-        "derivatives of u_r too (du_r/dz = 0 on the axis), and the hoop "
-        "strain u_r / r of a C1 field near the axis is not what the "
-        "element was built for; use q1, q2, q3, q8 or q12");
-    // r >= 0: a cell with a vertex left of the axis would have a negative
-    // ring volume there.
-    const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
-    for (const auto &cell : mesh.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        if (cell->vertex(v)[0] < -tolerance)
-          {
-            std::ostringstream message;
-            message << "an axisymmetric body needs its mesh in x = r >= 0 "
-                    << "(x is the radius, y the axis): cell "
-                    << cell->active_cell_index() << " has a vertex at ("
-                    << cell->vertex(v)[0] << ", " << cell->vertex(v)[1] << ")";
-            throw InputError(where + "/Mesh", message.str());
-          }
-  }
-
-
-
-  std::vector<types::global_dof_index>
-  Body::dofs_on_axis() const
-  {
-    // The x dofs whose support point lies on x = 0 (every space but
-    // Hermite's has one value dof per node and component).
-    std::map<types::global_dof_index, Point<2>> support_points;
-    DoFTools::map_dofs_to_support_points(element_space->mapping(),
-                                         dofs,
-                                         support_points);
-    const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
-    std::vector<types::global_dof_index> on_axis;
-    const FiniteElement<2>              &fe = dofs.get_fe();
-    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-    std::set<types::global_dof_index>    radial;
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        cell->get_dof_indices(local);
-        for (unsigned int i = 0; i < local.size(); ++i)
-          if (fe.system_to_component_index(i).first == 0)
-            radial.insert(local[i]);
-      }
-    for (const auto &[dof, X] : support_points)
-      if (radial.count(dof) && std::abs(X[0]) <= tolerance)
-        on_axis.push_back(dof);
-    return on_axis;
+    linear_system = std::make_unique<BodyLinearSystem>(
+      dofs,
+      *element_space,
+      std::move(constraints),
+      without_follower_pressure(*boundary_conditions),
+      RigidMotionSprings(motions_free_of_supports(*boundary_conditions,
+                                                  dofs,
+                                                  *element_space,
+                                                  mesh,
+                                                  reference_size,
+                                                  axisymmetric),
+                         source,
+                         description.name,
+                         reference_size));
   }
 
 
@@ -178,31 +230,14 @@ namespace glissade
   bool
   Body::assemble()
   {
-    boundary_conditions->make_constraints(
-      dofs, *element_space, time, solution, element_constraints, constraints);
-
-    tangent                = 0.;
-    system_rhs             = 0.;
+    boundary_conditions->make_constraints(dofs,
+                                          *element_space,
+                                          time,
+                                          solution,
+                                          element_constraints,
+                                          linear_system->constraints());
+    linear_system->clear();
     unconstrained_residual = 0.;
-    Vector<double> internal_forces(dofs.n_dofs());
-    Vector<double> viscous_forces(inertia_terms ? dofs.n_dofs() : 0);
-
-    const double thickness = description.material.thickness;
-    const bool   axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    // Small strain: the virtual strains and the equilibrium on the
-    // undeformed body (F = I in them, no geometric stiffness).
-    const bool small_strain =
-      description.material.kinematics == Kinematics::small_strain;
-    if (small_strain && kept_linear_stiffness.empty())
-      kept_linear_stiffness.resize(dofs.get_triangulation().n_active_cells());
-    const auto         boundary_evaluator = element_space->create_evaluator();
-    const unsigned int n_local            = boundary_evaluator->dofs_per_cell();
-    std::vector<unsigned int> component(n_local);
-    for (unsigned int i = 0; i < n_local; ++i)
-      component[i] = boundary_evaluator->displacement_component(i);
-
-    bool admissible = true;
     problem.clear();
     if (!std::isfinite(solution.l2_norm()))
       {
@@ -217,300 +252,32 @@ namespace glissade
     // each one adds to the global vectors and matrix is added by one
     // thread, cell after cell in the order of the mesh, so the sums are
     // the same bits as in a sequential loop (ctest -R determinism). The
-    // surface loads are added there too: their muParser functions hold a
-    // time and are not safe to share between threads.
-    struct Scratch
-    {
-      Scratch(const ElementSpace &space, const unsigned int n_local)
-        : space(space)
-        , evaluator(space.create_evaluator())
-        , grad(n_local)
-        , dE(n_local)
-        , D_dE(n_local)
-      {}
-      Scratch(const Scratch &other)
-        : Scratch(other.space, other.grad.size())
-      {}
-      const ElementSpace                &space;
-      std::unique_ptr<CellEvaluator>     evaluator;
-      std::vector<Tensor<1, 2>>          grad;
-      std::vector<SymmetricTensor<2, 2>> dE, D_dE;
-      // (axisymmetric: each dof's hoop strain variation dE_33 and the hoop
-      // stress variation dS_33 it causes)
-      std::vector<double> dE33 = std::vector<double>(grad.size()),
-                          dS33 = std::vector<double>(grad.size());
-      // (stiffness damping: the cell's velocity dofs)
-      std::vector<double> cell_velocity = std::vector<double>(grad.size());
-      // (small strain: the cell's displacement or velocity dofs, and K_e
-      // times them)
-      Vector<double> cell_values  = Vector<double>(grad.size()),
-                     cell_product = Vector<double>(grad.size());
-    };
-    struct CellContribution
-    {
-      explicit CellContribution(const unsigned int n_local)
-        : cell_matrix(n_local, n_local)
-        , cell_rhs(n_local)
-        , viscous_force(n_local)
-        , local_dofs(n_local)
-      {}
-      // The surface loads are added to them in the (sequential) copier,
-      // which WorkStream hands a const reference.
-      mutable FullMatrix<double>           cell_matrix;
-      mutable Vector<double>               cell_rhs;
-      Vector<double>                       viscous_force;
-      std::vector<types::global_dof_index> local_dofs;
-      std::string                          rejection; // why, if inadmissible
-      typename DoFHandler<2>::active_cell_iterator cell;
-    };
-
-    const auto integrate =
+    // loads are added there too (DistributedLoads).
+    using Scratch      = CellIntegration::Scratch;
+    using Contribution = CellIntegration::CellContribution;
+    Vector<double>     internal_forces(dofs.n_dofs());
+    Vector<double>     viscous_forces(inertia_terms ? dofs.n_dofs() : 0);
+    bool               admissible         = true;
+    const auto         boundary_evaluator = element_space->create_evaluator();
+    const unsigned int n_local            = cell_integration->dofs_per_cell();
+    WorkStream::run(
+      dofs.begin_active(),
+      dofs.end(),
       [&](const typename DoFHandler<2>::active_cell_iterator &cell,
           Scratch                                            &scratch,
-          CellContribution                                   &data) {
-        CellEvaluator &evaluator   = *scratch.evaluator;
-        auto          &grad        = scratch.grad;
-        auto          &dE          = scratch.dE;
-        auto          &D_dE        = scratch.D_dE;
-        auto          &dE33        = scratch.dE33;
-        auto          &dS33        = scratch.dS33;
-        auto          &cell_matrix = data.cell_matrix;
-        auto          &cell_rhs    = data.cell_rhs;
-        data.cell                  = cell;
-        data.rejection.clear();
-        cell->get_dof_indices(data.local_dofs);
-        cell_matrix        = 0.;
-        cell_rhs           = 0.;
-        data.viscous_force = 0.;
-        const Material &cell_material =
-          materials_of_cells->of_cell(cell->material_id());
-        // Stiffness damping: the material at rest and the cell's velocity.
-        const double damping_a_K =
-          inertia_terms ? inertia_terms->stiffness_damping() : 0.;
-        MaterialPointResponse at_rest;
-        if (damping_a_K > 0.)
-          {
-            if (!small_strain)
-              at_rest = cell_material.evaluate(Tensor<2, 2>(), 0.);
-            inertia_terms->cell_velocity(data.local_dofs,
-                                         solution,
-                                         scratch.cell_velocity);
-          }
-        // A small-strain cell's stiffness K_e does not depend on u: it is
-        // integrated once and kept, and its forces are K_e u_e (each cell
-        // writes its own slot: safe on every thread).
-        FullMatrix<double> &kept =
-          small_strain ? kept_linear_stiffness[cell->active_cell_index()] :
-                         cell_matrix;
-        const bool integrate_points = !small_strain || kept.empty();
-        if (integrate_points)
-          evaluator.reinit(cell);
-
-        for (unsigned int q = 0;
-             integrate_points && q < evaluator.n_quadrature_points();
-             ++q)
-          {
-            // Every shape function is primitive: Grad N_i has a single
-            // non-zero row (its component c_i), which makes every
-            // contraction below a small dot product.
-            Tensor<2, 2> H; // displacement gradient
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                grad[i] = evaluator.shape_grad(i, q);
-                H[component[i]] += solution(data.local_dofs[i]) * grad[i];
-              }
-            const Tensor<2, 2> F = small_strain ?
-                                     Tensor<2, 2>(unit_symmetric_tensor<2>()) :
-                                     unit_symmetric_tensor<2>() + H;
-            // Axisymmetric: the hoop stretch F_33 = 1 + u_r / r, r the
-            // reference radius of the point (> 0 at every quadrature point
-            // of a mesh in r >= 0), and the volume of the ring 2 pi r dA.
-            double       hoop = 0.;
-            const double r    = evaluator.quadrature_point(q)[0];
-            if (axisymmetric)
-              {
-                for (unsigned int i = 0; i < n_local; ++i)
-                  if (component[i] == 0)
-                    hoop += solution(data.local_dofs[i]) *
-                            evaluator.shape_value(i, q);
-                hoop /= r;
-              }
-            const double J =
-              determinant(unit_symmetric_tensor<2>() + H) * (1. + hoop);
-            if (!(J > 0.) || !std::isfinite(J) || !(1. + hoop > 0.))
-              {
-                std::ostringstream why;
-                why << "is inverted, det F = " << J
-                    << " (an increment too large for the deformation, or a "
-                       "mesh too coarse for it)";
-                if (data.rejection.empty())
-                  data.rejection = why.str();
-                continue;
-              }
-            const MaterialPointResponse response =
-              cell_material.evaluate(H, hoop);
-            // The tangent too: at u = 0 the stress is zero however large
-            // E is, and only the stiffness overflows.
-            if (!std::isfinite(response.stress.norm()) ||
-                !std::isfinite(response.tangent.norm()))
-              {
-                std::ostringstream why;
-                const auto [young_modulus, entry] =
-                  materials_of_cells->young_modulus_of_cell(
-                    cell->material_id());
-                why << "has a stress or stiffness that is not finite: the "
-                    << entry << " (" << young_modulus
-                    << ") times the strain is beyond double precision; "
-                       "express the scene in other units";
-                if (data.rejection.empty())
-                  data.rejection = why.str();
-                continue;
-              }
-            const Tensor<2, 2> P = F * Tensor<2, 2>(response.stress);
-            const double       dV =
-              evaluator.JxW(q) * (axisymmetric ? 2. * M_PI * r : thickness);
-
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                const unsigned int c = component[i];
-                for (unsigned int a = 0; a < 2; ++a)
-                  for (unsigned int b = a; b < 2; ++b)
-                    dE[i][a][b] =
-                      0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
-                D_dE[i] = response.tangent * dE[i];
-                cell_rhs(i) -= (P[c] * grad[i]) * dV;
-                if (axisymmetric)
-                  {
-                    // dE_33 = F_33 du_r / r; the hoop stress works on it.
-                    dE33[i] = c == 0 ? (small_strain ? 1. : 1. + hoop) *
-                                         evaluator.shape_value(i, q) / r :
-                                       0.;
-                    D_dE[i] += response.hoop_coupling * dE33[i];
-                    dS33[i] = response.hoop_coupling * dE[i] +
-                              response.hoop_stiffness * dE33[i];
-                    cell_rhs(i) -= response.hoop_stress * dE33[i] * dV;
-                  }
-              }
-            for (unsigned int i = 0; i < n_local; ++i)
-              {
-                const Tensor<1, 2> S_grad_i =
-                  Tensor<2, 2>(response.stress) * grad[i];
-                for (unsigned int j = 0; j <= i; ++j)
-                  {
-                    double k = dE[j] * D_dE[i];
-                    if (component[i] == component[j] && !small_strain)
-                      k += S_grad_i * grad[j];
-                    if (axisymmetric)
-                      {
-                        k += dE33[j] * dS33[i];
-                        // d(dE_33)/du_r = N_i N_j / r^2 (radial dofs)
-                        if (component[i] == 0 && component[j] == 0 &&
-                            !small_strain)
-                          k += response.hoop_stress *
-                               evaluator.shape_value(i, q) *
-                               evaluator.shape_value(j, q) / (r * r);
-                      }
-                    cell_matrix(i, j) += k * dV;
-                  }
-              }
-            if (damping_a_K > 0. && !small_strain)
-              add_viscous_stress_terms(
-                damping_a_K,
-                inertia_terms->velocity_factor(),
-                ViscousStressPoint{at_rest, F, 1. + hoop, r, axisymmetric, dV},
-                evaluator,
-                q,
-                component,
-                grad,
-                dE,
-                dE33,
-                scratch.cell_velocity,
-                cell_matrix,
-                cell_rhs,
-                data.viscous_force);
-          }
-        if (integrate_points)
-          for (unsigned int i = 0; i < n_local; ++i)
-            for (unsigned int j = i + 1; j < n_local; ++j)
-              cell_matrix(i, j) = cell_matrix(j, i);
-        if (small_strain)
-          {
-            if (integrate_points)
-              kept = cell_matrix;
-            else
-              {
-                // F_int = K_e u_e, exactly (linear elasticity).
-                cell_matrix = kept;
-                for (unsigned int i = 0; i < n_local; ++i)
-                  scratch.cell_values(i) = solution(data.local_dofs[i]);
-                kept.vmult(scratch.cell_product, scratch.cell_values);
-                cell_rhs -= scratch.cell_product;
-              }
-            // The viscous stress a_K D_0 : d(epsilon)/dt: a_K K_e v_e, its
-            // tangent a_K c_v K_e.
-            if (damping_a_K > 0.)
-              {
-                for (unsigned int i = 0; i < n_local; ++i)
-                  scratch.cell_values(i) = scratch.cell_velocity[i];
-                kept.vmult(data.viscous_force, scratch.cell_values);
-                data.viscous_force *= damping_a_K;
-                cell_rhs -= data.viscous_force;
-                cell_matrix.add(damping_a_K * inertia_terms->velocity_factor(),
-                                kept);
-              }
-          }
-        // A dynamic scheme's inertia (BodyInertia: read only, so shared by
-        // the threads).
-        if (inertia_terms)
-          inertia_terms->add_cell_terms(cell->active_cell_index(),
-                                        data.local_dofs,
-                                        solution,
-                                        cell_matrix,
-                                        cell_rhs);
-      };
-
-    // The first cell that makes the state inadmissible names the problem.
-    const auto add = [&](const CellContribution &data) {
-      auto       &cell_matrix = data.cell_matrix;
-      auto       &cell_rhs    = data.cell_rhs;
-      const auto &cell        = data.cell;
-      if (!data.rejection.empty())
-        {
-          if (admissible)
-            {
-              std::ostringstream message;
-              message << "cell " << cell->active_cell_index() << " of body '"
-                      << name() << "' at (" << cell->center()[0] << ", "
-                      << cell->center()[1] << ") " << data.rejection;
-              problem = message.str();
-            }
-          admissible = false;
-        }
-      for (unsigned int i = 0; i < n_local; ++i)
-        internal_forces(data.local_dofs[i]) -= cell_rhs(i);
-      if (viscous_forces.size() > 0)
-        for (unsigned int i = 0; i < n_local; ++i)
-          viscous_forces(data.local_dofs[i]) += data.viscous_force(i);
-
-      if (cell->at_boundary())
-        assemble_surface_loads(
-          cell, data.local_dofs, *boundary_evaluator, cell_matrix, cell_rhs);
-      if (gravity)
-        assemble_weight(cell, *boundary_evaluator, cell_rhs);
-
-      for (unsigned int i = 0; i < n_local; ++i)
-        unconstrained_residual(data.local_dofs[i]) -= cell_rhs(i);
-      constraints.distribute_local_to_global(
-        cell_matrix, cell_rhs, data.local_dofs, tangent, system_rhs);
-    };
-
-    WorkStream::run(dofs.begin_active(),
-                    dofs.end(),
-                    integrate,
-                    add,
-                    Scratch(*element_space, n_local),
-                    CellContribution(n_local));
-
+          Contribution                                       &data) {
+        cell_integration->integrate(
+          cell, solution, inertia_terms.get(), scratch, data);
+      },
+      [&](const Contribution &data) {
+        add_cell(data,
+                 *boundary_evaluator,
+                 internal_forces,
+                 viscous_forces,
+                 admissible);
+      },
+      Scratch(*element_space, n_local),
+      Contribution(n_local));
     if (inertia_terms)
       inertia_terms->set_viscous_forces(viscous_forces);
 
@@ -523,17 +290,7 @@ namespace glissade
     if (inertia_terms)
       point_loads += inertia_terms->step_forces();
     unconstrained_residual -= point_loads;
-    {
-      std::vector<types::global_dof_index> index(1);
-      Vector<double>                       value(1);
-      for (types::global_dof_index i = 0; i < dofs.n_dofs(); ++i)
-        if (point_loads(i) != 0.)
-          {
-            index[0] = i;
-            value(0) = point_loads(i);
-            constraints.distribute_local_to_global(value, index, system_rhs);
-          }
-    }
+    linear_system->add_nodal_forces(point_loads);
 
     internal_force_norm = internal_forces.l2_norm();
     external_forces     = internal_forces;
@@ -549,162 +306,44 @@ namespace glissade
 
 
   void
-  Body::assemble_surface_loads(
-    const typename DoFHandler<2>::active_cell_iterator &cell,
-    const std::vector<types::global_dof_index>         &local_dofs,
-    CellEvaluator                                      &evaluator,
-    FullMatrix<double>                                 &cell_matrix,
-    Vector<double>                                     &cell_rhs) const
+  Body::add_cell(const CellIntegration::CellContribution &data,
+                 CellEvaluator                           &boundary_evaluator,
+                 Vector<double>                          &internal_forces,
+                 Vector<double>                          &viscous_forces,
+                 bool                                    &admissible)
   {
-    const auto &loads = boundary_conditions->surface_loads();
-    if (loads.empty())
-      return;
-    const double thickness = description.material.thickness;
-    const bool   axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    const bool small_strain =
-      description.material.kinematics == Kinematics::small_strain;
-    const unsigned int n_local = evaluator.dofs_per_cell();
-
-    for (const unsigned int f : cell->face_indices())
+    const auto &cell = data.cell;
+    // The first cell that makes the state inadmissible names the problem.
+    if (!data.rejection.empty())
       {
-        if (!cell->face(f)->at_boundary())
-          continue;
-        for (const auto &load : loads)
+        if (admissible)
           {
-            if (load.boundary != cell->face(f)->boundary_id())
-              continue;
-            evaluator.reinit(cell, f);
-            load.function->set_time(time);
-            std::vector<double> cell_values(n_local);
-            for (unsigned int i = 0; i < n_local; ++i)
-              cell_values[i] = solution(local_dofs[i]);
-            for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
-              {
-                const Point<2>     X  = evaluator.quadrature_point(q);
-                const Tensor<1, 2> N0 = evaluator.normal_vector(q);
-                // (axisymmetric: the ring of the reference surface,
-                // 2 pi R dS; a traction is per unit reference area)
-                const double dA = evaluator.JxW(q) *
-                                  (axisymmetric ? 2. * M_PI * X[0] : thickness);
-                if (!load.is_pressure)
-                  {
-                    // Dead traction per unit reference length.
-                    const Tensor<1, 2> t(
-                      {load.function->value(X, 0), load.function->value(X, 1)});
-                    for (unsigned int i = 0; i < n_local; ++i)
-                      cell_rhs(i) += evaluator.shape_value(i, q) *
-                                     t[evaluator.displacement_component(i)] *
-                                     dA;
-                    continue;
-                  }
-                // Follower pressure: f = -p n da = -p cof(F) N0 dA (Nanson),
-                // with cof(F) linear in F in 2D, hence the simple tangent.
-                // Axisymmetric: da is the current ring, 2 pi x_r ds, that
-                // is F_33 = x_r / R times the reference one (3D Nanson).
-                // (small strain: on the undeformed body, a dead load)
-                const Tensor<2, 2> F =
-                  small_strain ? Tensor<2, 2>(unit_symmetric_tensor<2>()) :
-                                 unit_symmetric_tensor<2>() +
-                                   evaluator.gradient(cell_values, q);
-                const double       p = load.function->value(X);
-                const Tensor<1, 2> cof_F_N0(
-                  {F[1][1] * N0[0] - F[1][0] * N0[1],
-                   -F[0][1] * N0[0] + F[0][0] * N0[1]});
-                const double hoop_stretch =
-                  axisymmetric && !small_strain ?
-                    1. + evaluator.value(cell_values, q)[0] / X[0] :
-                    1.;
-                for (unsigned int i = 0; i < n_local; ++i)
-                  {
-                    const unsigned int ci = evaluator.displacement_component(i);
-                    const double       Ni = evaluator.shape_value(i, q);
-                    cell_rhs(i) -= p * Ni * cof_F_N0[ci] * hoop_stretch * dA;
-                    for (unsigned int j = 0; j < n_local && !small_strain; ++j)
-                      {
-                        const unsigned int cj =
-                          evaluator.displacement_component(j);
-                        const Tensor<1, 2> g = evaluator.shape_grad(j, q);
-                        double             d = 0.;
-                        if (ci == 1 && cj == 0)
-                          d = -g[1] * N0[0] + g[0] * N0[1];
-                        else if (ci == 0 && cj == 1)
-                          d = g[1] * N0[0] - g[0] * N0[1];
-                        d *= hoop_stretch;
-                        if (axisymmetric && cj == 0)
-                          d +=
-                            cof_F_N0[ci] * evaluator.shape_value(j, q) / X[0];
-                        cell_matrix(i, j) += p * Ni * d * dA;
-                      }
-                  }
-              }
+            std::ostringstream message;
+            message << "cell " << cell->active_cell_index() << " of body '"
+                    << name() << "' at (" << cell->center()[0] << ", "
+                    << cell->center()[1] << ") " << data.rejection;
+            problem = message.str();
           }
+        admissible = false;
       }
-  }
+    const unsigned int n_local = data.local_dofs.size();
+    for (unsigned int i = 0; i < n_local; ++i)
+      internal_forces(data.local_dofs[i]) -= data.cell_rhs(i);
+    if (viscous_forces.size() > 0)
+      for (unsigned int i = 0; i < n_local; ++i)
+        viscous_forces(data.local_dofs[i]) += data.viscous_force(i);
 
+    loads->add_cell_loads(cell,
+                          data.local_dofs,
+                          solution,
+                          time,
+                          boundary_evaluator,
+                          data.cell_matrix,
+                          data.cell_rhs);
 
-
-  void
-  Body::assemble_weight(
-    const typename DoFHandler<2>::active_cell_iterator &cell,
-    CellEvaluator                                      &evaluator,
-    Vector<double>                                     &cell_rhs) const
-  {
-    // rho g per unit reference volume: the mass is the reference one
-    // (total Lagrangian), so the weight is a dead load. (In the sequential
-    // copier: muParser's functions hold a time and are not thread safe.)
-    const double rho = materials_of_cells->density_of_cell(cell->material_id());
-    if (!(rho > 0.))
-      return;
-    const bool axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    gravity->set_time(time);
-    evaluator.reinit(cell);
-    for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
-      {
-        const Point<2> X = evaluator.quadrature_point(q);
-        const double   dV =
-          evaluator.JxW(q) *
-          (axisymmetric ? 2. * M_PI * X[0] : description.material.thickness);
-        const std::array<double, 2> g = {
-          {gravity->value(X, 0), gravity->value(X, 1)}};
-        for (unsigned int i = 0; i < evaluator.dofs_per_cell(); ++i)
-          cell_rhs(i) += rho * g[evaluator.displacement_component(i)] *
-                         evaluator.shape_value(i, q) * dV;
-      }
-  }
-
-
-
-  double
-  Body::strain_energy() const
-  {
-    const bool axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    auto evaluator = element_space->create_evaluator();
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
-    std::vector<double>                  values(local.size());
-    double                               energy = 0.;
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        evaluator->reinit(cell);
-        cell->get_dof_indices(local);
-        for (unsigned int i = 0; i < local.size(); ++i)
-          values[i] = solution(local[i]);
-        const Material &material =
-          materials_of_cells->of_cell(cell->material_id());
-        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
-          {
-            const double r = evaluator->quadrature_point(q)[0];
-            const double hoop =
-              axisymmetric ? evaluator->value(values, q)[0] / r : 0.;
-            energy +=
-              material.energy(evaluator->gradient(values, q), hoop) *
-              evaluator->JxW(q) *
-              (axisymmetric ? 2. * M_PI * r : description.material.thickness);
-          }
-      }
-    return energy;
+    for (unsigned int i = 0; i < n_local; ++i)
+      unconstrained_residual(data.local_dofs[i]) -= data.cell_rhs(i);
+    linear_system->add_cell(data.cell_matrix, data.cell_rhs, data.local_dofs);
   }
 
 
@@ -715,7 +354,8 @@ namespace glissade
     // The equilibrium equations of the free dofs are the condensed ones: a
     // constrained dof a = sum_b w_b u_b + g hands its residual on to the
     // dofs b (serendipity interiors, Hermite tangential derivatives).
-    Vector<double> condensed = unconstrained_residual;
+    const AffineConstraints<double> &constraints = linear_system->constraints();
+    Vector<double>                   condensed   = unconstrained_residual;
     condensed -= contact_forces;
     constraints.condense(condensed);
     for (const auto &line : constraints.get_lines())
@@ -752,7 +392,7 @@ namespace glissade
   Body::boundary_id(const std::string &boundary, const std::string &entry) const
   {
     const Location where = BoundaryConditions::resolve(
-      boundary, boundary_names, mesh, description.name, entry);
+      boundary, named_boundaries, mesh, description.name, entry);
     if (where.is_vertex)
       throw InputError(entry, "expected a boundary name, not a point");
     return where.boundary;
@@ -782,125 +422,5 @@ namespace glissade
   {
     solution       = stored_solution;
     contact_forces = stored_contact_forces;
-  }
-
-
-
-  Tensor<1, 2>
-  Body::vertex_displacement(const Point<2> &point) const
-  {
-    const auto dof_pair = vertex_value_dofs(point);
-    return Tensor<1, 2>({solution(dof_pair[0]), solution(dof_pair[1])});
-  }
-
-
-
-  std::array<types::global_dof_index, 2>
-  Body::vertex_value_dofs(const Point<2> &point) const
-  {
-    std::ostringstream location;
-    location.precision(17);
-    location << "point(" << point[0] << ", " << point[1] << ")";
-    const Location where = BoundaryConditions::resolve(location.str(),
-                                                       boundary_names,
-                                                       mesh,
-                                                       description.name,
-                                                       "",
-                                                       false,
-                                                       reference_size);
-    return BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
-  }
-
-
-
-  std::vector<Tensor<1, 2>>
-  Body::vertex_displacements() const
-  {
-    std::vector<Tensor<1, 2>> result(mesh.n_vertices());
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const auto value_dofs =
-            BoundaryConditions::cell_vertex_dofs(cell, v, *element_space);
-          for (unsigned int d = 0; d < 2; ++d)
-            result[cell->vertex_index(v)][d] = solution(value_dofs[d]);
-        }
-    return result;
-  }
-
-
-
-  double
-  Body::max_displacement() const
-  {
-    // Nodal values: pair the x and y value dofs that share a node.
-    const FiniteElement<2> &fe = element_space->finite_element();
-    const unsigned int per_dim = element_space->components_per_displacement();
-    std::vector<std::pair<unsigned int, unsigned int>> pairs;
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci = fe.system_to_component_index(i);
-        if (ci.first != 0)
-          continue;
-        for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
-          if (fe.system_to_component_index(j) ==
-              std::make_pair(per_dim, ci.second))
-            pairs.emplace_back(i, j);
-      }
-    std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
-    double                               largest = 0.;
-    for (const auto &cell : dofs.active_cell_iterators())
-      {
-        cell->get_dof_indices(local_dofs);
-        for (const auto &p : pairs)
-          largest = std::max(largest,
-                             std::hypot(solution(local_dofs[p.first]),
-                                        solution(local_dofs[p.second])));
-      }
-    return largest;
-  }
-
-
-
-  Tensor<1, 2>
-  Body::reaction(const std::string &boundary) const
-  {
-    const Location where = BoundaryConditions::resolve(
-      boundary, boundary_names, mesh, description.name, "");
-    Tensor<1, 2> sum;
-    if (where.is_vertex)
-      {
-        const auto d =
-          BoundaryConditions::vertex_dofs(dofs, *element_space, where.vertex);
-        return Tensor<1, 2>(
-          {unconstrained_residual(d[0]) - contact_forces(d[0]),
-           unconstrained_residual(d[1]) - contact_forces(d[1])});
-      }
-    const FiniteElement<2>              &fe = element_space->finite_element();
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    std::vector<bool>                    counted(dofs.n_dofs(), false);
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            cell->face(f)->boundary_id() == where.boundary)
-          {
-            cell->face(f)->get_dof_indices(face_dofs);
-            for (unsigned int k = 0; k < face_dofs.size(); ++k)
-              if (!counted[face_dofs[k]])
-                {
-                  counted[face_dofs[k]] = true;
-                  // Only value dofs carry force; derivative dofs carry
-                  // its moments.
-                  const unsigned int per_dim =
-                    element_space->components_per_displacement();
-                  const unsigned int k_component =
-                    fe.face_system_to_component_index(k).first;
-                  if (k_component % per_dim == 0)
-                    sum[k_component / per_dim] +=
-                      unconstrained_residual(face_dofs[k]) -
-                      contact_forces(face_dofs[k]);
-                }
-          }
-    return sum;
   }
 } // namespace glissade

@@ -209,7 +209,7 @@ namespace glissade
                                  ", " + std::to_string(X[1]) + ")");
           }
       }
-    body.dof_constraints().distribute(v);
+    body.system().constraints().distribute(v);
   }
 
 
@@ -221,7 +221,7 @@ namespace glissade
     // condensed by the body's constraints without their values (element
     // relations, supports), a massless dof's row the identity.
     AffineConstraints<double> homogeneous;
-    for (const auto &line : body.dof_constraints().get_lines())
+    for (const auto &line : body.system().constraints().get_lines())
       {
         homogeneous.add_line(line.index);
         homogeneous.add_entries(line.index, line.entries);

@@ -259,7 +259,7 @@ namespace glissade
       {
         const Body &b = e.body == 0 ? slave_body : *master_body;
         whole += std::abs(e.value);
-        if (!b.dof_is_prescribed(e.dof))
+        if (!b.system().dof_is_prescribed(e.dof))
           free += std::abs(e.value);
       }
     return free > 1e-12 * whole;

@@ -1,5 +1,6 @@
 #include <deal.II/grid/tria.h>
 
+#include <glissade/body/body_measures.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/folding_corner.h>
 
@@ -124,7 +125,7 @@ namespace glissade
         if (turn < sharp_corner_degrees)
           continue;
         if (displacement.empty())
-          displacement = body.vertex_displacements();
+          displacement = vertex_displacements(body);
         const CrushedCell crushed =
           most_crushed_cell_at(mesh, displacement, node.vertex);
         if (crushed.jacobian >= crushed_corner_jacobian)

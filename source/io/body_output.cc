@@ -3,6 +3,7 @@
 
 #include <glissade/body/body.h>
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/body_output.h>
 #include <glissade/io/stress_postprocessor.h>
 
 #include <iomanip>
@@ -43,17 +44,22 @@ namespace glissade
   } // namespace
 
   std::string
-  Body::write_vtu(const std::string    &directory,
-                  const unsigned int    index,
-                  const OutputSettings &settings) const
+  write_body_vtu(const Body           &body,
+                 const std::string    &directory,
+                 const unsigned int    index,
+                 const OutputSettings &settings)
   {
-    const unsigned int  per_dim = element_space->components_per_displacement();
-    StressPostprocessor stress(*materials_of_cells,
+    const ElementSpace   &element_space = body.space();
+    const Vector<double> &solution      = body.displacement();
+    const BodyInertia    *inertia_terms = body.inertia();
+    const unsigned int    per_dim = element_space.components_per_displacement();
+    StressPostprocessor   stress(body.materials(),
                                per_dim,
-                               hypothesis() == PlaneHypothesis::axisymmetric);
-    NodalDisplacement   nodal_displacement(per_dim);
-    DataOut<2>          data_out;
-    data_out.attach_dof_handler(dofs);
+                               body.hypothesis() ==
+                                 PlaneHypothesis::axisymmetric);
+    NodalDisplacement     nodal_displacement(per_dim);
+    DataOut<2>            data_out;
+    data_out.attach_dof_handler(body.dof_handler());
     // (the fields the scene asks for: Output/VTU fields)
     if (settings.vtu_displacement && per_dim == 1)
       {
@@ -100,7 +106,7 @@ namespace glissade
     // times. The contact forces are in the contact surface output
     // (ContactSurfaceOutput), each node once.
     const unsigned int degree =
-      per_dim == 1 ? element_space->finite_element().degree : 1;
+      per_dim == 1 ? element_space.finite_element().degree : 1;
     // No time stamp in the file: the same scene must give the same bytes
     // (ctest -R determinism).
     DataOutBase::VtkFlags flags;
@@ -116,13 +122,13 @@ namespace glissade
                                       DataOutBase::VtkFlags::no_compression :
                                       DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    data_out.build_patches(element_space->mapping(),
+    data_out.build_patches(element_space.mapping(),
                            degree,
                            DataOut<2>::curved_inner_cells);
 
     std::ostringstream name;
-    name << description.name << "-" << std::setw(5) << std::setfill('0')
-         << index << ".vtu";
+    name << body.name() << "-" << std::setw(5) << std::setfill('0') << index
+         << ".vtu";
     AtomicFile file(directory + "/" + name.str());
     file.write_and_commit([&](std::ostream &out) { data_out.write_vtu(out); });
     return name.str();

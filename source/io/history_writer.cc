@@ -1,5 +1,6 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/body/body_measures.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/history_writer.h>
 
@@ -169,7 +170,7 @@ namespace glissade
           {
             columns.push_back(identifier(args[0]) + "_max_u");
             evaluators.emplace_back([body](std::vector<double> &row) {
-              row.push_back(body->max_displacement());
+              row.push_back(max_displacement(*body));
             });
           }
         else if (kind == "displacement" && args.size() == 2)
@@ -182,7 +183,7 @@ namespace glissade
             std::array<types::global_dof_index, 2> vertex_dofs;
             try
               {
-                vertex_dofs = body->vertex_value_dofs(Point<2>(x, y));
+                vertex_dofs = vertex_value_dofs(*body, Point<2>(x, y));
               }
             catch (const InputError &e)
               {
@@ -202,7 +203,7 @@ namespace glissade
             const std::string where = args[1];
             try
               {
-                body->reaction(where);
+                support_reaction(*body, where);
               }
             catch (const InputError &e)
               {
@@ -212,7 +213,7 @@ namespace glissade
               columns.push_back(identifier(args[0]) + "_" + q + "_" +
                                 location_identifier(where));
             evaluators.emplace_back([body, where](std::vector<double> &row) {
-              const Tensor<1, 2> r = body->reaction(where);
+              const Tensor<1, 2> r = support_reaction(*body, where);
               row.push_back(r[0]);
               row.push_back(r[1]);
             });

@@ -1,7 +1,9 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/timing_sections.h>
+#include <glissade/body/body_measures.h>
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/body_output.h>
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
 #include <glissade/io/scene_output.h>
@@ -98,7 +100,7 @@ namespace glissade
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const std::string vtu =
-          bodies[b]->write_vtu(settings.directory, increment, settings);
+          write_body_vtu(*bodies[b], settings.directory, increment, settings);
         pvd_records[b].emplace_back(t, vtu);
         write_pvd_index(settings.directory + "/" + bodies[b]->name() + ".pvd",
                         pvd_records[b]);
@@ -136,7 +138,7 @@ namespace glissade
           {
             const auto &vertices = body->triangulation().get_vertices();
             const auto &used     = body->triangulation().get_used_vertices();
-            const auto  moved    = body->vertex_displacements();
+            const auto  moved    = vertex_displacements(*body);
             for (unsigned int v = 0; v < vertices.size(); ++v)
               for (unsigned int d = 0; d < 2 && used[v]; ++d)
                 {

@@ -236,7 +236,7 @@ namespace glissade
                 if (previous_tangent)
                   ++stats.n_reused_factorizations;
                 else
-                  all_bodies[b]->factorize();
+                  all_bodies[b]->system().factorize();
               }
             catch (const std::runtime_error &e)
               {
@@ -249,7 +249,8 @@ namespace glissade
                 return false;
               }
             TimerOutput::Scope scope(timer, timing::predictor);
-            all_bodies[b]->solve(all_bodies[b]->right_hand_side(), du[b]);
+            all_bodies[b]->system().solve(
+              all_bodies[b]->system().right_hand_side(), du[b]);
           }
         if (!contact_problem->empty() && !contact_problem->correct(du))
           {
@@ -565,9 +566,9 @@ namespace glissade
     total.checkpoint_seconds += seconds(timing::checkpoints);
     for (const auto &body : all_bodies)
       {
-        total.n_cholesky += body->direct_solver().n_cholesky;
-        total.n_lu += body->direct_solver().n_lu;
-        total.n_unchanged_tangents += body->direct_solver().n_reused;
+        total.n_cholesky += body->system().direct_solver().n_cholesky;
+        total.n_lu += body->system().direct_solver().n_lu;
+        total.n_unchanged_tangents += body->system().direct_solver().n_reused;
       }
     return total;
   }

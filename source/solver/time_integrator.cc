@@ -1,3 +1,4 @@
+#include <glissade/body/body_measures.h>
 #include <glissade/solver/time_integrator.h>
 
 #include <set>
@@ -49,7 +50,7 @@ namespace glissade
         , bodies(bodies)
       {
         for (const auto &body : bodies)
-          body->hold_rigid_motions_by_inertia();
+          body->system().hold_rigid_motions_by_inertia();
       }
 
       bool
@@ -145,7 +146,7 @@ namespace glissade
         for (const auto &body : bodies)
           {
             account.kinetic += body->inertia()->kinetic_energy();
-            account.strain += body->strain_energy();
+            account.strain += strain_energy(*body);
           }
       }
 

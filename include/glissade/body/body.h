@@ -3,128 +3,115 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/body_inertia.h>
+#include <glissade/body/body_linear_system.h>
 #include <glissade/body/boundary_conditions.h>
-#include <glissade/body/rigid_motion.h>
+#include <glissade/body/cell_integration.h>
+#include <glissade/body/distributed_loads.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space.h>
-#include <glissade/lac/direct_solver.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
 
-#include <map>
 #include <memory>
 #include <string>
 
 namespace glissade
 {
   /**
-   * One deformable solid in the total Lagrangian setting: its mesh, element
-   * space, material, boundary data, and its own tangent matrix and direct
-   * factorisation. Bodies meet only through contact forces, so the global
-   * system is block-diagonal by body and each block is solved here alone.
+   * One deformable solid in the total Lagrangian setting. The body sets
+   * itself up from its description (mesh, element space, materials,
+   * boundary data), keeps its state (the displacement, the contact forces
+   * on it, the forces of its last assembly) and assembles; its parts do
+   * the rest:
+   * - CellIntegration: what the material of each cell adds to the tangent
+   *   and the internal forces;
+   * - DistributedLoads: tractions, follower pressure and weight;
+   * - BodyLinearSystem: the constraints, tangent, factorisation and
+   *   solves, the contact port and the springs of a body held by contact;
+   * - BodyInertia (under a dynamic scheme): mass, velocity, acceleration;
+   * - body_measures.h: vertex displacements, reactions, strain energy.
    *
-   * A Newton iteration, seen from the body, is: set_time(t) for the increment,
-   * then assemble() -> factorize() -> solve() -> update() until the
-   * Simulation says it has converged.
+   * A Newton iteration, seen from the body, is: set_time(t) for the
+   * increment, then assemble() -> system().factorize() -> system().solve()
+   * -> update() until the Simulation says it has converged.
    */
   class Body
   {
   public:
     Body(const BodyDescription &description, const std::string &source);
 
+    // What the body is, as set up from its description.
     const std::string &
-    name() const
-    {
-      return description.name;
-    }
-
+    name() const;
     /** What the scene says of the body. */
     const BodyDescription &
-    description_of_body() const
-    {
-      return description;
-    }
-
+    description_of_body() const;
     /** The .prm file the body comes from, for messages. */
     const std::string &
-    source_name() const
-    {
-      return source;
-    }
+    source_name() const;
+    const dealii::Triangulation<2> &
+    triangulation() const;
+    /** The named boundaries of the mesh. */
+    const BoundaryNames &
+    boundary_names() const;
+    /** The boundary id of a named boundary; `entry` names the .prm entry. */
+    dealii::types::boundary_id
+    boundary_id(const std::string &boundary, const std::string &entry) const;
+    const ElementSpace &
+    space() const;
+    const dealii::DoFHandler<2> &
+    dof_handler() const;
+    unsigned int
+    n_dofs() const;
+    const BodyMaterials &
+    materials() const;
+    /** Plane strain, plane stress or axisymmetric (Material/Hypothesis). */
+    PlaneHypothesis
+    hypothesis() const;
+    /** The out-of-plane thickness (Material/Thickness). */
+    double
+    thickness() const;
+    /** A length that measures the body (diameter of the reference mesh). */
+    double
+    size() const;
 
     /**
      * Under a dynamic scheme, the body's inertia (mass, velocity,
-     * acceleration), whose Newmark terms each assemble() then adds;
-     * nullptr (the default) for a quasi-static body.
+     * acceleration), whose terms each assemble() adds; nullptr (the
+     * default) for a quasi-static body.
      */
     void
-    set_inertia(std::unique_ptr<BodyInertia> body_inertia)
-    {
-      inertia_terms = std::move(body_inertia);
-    }
+    set_inertia(std::unique_ptr<BodyInertia> body_inertia);
     BodyInertia *
-    inertia() const
-    {
-      return inertia_terms.get();
-    }
-
-    /**
-     * Under a dynamic scheme the mass holds the rigid motions that no
-     * support does: none is free (no check that contact holds them, no
-     * springs).
-     */
-    void
-    hold_rigid_motions_by_inertia()
-    {
-      free_motions.clear();
-    }
-
-    /** F_int - F_ext (with the inertia force, if any) on every dof. */
-    const dealii::Vector<double> &
-    unbalanced_forces() const
-    {
-      return unconstrained_residual;
-    }
-
-    /** F_ext of the last assembly: loads, tractions, pressure, weight. */
-    const dealii::Vector<double> &
-    applied_loads() const
-    {
-      return external_forces;
-    }
-
-    /** The stored energy of the current state, int W dV. */
-    double
-    strain_energy() const;
-
-    const BodyMaterials &
-    materials() const
-    {
-      return *materials_of_cells;
-    }
+    inertia() const;
 
     /** Target time of the current increment (Dirichlet and Neumann data). */
     void
     set_time(const double time);
 
     /**
-     * Assembles the tangent and the right-hand side F_ext - F_int (with the
-     * Dirichlet constraints of the current time), plus the unconstrained
-     * residual used for reactions. Returns false if the material state is
-     * not admissible (J <= 0 or a NaN), so the caller can cut the step.
+     * Assembles system()'s tangent and right-hand side F_ext - F_int (under
+     * the Dirichlet data of the current time) and the unconstrained
+     * residual. False if the state is not admissible (J <= 0 or a NaN), so
+     * that the caller cuts the step: assembly_problem() says why.
      */
     bool
     assemble();
+    const std::string &
+    assembly_problem() const;
 
+    /** F_int - F_ext (with the inertia force, if any) on every dof. */
+    const dealii::Vector<double> &
+    unbalanced_forces() const;
+    /** F_ext of the last assembly: loads, tractions, pressure, weight. */
+    const dealii::Vector<double> &
+    applied_loads() const;
     /** |F_ext - F_int| on the free dofs. */
     double
     residual_norm() const;
-
     /**
      * max(|F_int|, |F_ext|, |F_contact|) over all dofs, floored by
      * 1e-4 E t |u|_max: the force scale of the residual tolerance.
@@ -132,360 +119,275 @@ namespace glissade
     double
     force_scale() const;
 
-    /**
-     * Factorises the tangent, with the springs of regularization() added
-     * (the tangent itself is left as assembled).
-     */
+    /** The linear system of the last assembly and its factorisation. */
+    const BodyLinearSystem &
+    system() const;
+    BodyLinearSystem &
+    system();
+
+    /** H^T r of the last contact solve, which the residual includes. */
     void
-    factorize();
-
-    /**
-     * The rigid motions that the body's supports leave free, orthonormal
-     * combinations of rigid_motion_basis(); empty for a body its supports
-     * hold. Contact must hold these (ContactProblem checks that it can
-     * before computing).
-     */
-    const std::vector<RigidMotion> &
-    free_rigid_motions() const
-    {
-      return free_motions;
-    }
-
-    /**
-     * For a body with free rigid motions, whose tangent alone is singular:
-     * springs k e_i e_i^T at one contact dof per free motion, added to the
-     * tangent before it is factorised so that the factorisation exists, as
-     * (dof, k). The contact problem takes them out again exactly, as
-     * rank-one terms of its Newton matrix (theory.md, section 4.6), so no
-     * spring is left in the answer.
-     */
-    const std::vector<std::pair<dealii::types::global_dof_index, double>> &
-    regularization() const
-    {
-      return springs;
-    }
-
-    /**
-     * The constraints of the current iteration (the element's own and the
-     * Dirichlet data, with the inhomogeneity this correction must bring):
-     * a step computed outside the body is completed by their distribute().
-     */
-    const dealii::AffineConstraints<double> &
-    dof_constraints() const
-    {
-      return constraints;
-    }
-
-    /** The tangent of the last assembly (benchmarks factorise it again). */
-    const dealii::SparseMatrix<double> &
-    tangent_matrix() const
-    {
-      return tangent;
-    }
-
-    /** The factorisation (method used, timings). */
-    const DirectSolver &
-    direct_solver() const
-    {
-      return factorization;
-    }
-
-    /** Solves K du = rhs; constrained dofs get their prescribed increment. */
-    void
-    solve(const dealii::Vector<double> &rhs,
-          dealii::Vector<double>       &increment) const;
-
-    /**
-     * The response to an external force vector f with the supports held:
-     * K x = f condensed, constrained dofs following their free ones with no
-     * prescribed part. The contact compliance columns K^-1 H^T.
-     */
-    void
-    solve_homogeneous(const dealii::Vector<double> &force,
-                      dealii::Vector<double>       &x) const;
-
-    /**
-     * The dofs that contact may load (declared contact areas). When the
-     * tangent is symmetric they are eliminated last, and the compliance
-     * between any two of them -- the entries of solve_homogeneous() at
-     * contact dofs -- comes from the factorisation itself.
-     */
-    void
-    set_contact_dofs(
-      const std::vector<dealii::types::global_dof_index> &contact_dofs);
-
-    /**
-     * The compliance between contact dofs, the contact block of the body's
-     * K^-1 with its supports held: block[i + j rows.size()] is entry
-     * `rows[i]` of solve_homogeneous(e_{columns[j]}). With a Cholesky
-     * factorisation (contact dofs last) and every dof among the declared
-     * contact dofs, from the inverse of the factor's trailing block, whose
-     * columns at `columns` only are formed; otherwise one solve per column,
-     * kept for the current factorisation.
-     */
-    void
-    compliance_block(
-      const std::vector<dealii::types::global_dof_index> &rows,
-      const std::vector<dealii::types::global_dof_index> &columns,
-      std::vector<double>                                &block);
-
-    /**
-     * Contact forces acting on the body (from the last contact solve); the
-     * equilibrium residual includes them.
-     */
-    void
-    set_contact_forces(const dealii::Vector<double> &forces)
-    {
-      contact_forces = forces;
-    }
+    set_contact_forces(const dealii::Vector<double> &forces);
     const dealii::Vector<double> &
-    get_contact_forces() const
-    {
-      return contact_forces;
-    }
+    get_contact_forces() const;
 
-    /** The boundary id of a named boundary; `entry` names the .prm entry. */
-    dealii::types::boundary_id
-    boundary_id(const std::string &boundary, const std::string &entry) const;
-
+    // The displacement.
+    const dealii::Vector<double> &
+    displacement() const;
     /** The displacement at the start of the current step. */
     const dealii::Vector<double> &
-    stored_displacement() const
-    {
-      return stored_solution;
-    }
-
-    const dealii::Vector<double> &
-    right_hand_side() const
-    {
-      return system_rhs;
-    }
-
+    stored_displacement() const;
     void
     update(const dealii::Vector<double> &increment);
-
-    /**
-     * Exchanges the displacement with u, without copying (a trial state;
-     * see ContactProblem::activate_nodes_crossed_by).
-     */
+    /** Exchanges the displacement with u, without copying (a trial
+     *  state: ContactProblem::activate_nodes_crossed_by). */
     void
-    swap_displacement(dealii::Vector<double> &u)
-    {
-      solution.swap(u);
-    }
-
-    /**
-     * True for a dof whose value the boundary conditions prescribe (fixed
-     * or driven): no force moves it.
-     */
-    bool
-    dof_is_prescribed(const dealii::types::global_dof_index dof) const;
-
+    swap_displacement(dealii::Vector<double> &u);
     /** Saves and restores the displacement (for cut-backs). */
     void
     store_state();
     void
     restore_state();
-
     /**
-     * Writes or reads (a Boost archive) the state a checkpoint must hold:
-     * the displacement and the contact forces H^T r of the last iteration,
-     * which the next residual starts from. Everything else is rebuilt from
-     * the scene.
+     * Writes or reads (a Boost archive) what a checkpoint holds: the
+     * displacement and the contact forces H^T r the next residual starts
+     * from; the rest is rebuilt from the scene.
      */
     template <class Archive>
     void
-    serialize_state(Archive &archive)
-    {
-      archive &solution &contact_forces;
-    }
-
-    /**
-     * Why the last assemble() returned false, in words naming the body and
-     * the cell (an inverted element, a stress beyond double precision);
-     * empty if it returned true.
-     */
-    const std::string &
-    assembly_problem() const
-    {
-      return problem;
-    }
-
-    /** Plane strain, plane stress or axisymmetric (Material/Hypothesis). */
-    PlaneHypothesis
-    hypothesis() const
-    {
-      return description.material.hypothesis;
-    }
-
-    /** The out-of-plane thickness (Material/Thickness). */
-    double
-    thickness() const
-    {
-      return description.material.thickness;
-    }
-
-    /** A length that measures the body (diameter of the reference mesh). */
-    double
-    size() const
-    {
-      return reference_size;
-    }
-
-    /** Displacement at a mesh vertex given as "point(x, y)". */
-    dealii::Tensor<1, 2>
-    vertex_displacement(const dealii::Point<2> &point) const;
-
-    /**
-     * The x and y value dofs of the mesh vertex at `point` (an input error
-     * if there is none): found once, read at every increment (history).
-     */
-    std::array<dealii::types::global_dof_index, 2>
-    vertex_value_dofs(const dealii::Point<2> &point) const;
-
-    /**
-     * The displacement of every vertex of the mesh, indexed like
-     * triangulation().get_vertices() (zero for unused vertices).
-     */
-    std::vector<dealii::Tensor<1, 2>>
-    vertex_displacements() const;
-
-    /** Largest nodal displacement norm over the body. */
-    double
-    max_displacement() const;
-
-    /**
-     * Sum of F_int - F_ext - F_contact over the dofs of a named boundary:
-     * on supported dofs, the force the support exerts on the body.
-     */
-    dealii::Tensor<1, 2>
-    reaction(const std::string &boundary) const;
-
-    /** Writes <directory>/<name>-<index>.vtu; returns the file name. */
-    std::string
-    write_vtu(const std::string    &directory,
-              const unsigned int    index,
-              const OutputSettings &settings) const;
-
-    const dealii::DoFHandler<2> &
-    dof_handler() const
-    {
-      return dofs;
-    }
-    const dealii::Triangulation<2> &
-    triangulation() const
-    {
-      return mesh;
-    }
-    const ElementSpace &
-    space() const
-    {
-      return *element_space;
-    }
-    const Material &
-    material() const
-    {
-      return materials_of_cells->of_body();
-    }
-    const dealii::Vector<double> &
-    displacement() const
-    {
-      return solution;
-    }
-    unsigned int
-    n_dofs() const
-    {
-      return dofs.n_dofs();
-    }
+    serialize_state(Archive &archive);
 
   private:
-    /** The weight rho g of one cell (Boundary conditions/Gravity). */
+    /** assemble()'s copier: a cell and its loads to system and forces. */
     void
-    assemble_weight(
-      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
-      CellEvaluator                                              &evaluator,
-      dealii::Vector<double> &cell_rhs) const;
+    add_cell(const CellIntegration::CellContribution &data,
+             CellEvaluator                           &boundary_evaluator,
+             dealii::Vector<double>                  &internal_forces,
+             dealii::Vector<double>                  &viscous_forces,
+             bool                                    &admissible);
 
-    /**
-     * An axisymmetric body: refuses a Hermite space and a mesh with a
-     * vertex at x = r < 0, naming the cell.
-     */
-    void
-    check_axisymmetric_mesh(const std::string &where) const;
+    const BodyDescription               description;
+    const std::string                   source;
+    dealii::Triangulation<2>            mesh;
+    BoundaryNames                       named_boundaries;
+    double                              reference_size = 1.;
+    std::unique_ptr<ElementSpace>       element_space;
+    dealii::DoFHandler<2>               dofs;
+    dealii::AffineConstraints<double>   element_constraints;
+    std::unique_ptr<BodyMaterials>      materials_of_cells;
+    std::unique_ptr<BoundaryConditions> boundary_conditions;
+    std::unique_ptr<DistributedLoads>   loads;
+    std::unique_ptr<CellIntegration>    cell_integration;
+    std::unique_ptr<BodyLinearSystem>   linear_system;
+    std::unique_ptr<BodyInertia>        inertia_terms;
 
-    /** The radial dofs of the nodes on the axis x = 0. */
-    std::vector<dealii::types::global_dof_index>
-    dofs_on_axis() const;
-
-    void
-    assemble_surface_loads(
-      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
-      const std::vector<dealii::types::global_dof_index>         &local_dofs,
-      CellEvaluator                                              &evaluator,
-      dealii::FullMatrix<double>                                 &cell_matrix,
-      dealii::Vector<double> &cell_rhs) const;
-
-    const BodyDescription          description;
-    std::string                    problem;
-    const std::string              source;
-    dealii::Triangulation<2>       mesh;
-    BoundaryNames                  boundary_names;
-    std::unique_ptr<ElementSpace>  element_space;
-    dealii::DoFHandler<2>          dofs;
-    std::unique_ptr<BodyMaterials> materials_of_cells;
-    std::unique_ptr<BodyInertia>   inertia_terms;
-    /** Small strain: each cell's stiffness K_e, integrated once (empty
-     *  until then; at large strain unused). */
-    std::vector<dealii::FullMatrix<double>> kept_linear_stiffness;
-    /** Boundary conditions/Gravity: an acceleration of x, y, t, or none. */
-    std::unique_ptr<dealii::Function<2>> gravity;
-    std::unique_ptr<BoundaryConditions>  boundary_conditions;
-    double                               reference_size = 1.;
-    double                               time           = 0.;
-
-    dealii::AffineConstraints<double> element_constraints; // the space's own
-    dealii::AffineConstraints<double> constraints; // plus Dirichlet data
-    dealii::SparsityPattern           sparsity;
-    dealii::SparseMatrix<double>      tangent;
-    DirectSolver                      factorization;
-
-    /** False where follower pressure makes the tangent unsymmetric. */
-    bool
-    tangent_is_symmetric() const;
-
-    /** See free_rigid_motions() and regularization(). */
-    std::vector<RigidMotion> free_motions;
-    std::vector<std::pair<dealii::types::global_dof_index, double>> springs;
-
-    /**
-     * The springs' dofs: among the contact dofs, one per free motion, the
-     * best conditioned set (a pivoted Gram-Schmidt on the motions' values
-     * there).
-     */
-    void
-    choose_spring_dofs(
-      const std::vector<dealii::types::global_dof_index> &contact_dofs);
-
-    /**
-     * Per contact dof, the free unknowns it follows (itself, or the entries
-     * of its constraint line) with weights, as positions among the
-     * factorisation's last unknowns once prepared.
-     */
-    std::vector<long>                                 contact_position;
-    std::vector<std::vector<std::pair<long, double>>> contact_rows;
-    std::vector<std::vector<std::pair<long, double>>> contact_rows_resolved;
-    /** solve_homogeneous(e_dof) of the current factorisation, by dof. */
-    std::map<dealii::types::global_dof_index, dealii::Vector<double>>
-      compliance_columns;
-
-    dealii::Vector<double> solution;
-    dealii::Vector<double> stored_solution;
-    dealii::Vector<double> system_rhs;             // F_ext - F_int, constrained
+    double                 time = 0.;
+    std::string            problem;
+    dealii::Vector<double> solution, stored_solution;
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
     dealii::Vector<double> external_forces;        // F_ext, all dofs
-    dealii::Vector<double> contact_forces;         // H^T r, all dofs
-    dealii::Vector<double> stored_contact_forces;
-    double                 internal_force_norm = 0.;
-    double                 external_force_norm = 0.;
+    dealii::Vector<double> contact_forces, stored_contact_forces; // H^T r
+    double                 internal_force_norm = 0., external_force_norm = 0.;
   };
+
+
+
+  inline const std::string &
+  Body::name() const
+  {
+    return description.name;
+  }
+
+
+
+  inline const BodyDescription &
+  Body::description_of_body() const
+  {
+    return description;
+  }
+
+
+
+  inline const std::string &
+  Body::source_name() const
+  {
+    return source;
+  }
+
+
+
+  inline const dealii::Triangulation<2> &
+  Body::triangulation() const
+  {
+    return mesh;
+  }
+
+
+
+  inline const BoundaryNames &
+  Body::boundary_names() const
+  {
+    return named_boundaries;
+  }
+
+
+
+  inline const ElementSpace &
+  Body::space() const
+  {
+    return *element_space;
+  }
+
+
+
+  inline const dealii::DoFHandler<2> &
+  Body::dof_handler() const
+  {
+    return dofs;
+  }
+
+
+
+  inline unsigned int
+  Body::n_dofs() const
+  {
+    return dofs.n_dofs();
+  }
+
+
+
+  inline const BodyMaterials &
+  Body::materials() const
+  {
+    return *materials_of_cells;
+  }
+
+
+
+  inline PlaneHypothesis
+  Body::hypothesis() const
+  {
+    return description.material.hypothesis;
+  }
+
+
+
+  inline double
+  Body::thickness() const
+  {
+    return description.material.thickness;
+  }
+
+
+
+  inline double
+  Body::size() const
+  {
+    return reference_size;
+  }
+
+
+
+  inline void
+  Body::set_inertia(std::unique_ptr<BodyInertia> body_inertia)
+  {
+    inertia_terms = std::move(body_inertia);
+  }
+
+
+
+  inline BodyInertia *
+  Body::inertia() const
+  {
+    return inertia_terms.get();
+  }
+
+
+
+  inline const std::string &
+  Body::assembly_problem() const
+  {
+    return problem;
+  }
+
+
+
+  inline const dealii::Vector<double> &
+  Body::unbalanced_forces() const
+  {
+    return unconstrained_residual;
+  }
+
+
+
+  inline const dealii::Vector<double> &
+  Body::applied_loads() const
+  {
+    return external_forces;
+  }
+
+
+
+  inline const BodyLinearSystem &
+  Body::system() const
+  {
+    return *linear_system;
+  }
+
+
+
+  inline BodyLinearSystem &
+  Body::system()
+  {
+    return *linear_system;
+  }
+
+
+
+  inline void
+  Body::set_contact_forces(const dealii::Vector<double> &forces)
+  {
+    contact_forces = forces;
+  }
+
+
+
+  inline const dealii::Vector<double> &
+  Body::get_contact_forces() const
+  {
+    return contact_forces;
+  }
+
+
+
+  inline const dealii::Vector<double> &
+  Body::displacement() const
+  {
+    return solution;
+  }
+
+
+
+  inline const dealii::Vector<double> &
+  Body::stored_displacement() const
+  {
+    return stored_solution;
+  }
+
+
+
+  inline void
+  Body::swap_displacement(dealii::Vector<double> &u)
+  {
+    solution.swap(u);
+  }
+
+
+
+  template <class Archive>
+  inline void
+  Body::serialize_state(Archive &archive)
+  {
+    archive &solution &contact_forces;
+  }
 } // namespace glissade

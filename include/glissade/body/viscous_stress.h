@@ -32,7 +32,7 @@ namespace glissade
    * geometric term Grad N_i . S_v Grad N_j is kept. Newton then converges
    * linearly at that small rate, and the bodies' Cholesky factorisation
    * is kept. (A small-strain body takes a_K K_e v_e from its kept cell
-   * stiffness instead: Body::assemble.)
+   * stiffness instead: CellIntegration.)
    */
   struct ViscousStressPoint
   {

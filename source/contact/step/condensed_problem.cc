@@ -326,7 +326,7 @@ namespace glissade
             rows_here.emplace_back(i, std::move(l));
 
         std::vector<double> C;
-        bodies[b]->compliance_block(row_dofs, column_dofs, C);
+        bodies[b]->system().compliance_block(row_dofs, column_dofs, C);
 
         std::vector<std::pair<std::size_t, std::vector<Local>>> loads_here;
         for (std::size_t j = 0; j < all_loads.size(); ++j)
@@ -483,7 +483,7 @@ namespace glissade
         if (loads[b].linfty_norm() > 0.)
           {
             Vector<double> correction;
-            bodies[b]->solve_homogeneous(loads[b], correction);
+            bodies[b]->system().solve_homogeneous(loads[b], correction);
             increments[b] += correction;
           }
       }

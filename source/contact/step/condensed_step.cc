@@ -71,7 +71,8 @@ namespace glissade
       {
         // (a body held by contact keeps its declared area: its springs
         // are chosen among those dofs)
-        if (touching[b].empty() || !bodies[b]->free_rigid_motions().empty())
+        if (touching[b].empty() ||
+            !bodies[b]->system().free_rigid_motions().empty())
           continue;
         std::sort(touching[b].begin(), touching[b].end());
         touching[b].erase(std::unique(touching[b].begin(), touching[b].end()),
@@ -79,7 +80,7 @@ namespace glissade
         if (touching[b] != eliminated_last[b])
           {
             eliminated_last[b] = touching[b];
-            bodies[b]->set_contact_dofs(touching[b]);
+            bodies[b]->system().set_contact_dofs(touching[b]);
           }
       }
   }

@@ -55,7 +55,7 @@ namespace glissade
             dofs.insert(dofs.end(), d.begin(), d.end());
           }
         if (!dofs.empty())
-          body->set_contact_dofs(dofs);
+          body->system().set_contact_dofs(dofs);
       }
 
     for (const auto &pair : pairs)
@@ -175,7 +175,7 @@ namespace glissade
     // (only the condensed method has them: the sparse one refuses a body
     // that relies on contact)
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      for (const auto &[dof, k] : bodies[b]->regularization())
+      for (const auto &[dof, k] : bodies[b]->system().regularization())
         {
           spring_loads.push_back({{0, dof, k}});
           spring_rows.push_back({{0, dof, 1.}});
@@ -219,10 +219,10 @@ namespace glissade
   {
     std::string names;
     for (const auto &body : bodies)
-      if (!body->regularization().empty())
+      if (!body->system().regularization().empty())
         {
           names += (names.empty() ? "'" : ", '") + body->name() + "'";
-          for (const auto &motion : body->free_rigid_motions())
+          for (const auto &motion : body->system().free_rigid_motions())
             names += std::string(names.back() == '\'' ? " (" : ", ") +
                      motion.describe(body->size());
           names += ")";

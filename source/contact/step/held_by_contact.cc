@@ -16,7 +16,7 @@ namespace glissade
     // The unknowns: the amplitudes of every body's free motions.
     std::vector<unsigned int> first(bodies.size() + 1, 0);
     for (unsigned int b = 0; b < bodies.size(); ++b)
-      first[b + 1] = first[b] + bodies[b]->free_rigid_motions().size();
+      first[b + 1] = first[b] + bodies[b]->system().free_rigid_motions().size();
     const unsigned int n = first.back();
     if (n == 0)
       return;
@@ -45,8 +45,8 @@ namespace glissade
                     std::make_pair<const Body *, double>(pair->master(), -1.)})
                 if (body != nullptr)
                   {
-                    const unsigned int b       = index(body);
-                    const auto        &motions = body->free_rigid_motions();
+                    const unsigned int b = index(body);
+                    const auto &motions  = body->system().free_rigid_motions();
                     for (unsigned int j = 0; j < motions.size(); ++j)
                       row[first[b] + j] +=
                         sign * (d * motions[j].at(contact.position));
@@ -71,7 +71,7 @@ namespace glissade
           size += x[j] * x[j];
         if (!(size > 1e-16))
           continue;
-        const auto               &motions = bodies[b]->free_rigid_motions();
+        const auto &motions = bodies[b]->system().free_rigid_motions();
         const std::vector<double> local(x.begin() + first[b],
                                         x.begin() + first[b + 1]);
         motion << (n_bodies > 0 ? "; with it, body '" : "body '")

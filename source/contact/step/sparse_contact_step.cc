@@ -50,13 +50,13 @@ namespace glissade
     // (theory.md, section 4.6), which the sparse system has no room
     // for.
     for (const auto &body : bodies)
-      if (!body->free_rigid_motions().empty())
+      if (!body->system().free_rigid_motions().empty())
         throw InputError(
           context.source + ": Contact solver/Method",
           "the sparse method needs every body held by its own supports, "
           "and contact alone holds body '" +
             body->name() + "' (" +
-            body->free_rigid_motions()[0].describe(body->size()) +
+            body->system().free_rigid_motions()[0].describe(body->size()) +
             "): use Method = condensed, or support the body");
     lu.use_unsymmetric_ordering();
     for (const unsigned int b : in_contact)
@@ -74,8 +74,9 @@ namespace glissade
                             std::vector<Share> &shares,
                             double             &constant) const
   {
-    const AffineConstraints<double> &constraints = bodies[b]->dof_constraints();
-    constant                                     = 0.;
+    const AffineConstraints<double> &constraints =
+      bodies[b]->system().constraints();
+    constant = 0.;
     if (!constraints.is_constrained(dof))
       {
         shares.push_back({offset[b] + dof, 1.});
@@ -123,7 +124,7 @@ namespace glissade
     for (const unsigned int b : in_contact)
       {
         const SparsityPattern &sp =
-          bodies[b]->tangent_matrix().get_sparsity_pattern();
+          bodies[b]->system().tangent_matrix().get_sparsity_pattern();
         for (unsigned int i = 0; i < sp.n_rows(); ++i)
           {
             columns.clear();
@@ -201,11 +202,11 @@ namespace glissade
     rhs    = 0.;
     for (const unsigned int b : in_contact)
       {
-        const SparseMatrix<double> &K = bodies[b]->tangent_matrix();
+        const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
         for (unsigned int i = 0; i < K.m(); ++i)
           for (auto it = K.begin(i); it != K.end(i); ++it)
             matrix.add(offset[b] + i, offset[b] + it->column(), it->value());
-        const Vector<double> &f = bodies[b]->right_hand_side();
+        const Vector<double> &f = bodies[b]->system().right_hand_side();
         for (unsigned int i = 0; i < f.size(); ++i)
           rhs(offset[b] + i) = f(i);
       }
@@ -290,7 +291,7 @@ namespace glissade
     double              sum = 0.;
     for (const unsigned int b : in_contact)
       {
-        const SparseMatrix<double> &K = bodies[b]->tangent_matrix();
+        const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
         for (unsigned int i = 0; i < K.m(); ++i)
           {
             diagonal[offset[b] + i] = std::abs(K.diag_element(i));
@@ -355,7 +356,7 @@ namespace glissade
             increments[b].reinit(bodies[b]->n_dofs());
             for (unsigned int i = 0; i < increments[b].size(); ++i)
               increments[b](i) = x(offset[b] + i);
-            bodies[b]->dof_constraints().distribute(increments[b]);
+            bodies[b]->system().constraints().distribute(increments[b]);
           }
 
         // The reactions, and the gap and slip after the step.

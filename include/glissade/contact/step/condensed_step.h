@@ -59,7 +59,7 @@ namespace glissade
     /**
      * Each body's contact dofs to eliminate last in its Cholesky factor:
      * those the active nodes touch at the start of the increment
-     * (Body::set_contact_dofs, called when they change).
+     * (BodyLinearSystem::set_contact_dofs, called when they change).
      */
     void
     eliminate_touching_dofs_last(ContactProblem &problem);

@@ -12,8 +12,8 @@ namespace glissade
   /**
    * Refuses, before anything is computed, a scene in which a rigid motion
    * is free: a motion of bodies whose supports leave it free
-   * (Body::free_rigid_motions) that no contact within the alert distance
-   * at t = 0 holds, a contact holding the normal direction, and with
+   * (BodyLinearSystem::free_rigid_motions) that no contact within the alert
+   * distance at t = 0 holds, a contact holding the normal direction, and with
    * friction also the tangential one. The InputError names the bodies and
    * the motion; `source` is the scene's file.
    */

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/lac/direct_solver.h>
+
+#include <functional>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * Where contact reads a body's linear system: the dofs contact may load
+   * (the declared contact areas) and the compliance between them, the
+   * block of the body's K^-1 with its supports held that the condensed
+   * contact step assembles W = H K^-1 H^T from (CondensedProblem).
+   *
+   * When the tangent is symmetric the contact dofs are eliminated last
+   * (SchurCholesky), and the compliance between any two of them comes from
+   * the inverse of the factor's trailing block; otherwise each column
+   * takes one solve, kept for as long as the factorisation is.
+   */
+  class ContactPort
+  {
+  public:
+    /** A solve with the supports held: K x = f, condensed. */
+    using HomogeneousSolve =
+      std::function<void(const dealii::Vector<double> &force,
+                         dealii::Vector<double>       &x)>;
+
+    /** For a body of `n_dofs` dofs, with no contact dof declared yet. */
+    explicit ContactPort(const dealii::types::global_dof_index n_dofs);
+
+    /**
+     * Declares the contact dofs: each follows free unknowns (itself, or
+     * the entries of its constraint line; none for a fixed dof) with
+     * weights. Returns those unknowns, which the factorisation is to
+     * eliminate last.
+     */
+    std::vector<long>
+    declare(const std::vector<dealii::types::global_dof_index> &contact_dofs,
+            const dealii::AffineConstraints<double>            &constraints);
+
+    /**
+     * The compliance between contact dofs: block[i + j rows.size()] is
+     * entry `rows[i]` of solve(e_{columns[j]}). With a Cholesky
+     * factorisation (contact dofs last) and every dof among the declared
+     * contact dofs, from the inverse of the factor's trailing block, whose
+     * columns at `columns` only are formed; otherwise one solve per column,
+     * kept for the current factorisation.
+     */
+    void
+    compliance_block(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns,
+      DirectSolver                                       &factorization,
+      const HomogeneousSolve                             &solve,
+      std::vector<double>                                &block);
+
+    /** The factorisation changed: the compliance kept is stale. */
+    void
+    forget_compliance()
+    {
+      contact_rows_resolved.clear();
+      compliance_columns.clear();
+    }
+
+  private:
+    /** The block from the Cholesky factor's inverse (every dof declared). */
+    void
+    block_from_factor(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns,
+      SchurCholesky                                      &cholesky,
+      std::vector<double>                                &block);
+
+    const dealii::types::global_dof_index n_dofs;
+    /**
+     * Per dof, its index among the declared contact dofs (-1 if it is
+     * not one), and per contact dof the free unknowns it follows with
+     * weights: as dofs, and as positions among the factorisation's last
+     * unknowns once it has been prepared.
+     */
+    std::vector<long>                                 contact_position;
+    std::vector<std::vector<std::pair<long, double>>> contact_rows;
+    std::vector<std::vector<std::pair<long, double>>> contact_rows_resolved;
+    /** solve(e_dof) of the current factorisation, by dof. */
+    std::map<dealii::types::global_dof_index, dealii::Vector<double>>
+      compliance_columns;
+  };
+} // namespace glissade

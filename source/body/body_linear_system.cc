@@ -1,0 +1,159 @@
+// The linear system of one body: its factorisation and solves, the springs
+// of a body held by contact, and its contact port
+// (include/glissade/body/body_linear_system.h).
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <glissade/body/body_linear_system.h>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  BodyLinearSystem::BodyLinearSystem(const DoFHandler<2>        &dofs,
+                                     const ElementSpace         &space,
+                                     AffineConstraints<double> &&constraints,
+                                     const bool                  symmetric,
+                                     RigidMotionSprings        &&springs)
+    : dofs(dofs)
+    , space(space)
+    , symmetric(symmetric)
+    , iteration_constraints(std::move(constraints))
+    , system_rhs(dofs.n_dofs())
+    , springs(std::move(springs))
+    , port(dofs.n_dofs())
+  {
+    DynamicSparsityPattern dsp(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, dsp, iteration_constraints, false);
+    sparsity.copy_from(dsp);
+    tangent.reinit(sparsity);
+    // (a body in contact sets its contact dofs to eliminate last later,
+    // set_contact_dofs)
+    factorization.use_cholesky(symmetric, {});
+  }
+
+
+
+  void
+  BodyLinearSystem::clear()
+  {
+    tangent    = 0.;
+    system_rhs = 0.;
+  }
+
+
+
+  void
+  BodyLinearSystem::add_cell(
+    const FullMatrix<double>                   &cell_matrix,
+    const Vector<double>                       &cell_rhs,
+    const std::vector<types::global_dof_index> &local_dofs)
+  {
+    iteration_constraints.distribute_local_to_global(
+      cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
+  }
+
+
+
+  void
+  BodyLinearSystem::add_nodal_forces(const Vector<double> &forces)
+  {
+    std::vector<types::global_dof_index> index(1);
+    Vector<double>                       value(1);
+    for (types::global_dof_index i = 0; i < forces.size(); ++i)
+      if (forces(i) != 0.)
+        {
+          index[0] = i;
+          value(0) = forces(i);
+          iteration_constraints.distribute_local_to_global(value,
+                                                           index,
+                                                           system_rhs);
+        }
+  }
+
+
+
+  void
+  BodyLinearSystem::factorize()
+  {
+    const std::vector<double> assembled  = springs.add_to(tangent);
+    const bool                refactored = factorization.factorize(tangent);
+    springs.take_from(tangent, assembled);
+    if (refactored)
+      port.forget_compliance();
+  }
+
+
+
+  void
+  BodyLinearSystem::solve(const Vector<double> &rhs,
+                          Vector<double>       &increment) const
+  {
+    increment = rhs;
+    factorization.solve(increment);
+    iteration_constraints.distribute(increment);
+  }
+
+
+
+  void
+  BodyLinearSystem::solve_homogeneous(const Vector<double> &force,
+                                      Vector<double>       &x) const
+  {
+    x = force;
+    iteration_constraints.condense(x);
+    for (const auto &line : iteration_constraints.get_lines())
+      x(line.index) = 0.;
+    factorization.solve(x);
+    for (const auto &line : iteration_constraints.get_lines())
+      {
+        double value = 0.;
+        for (const auto &[j, w] : line.entries)
+          value += w * x(j);
+        x(line.index) = value;
+      }
+  }
+
+
+
+  bool
+  BodyLinearSystem::dof_is_prescribed(const types::global_dof_index dof) const
+  {
+    if (!iteration_constraints.is_constrained(dof))
+      return false;
+    const auto *line = iteration_constraints.get_constraint_entries(dof);
+    return line == nullptr || line->empty();
+  }
+
+
+
+  void
+  BodyLinearSystem::set_contact_dofs(
+    const std::vector<types::global_dof_index> &contact_dofs)
+  {
+    factorization.use_cholesky(symmetric,
+                               port.declare(contact_dofs,
+                                            iteration_constraints));
+    if (!springs.free_motions().empty())
+      springs.choose_dofs(contact_dofs, iteration_constraints, dofs, space);
+  }
+
+
+
+  void
+  BodyLinearSystem::compliance_block(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns,
+    std::vector<double>                        &block)
+  {
+    port.compliance_block(
+      rows,
+      columns,
+      factorization,
+      [this](const Vector<double> &force, Vector<double> &x) {
+        solve_homogeneous(force, x);
+      },
+      block);
+  }
+} // namespace glissade

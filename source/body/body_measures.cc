@@ -1,0 +1,169 @@
+// Measures of a body's state (include/glissade/body/body_measures.h).
+
+#include <glissade/body/body.h>
+#include <glissade/body/body_measures.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  Tensor<1, 2>
+  vertex_displacement(const Body &body, const Point<2> &point)
+  {
+    const auto            dof_pair = vertex_value_dofs(body, point);
+    const Vector<double> &u        = body.displacement();
+    return Tensor<1, 2>({u(dof_pair[0]), u(dof_pair[1])});
+  }
+
+
+
+  std::array<types::global_dof_index, 2>
+  vertex_value_dofs(const Body &body, const Point<2> &point)
+  {
+    std::ostringstream location;
+    location.precision(17);
+    location << "point(" << point[0] << ", " << point[1] << ")";
+    const Location where = BoundaryConditions::resolve(location.str(),
+                                                       body.boundary_names(),
+                                                       body.triangulation(),
+                                                       body.name(),
+                                                       "",
+                                                       false,
+                                                       body.size());
+    return BoundaryConditions::vertex_dofs(body.dof_handler(),
+                                           body.space(),
+                                           where.vertex);
+  }
+
+
+
+  std::vector<Tensor<1, 2>>
+  vertex_displacements(const Body &body)
+  {
+    const Vector<double>     &u = body.displacement();
+    std::vector<Tensor<1, 2>> result(body.triangulation().n_vertices());
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const auto value_dofs =
+            BoundaryConditions::cell_vertex_dofs(cell, v, body.space());
+          for (unsigned int d = 0; d < 2; ++d)
+            result[cell->vertex_index(v)][d] = u(value_dofs[d]);
+        }
+    return result;
+  }
+
+
+
+  double
+  max_displacement(const Body &body)
+  {
+    // Nodal values: pair the x and y value dofs that share a node.
+    const FiniteElement<2> &fe = body.space().finite_element();
+    const unsigned int per_dim = body.space().components_per_displacement();
+    std::vector<std::pair<unsigned int, unsigned int>> pairs;
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const auto ci = fe.system_to_component_index(i);
+        if (ci.first != 0)
+          continue;
+        for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+          if (fe.system_to_component_index(j) ==
+              std::make_pair(per_dim, ci.second))
+            pairs.emplace_back(i, j);
+      }
+    const Vector<double>                &u = body.displacement();
+    std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+    double                               largest = 0.;
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      {
+        cell->get_dof_indices(local_dofs);
+        for (const auto &p : pairs)
+          largest = std::max(largest,
+                             std::hypot(u(local_dofs[p.first]),
+                                        u(local_dofs[p.second])));
+      }
+    return largest;
+  }
+
+
+
+  Tensor<1, 2>
+  support_reaction(const Body &body, const std::string &boundary)
+  {
+    const Location where = BoundaryConditions::resolve(
+      boundary, body.boundary_names(), body.triangulation(), body.name(), "");
+    const Vector<double> &residual = body.unbalanced_forces();
+    const Vector<double> &contact  = body.get_contact_forces();
+    Tensor<1, 2>          sum;
+    if (where.is_vertex)
+      {
+        const auto d = BoundaryConditions::vertex_dofs(body.dof_handler(),
+                                                       body.space(),
+                                                       where.vertex);
+        return Tensor<1, 2>(
+          {residual(d[0]) - contact(d[0]), residual(d[1]) - contact(d[1])});
+      }
+    const FiniteElement<2>              &fe = body.space().finite_element();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    std::vector<bool>                    counted(body.n_dofs(), false);
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == where.boundary)
+          {
+            cell->face(f)->get_dof_indices(face_dofs);
+            for (unsigned int k = 0; k < face_dofs.size(); ++k)
+              if (!counted[face_dofs[k]])
+                {
+                  counted[face_dofs[k]] = true;
+                  // Only value dofs carry force; derivative dofs carry
+                  // its moments.
+                  const unsigned int per_dim =
+                    body.space().components_per_displacement();
+                  const unsigned int k_component =
+                    fe.face_system_to_component_index(k).first;
+                  if (k_component % per_dim == 0)
+                    sum[k_component / per_dim] +=
+                      residual(face_dofs[k]) - contact(face_dofs[k]);
+                }
+          }
+    return sum;
+  }
+
+
+
+  double
+  strain_energy(const Body &body)
+  {
+    const bool axisymmetric =
+      body.hypothesis() == PlaneHypothesis::axisymmetric;
+    const Vector<double> &u         = body.displacement();
+    auto                  evaluator = body.space().create_evaluator();
+    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
+    std::vector<double>                  values(local.size());
+    double                               energy = 0.;
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      {
+        evaluator->reinit(cell);
+        cell->get_dof_indices(local);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          values[i] = u(local[i]);
+        const Material &material =
+          body.materials().of_cell(cell->material_id());
+        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
+          {
+            const double r = evaluator->quadrature_point(q)[0];
+            const double hoop =
+              axisymmetric ? evaluator->value(values, q)[0] / r : 0.;
+            energy += material.energy(evaluator->gradient(values, q), hoop) *
+                      evaluator->JxW(q) *
+                      (axisymmetric ? 2. * M_PI * r : body.thickness());
+          }
+      }
+    return energy;
+  }
+} // namespace glissade
