@@ -63,170 +63,8 @@ namespace glissade
   {
     columns                 = {"increment", "time", "newton_iterations"};
     const std::string entry = source + ": Output/History";
-
     for (const auto &item : items)
-      {
-        const auto open = item.find('(');
-        if (open == std::string::npos || item.back() != ')')
-          throw InputError(entry, "cannot read '" + item + "'");
-        const std::string kind = text::trim(item.substr(0, open));
-        const auto        args =
-          text::split_top_level(item.substr(open + 1, item.size() - open - 2),
-                                ',');
-        if (kind == "energies" &&
-            (args.empty() || (args.size() == 1 && text::trim(args[0]).empty())))
-          {
-            if (energies == nullptr)
-              throw InputError(entry,
-                               "'" + item +
-                                 "': the energies are those of a dynamic "
-                                 "scheme (Time integration/Scheme)");
-            for (const std::string q : {"kinetic_energy",
-                                        "strain_energy",
-                                        "work_of_loads",
-                                        "contact_dissipation",
-                                        "friction_dissipation",
-                                        "damping_dissipation",
-                                        "energy_balance"})
-              columns.push_back(q);
-            evaluators.emplace_back([energies](std::vector<double> &row) {
-              row.push_back(energies->kinetic);
-              row.push_back(energies->strain);
-              row.push_back(energies->work_of_loads);
-              row.push_back(energies->contact_dissipation());
-              row.push_back(energies->friction_dissipation);
-              row.push_back(energies->damping_dissipation);
-              row.push_back(energies->balance());
-            });
-            continue;
-          }
-        if (args.empty())
-          throw InputError(entry, "'" + item + "' names no body");
-        const ContactPair *pair = nullptr;
-        for (const auto &p : pairs)
-          if (p->name() == args[0])
-            pair = p.get();
-        if (kind == "contact_force" && pair != nullptr && args.size() == 1)
-          {
-            for (const std::string q : {"Fx", "Fy", "active_nodes"})
-              columns.push_back(identifier(args[0]) + "_" + q);
-            evaluators.emplace_back([pair](std::vector<double> &row) {
-              const Tensor<1, 2> f = pair->total_force();
-              row.push_back(f[0]);
-              row.push_back(f[1]);
-              row.push_back(pair->n_active());
-            });
-            continue;
-          }
-        if (kind == "contact_node" && pair != nullptr && args.size() == 2)
-          {
-            double x, y;
-            if (!text::parse_point_location(args[1], x, y))
-              throw InputError(entry, "'" + item + "': expected point(x, y)");
-            const Point<2> X(x, y);
-            if (pair->node_at(X).reference_position.distance(X) >
-                1e-8 * (1. + X.norm()))
-              throw InputError(entry,
-                               "'" + item + "': no slave node of pair '" +
-                                 args[0] + "' at that reference position");
-            for (const std::string q : {"r_n", "r_t", "f", "gap"})
-              columns.push_back(identifier(args[0]) + "_" + q + "_" +
-                                location_identifier(args[1]));
-            evaluators.emplace_back([pair, X](std::vector<double> &row) {
-              const ContactNode          &node = pair->node_at(X);
-              const std::array<double, 2> r    = pair->reported_reaction(node);
-              row.push_back(r[1]);
-              row.push_back(r[0]);
-              row.push_back(pair->reported_force(node).norm());
-              row.push_back(node.gap);
-            });
-            continue;
-          }
-        const Body *body = nullptr;
-        for (const auto &b : bodies)
-          if (b->name() == args[0])
-            body = b.get();
-        if (body == nullptr)
-          throw InputError(entry,
-                           "'" + item + "': there is no body '" + args[0] +
-                             "'");
-
-        if (kind == "momentum" && args.size() == 1)
-          {
-            if (body->inertia() == nullptr)
-              throw InputError(entry,
-                               "'" + item +
-                                 "': a body's momentum is that of a dynamic "
-                                 "scheme (Time integration/Scheme)");
-            for (const std::string q : {"px", "py"})
-              columns.push_back(identifier(args[0]) + "_" + q);
-            evaluators.emplace_back([body](std::vector<double> &row) {
-              const auto p = body->inertia()->momentum();
-              row.push_back(p[0]);
-              row.push_back(p[1]);
-            });
-          }
-        else if (kind == "max_displacement" && args.size() == 1)
-          {
-            columns.push_back(identifier(args[0]) + "_max_u");
-            evaluators.emplace_back([body](std::vector<double> &row) {
-              row.push_back(max_displacement(*body));
-            });
-          }
-        else if (kind == "displacement" && args.size() == 2)
-          {
-            double x, y;
-            if (!text::parse_point_location(args[1], x, y))
-              throw InputError(entry, "'" + item + "': expected point(x, y)");
-            // The vertex and its dofs are found once: searching them at
-            // every increment made 320 columns cost 6 times the solve.
-            std::array<types::global_dof_index, 2> vertex_dofs;
-            try
-              {
-                vertex_dofs = vertex_value_dofs(*body, Point<2>(x, y));
-              }
-            catch (const InputError &e)
-              {
-                throw InputError(entry, e.what());
-              }
-            for (const std::string q : {"ux", "uy"})
-              columns.push_back(identifier(args[0]) + "_" + q + "_" +
-                                location_identifier(args[1]));
-            evaluators.emplace_back(
-              [body, vertex_dofs](std::vector<double> &row) {
-                row.push_back(body->displacement()(vertex_dofs[0]));
-                row.push_back(body->displacement()(vertex_dofs[1]));
-              });
-          }
-        else if (kind == "reaction" && args.size() == 2)
-          {
-            const std::string where = args[1];
-            try
-              {
-                support_reaction(*body, where);
-              }
-            catch (const InputError &e)
-              {
-                throw InputError(entry, e.what());
-              }
-            for (const std::string q : {"Rx", "Ry"})
-              columns.push_back(identifier(args[0]) + "_" + q + "_" +
-                                location_identifier(where));
-            evaluators.emplace_back([body, where](std::vector<double> &row) {
-              const Tensor<1, 2> r = support_reaction(*body, where);
-              row.push_back(r[0]);
-              row.push_back(r[1]);
-            });
-          }
-        else
-          throw InputError(entry,
-                           "cannot read '" + item +
-                             "' (known: displacement(body, point(x, y)), "
-                             "max_displacement(body), reaction(body, "
-                             "boundary), contact_force(pair), "
-                             "contact_node(pair, point(x, y)); dynamic "
-                             "schemes: momentum(body), energies())");
-      }
+      add_item(item, bodies, pairs, energies, entry);
 
     // Names that differ only in what an identifier cannot hold ("a b" and
     // "a_b") would give two columns one header.
@@ -238,6 +76,237 @@ namespace glissade
                              "' (body, pair or location names that differ "
                              "only in spaces, signs or punctuation): rename "
                              "one, or remove the repeated item");
+  }
+
+
+
+  void
+  HistoryWriter::add_item(
+    const std::string                               &item,
+    const std::vector<std::unique_ptr<Body>>        &bodies,
+    const std::vector<std::unique_ptr<ContactPair>> &pairs,
+    const EnergyAccount                             *energies,
+    const std::string                               &entry)
+  {
+    // "kind(arguments)": the energies take none, a pair's items name the
+    // pair first, a body's items the body.
+    const auto open = item.find('(');
+    if (open == std::string::npos || item.back() != ')')
+      throw InputError(entry, "cannot read '" + item + "'");
+    const std::string kind = text::trim(item.substr(0, open));
+    const auto        args =
+      text::split_top_level(item.substr(open + 1, item.size() - open - 2), ',');
+    if (kind == "energies" &&
+        (args.empty() || (args.size() == 1 && text::trim(args[0]).empty())))
+      {
+        add_energies(energies, item, entry);
+        return;
+      }
+    if (args.empty())
+      throw InputError(entry, "'" + item + "' names no body");
+
+    const ContactPair *pair = nullptr;
+    for (const auto &p : pairs)
+      if (p->name() == args[0])
+        pair = p.get();
+    if (kind == "contact_force" && pair != nullptr && args.size() == 1)
+      {
+        add_contact_force(*pair, args[0]);
+        return;
+      }
+    if (kind == "contact_node" && pair != nullptr && args.size() == 2)
+      {
+        add_contact_node(*pair, args[0], args[1], item, entry);
+        return;
+      }
+
+    const Body *body = nullptr;
+    for (const auto &b : bodies)
+      if (b->name() == args[0])
+        body = b.get();
+    if (body == nullptr)
+      throw InputError(entry,
+                       "'" + item + "': there is no body '" + args[0] + "'");
+    if (kind == "momentum" && args.size() == 1)
+      add_momentum(*body, args[0], item, entry);
+    else if (kind == "max_displacement" && args.size() == 1)
+      {
+        columns.push_back(identifier(args[0]) + "_max_u");
+        evaluators.emplace_back([body](std::vector<double> &row) {
+          row.push_back(max_displacement(*body));
+        });
+      }
+    else if (kind == "displacement" && args.size() == 2)
+      add_displacement(*body, args[0], args[1], item, entry);
+    else if (kind == "reaction" && args.size() == 2)
+      add_reaction(*body, args[0], args[1], entry);
+    else
+      throw InputError(entry,
+                       "cannot read '" + item +
+                         "' (known: displacement(body, point(x, y)), "
+                         "max_displacement(body), reaction(body, "
+                         "boundary), contact_force(pair), "
+                         "contact_node(pair, point(x, y)); dynamic "
+                         "schemes: momentum(body), energies())");
+  }
+
+
+
+  void
+  HistoryWriter::add_energies(const EnergyAccount *energies,
+                              const std::string   &item,
+                              const std::string   &entry)
+  {
+    if (energies == nullptr)
+      throw InputError(entry,
+                       "'" + item +
+                         "': the energies are those of a dynamic "
+                         "scheme (Time integration/Scheme)");
+    for (const std::string q : {"kinetic_energy",
+                                "strain_energy",
+                                "work_of_loads",
+                                "contact_dissipation",
+                                "friction_dissipation",
+                                "damping_dissipation",
+                                "energy_balance"})
+      columns.push_back(q);
+    evaluators.emplace_back([energies](std::vector<double> &row) {
+      row.push_back(energies->kinetic);
+      row.push_back(energies->strain);
+      row.push_back(energies->work_of_loads);
+      row.push_back(energies->contact_dissipation());
+      row.push_back(energies->friction_dissipation);
+      row.push_back(energies->damping_dissipation);
+      row.push_back(energies->balance());
+    });
+  }
+
+
+
+  void
+  HistoryWriter::add_contact_force(const ContactPair &pair,
+                                   const std::string &name)
+  {
+    for (const std::string q : {"Fx", "Fy", "active_nodes"})
+      columns.push_back(identifier(name) + "_" + q);
+    evaluators.emplace_back([pair = &pair](std::vector<double> &row) {
+      const Tensor<1, 2> f = pair->total_force();
+      row.push_back(f[0]);
+      row.push_back(f[1]);
+      row.push_back(pair->n_active());
+    });
+  }
+
+
+
+  void
+  HistoryWriter::add_contact_node(const ContactPair &pair,
+                                  const std::string &name,
+                                  const std::string &location,
+                                  const std::string &item,
+                                  const std::string &entry)
+  {
+    double x, y;
+    if (!text::parse_point_location(location, x, y))
+      throw InputError(entry, "'" + item + "': expected point(x, y)");
+    const Point<2> X(x, y);
+    if (pair.node_at(X).reference_position.distance(X) > 1e-8 * (1. + X.norm()))
+      throw InputError(entry,
+                       "'" + item + "': no slave node of pair '" + name +
+                         "' at that reference position");
+    for (const std::string q : {"r_n", "r_t", "f", "gap"})
+      columns.push_back(identifier(name) + "_" + q + "_" +
+                        location_identifier(location));
+    evaluators.emplace_back([pair = &pair, X](std::vector<double> &row) {
+      const ContactNode          &node = pair->node_at(X);
+      const std::array<double, 2> r    = pair->reported_reaction(node);
+      row.push_back(r[1]);
+      row.push_back(r[0]);
+      row.push_back(pair->reported_force(node).norm());
+      row.push_back(node.gap);
+    });
+  }
+
+
+
+  void
+  HistoryWriter::add_momentum(const Body        &body,
+                              const std::string &name,
+                              const std::string &item,
+                              const std::string &entry)
+  {
+    if (body.inertia() == nullptr)
+      throw InputError(entry,
+                       "'" + item +
+                         "': a body's momentum is that of a dynamic "
+                         "scheme (Time integration/Scheme)");
+    for (const std::string q : {"px", "py"})
+      columns.push_back(identifier(name) + "_" + q);
+    evaluators.emplace_back([body = &body](std::vector<double> &row) {
+      const auto p = body->inertia()->momentum();
+      row.push_back(p[0]);
+      row.push_back(p[1]);
+    });
+  }
+
+
+
+  void
+  HistoryWriter::add_displacement(const Body        &body,
+                                  const std::string &name,
+                                  const std::string &location,
+                                  const std::string &item,
+                                  const std::string &entry)
+  {
+    double x, y;
+    if (!text::parse_point_location(location, x, y))
+      throw InputError(entry, "'" + item + "': expected point(x, y)");
+    // The vertex and its dofs are found once: searching them at every
+    // increment made 320 columns cost 6 times the solve.
+    std::array<types::global_dof_index, 2> vertex_dofs;
+    try
+      {
+        vertex_dofs = vertex_value_dofs(body, Point<2>(x, y));
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(entry, e.what());
+      }
+    for (const std::string q : {"ux", "uy"})
+      columns.push_back(identifier(name) + "_" + q + "_" +
+                        location_identifier(location));
+    evaluators.emplace_back(
+      [body = &body, vertex_dofs](std::vector<double> &row) {
+        row.push_back(body->displacement()(vertex_dofs[0]));
+        row.push_back(body->displacement()(vertex_dofs[1]));
+      });
+  }
+
+
+
+  void
+  HistoryWriter::add_reaction(const Body        &body,
+                              const std::string &name,
+                              const std::string &where,
+                              const std::string &entry)
+  {
+    // (a boundary that the body does not have is refused now)
+    try
+      {
+        support_reaction(body, where);
+      }
+    catch (const InputError &e)
+      {
+        throw InputError(entry, e.what());
+      }
+    for (const std::string q : {"Rx", "Ry"})
+      columns.push_back(identifier(name) + "_" + q + "_" +
+                        location_identifier(where));
+    evaluators.emplace_back([body = &body, where](std::vector<double> &row) {
+      const Tensor<1, 2> r = support_reaction(*body, where);
+      row.push_back(r[0]);
+      row.push_back(r[1]);
+    });
   }
 
 

@@ -145,191 +145,295 @@ namespace glissade
      * them, and a stray line, an element block of dimension 6, a count of
      * 4e9 nodes or a negative number of tags made it crash, allocate
      * gigabytes or loop (found by fuzzing). Node references must name
-     * declared nodes, coordinates must be finite and z zero.
+     * declared nodes, coordinates must be finite and z zero. The checks
+     * of one line are members; check_gmsh_records() runs them over the
+     * sections of the file's version.
      */
+    class GmshRecordCheck
+    {
+    public:
+      GmshRecordCheck(const std::vector<std::string> &lines,
+                      const std::string              &file,
+                      const std::string              &entry)
+        : lines(lines)
+        , file(file)
+        , entry(entry)
+      {}
+
+      /**
+       * MSH 2.2: $Nodes "N", then N lines "tag x y z"; $Elements the same
+       * with lines "id type n_tags tags... nodes...".
+       */
+      void
+      check_version_2();
+
+      /**
+       * MSH 4.1, $Entities if present: "n_points n_curves n_surfaces
+       * n_volumes" and one line per entity.
+       */
+      void
+      check_entities();
+
+      /**
+       * MSH 4.1, $Nodes: "n_blocks n_nodes min max", per block "dim tag
+       * parametric n", n tags, n coordinate lines.
+       */
+      void
+      check_nodes_4();
+
+      /**
+       * MSH 4.1, $Elements: "n_blocks n_elements min max", per block "dim
+       * tag type n", n lines "tag nodes..." (after $Nodes: the tags they
+       * name must be known).
+       */
+      void
+      check_elements_4();
+
+    private:
+      /** Throws the InputError of the file's line `line` (from 0). */
+      [[noreturn]] void
+      refuse(const std::size_t line, const std::string &what) const;
+
+      /** The lines of $name and $Endname; both lines.size() if absent. */
+      std::pair<std::size_t, std::size_t>
+      section(const std::string &name) const;
+
+      /** The numbers of line k, each finite. */
+      std::vector<double>
+      coordinates(const std::size_t k) const;
+
+      /** A node's x, y, z on line k: three of them, in the plane z = 0. */
+      void
+      check_node_line(const std::size_t k, const std::vector<double> &x) const;
+
+      /** The nodes of an element of Gmsh's type `type` on line k. */
+      int
+      nodes_of_type(const std::size_t k, const long long type) const;
+
+      /** A node that an element on line k names: one of $Nodes. */
+      void
+      check_node_reference(const std::size_t k, const long long tag) const;
+
+      const std::vector<std::string> &lines;
+      const std::string              &file;
+      const std::string              &entry;
+      /** The tags of the nodes declared so far. */
+      std::set<long long> nodes;
+      /** The integers of the line being read. */
+      std::vector<long long> v;
+    };
+
+    void
+    GmshRecordCheck::check_version_2()
+    {
+      const auto [node_begin, node_end]       = section("Nodes");
+      const auto [element_begin, element_end] = section("Elements");
+      for (std::size_t k = node_begin + 2; k < node_end; ++k)
+        {
+          const std::vector<double> x = coordinates(k);
+          if (x.size() != 4)
+            refuse(k, "a node line must read 'tag x y z'");
+          check_node_line(k, {x[1], x[2], x[3]});
+          nodes.insert(static_cast<long long>(x[0]));
+        }
+      for (std::size_t k = element_begin + 2; k < element_end; ++k)
+        {
+          if (!read_integers(lines[k], v) || v.size() < 3)
+            refuse(k,
+                   "an element line must read 'id type n_tags tags... "
+                   "nodes...'");
+          const int n = nodes_of_type(k, v[1]);
+          if (v[2] < 0 || static_cast<long long>(v.size()) != 3 + v[2] + n)
+            refuse(k,
+                   "the element's number of tags and of nodes do not "
+                   "match its line");
+          for (long long i = 3 + v[2]; i < static_cast<long long>(v.size());
+               ++i)
+            check_node_reference(k, v[i]);
+        }
+    }
+
+    void
+    GmshRecordCheck::check_entities()
+    {
+      const auto [entity_begin, entity_end] = section("Entities");
+      if (entity_begin == lines.size())
+        return;
+      if (!read_integers(lines[entity_begin + 1], v) || v.size() != 4)
+        refuse(entity_begin + 1, "$Entities must start with four counts");
+      long long total = 0;
+      for (const long long c : v)
+        {
+          if (c < 0)
+            refuse(entity_begin + 1, "a negative entity count");
+          total += c;
+        }
+      if (total != static_cast<long long>(entity_end - entity_begin) - 2)
+        refuse(entity_begin + 1,
+               "$Entities declares " + std::to_string(total) +
+                 " entities but has " +
+                 std::to_string(entity_end - entity_begin - 2) + " lines");
+    }
+
+    void
+    GmshRecordCheck::check_nodes_4()
+    {
+      const auto [node_begin, node_end] = section("Nodes");
+      if (!read_integers(lines[node_begin + 1], v) || v.size() != 4 || v[0] < 0)
+        refuse(node_begin + 1, "$Nodes must start with 'blocks nodes min max'");
+      const long long n_blocks = v[0], n_nodes = v[1];
+      std::size_t     k = node_begin + 2;
+      for (long long b = 0; b < n_blocks; ++b)
+        {
+          if (k >= node_end || !read_integers(lines[k], v) || v.size() != 4 ||
+              v[0] < 0 || v[0] > 3 || v[2] != 0 || v[3] < 0 ||
+              2 * v[3] >= static_cast<long long>(node_end - k))
+            refuse(k,
+                   "a node block header must read 'dimension (0-3) tag "
+                   "0 count' with its count of nodes following");
+          const long long n = v[3];
+          for (long long i = 1; i <= n; ++i)
+            {
+              if (!read_integers(lines[k + i], v) || v.size() != 1)
+                refuse(k + i, "a node tag line must hold one tag");
+              nodes.insert(v[0]);
+            }
+          for (long long i = 1; i <= n; ++i)
+            check_node_line(k + n + i, coordinates(k + n + i));
+          k += 1 + 2 * n;
+        }
+      if (k != node_end || static_cast<long long>(nodes.size()) != n_nodes)
+        refuse(k,
+               "the node blocks do not add up to the $Nodes header "
+               "(a stray or missing line, or a repeated tag)");
+    }
+
+    void
+    GmshRecordCheck::check_elements_4()
+    {
+      const auto [element_begin, element_end] = section("Elements");
+      if (!read_integers(lines[element_begin + 1], v) || v.size() != 4 ||
+          v[0] < 0)
+        refuse(element_begin + 1,
+               "$Elements must start with 'blocks elements min max'");
+      const long long n_blocks = v[0], n_elements = v[1];
+      long long       counted = 0;
+      std::size_t     k       = element_begin + 2;
+      for (long long b = 0; b < n_blocks; ++b)
+        {
+          if (k >= element_end || !read_integers(lines[k], v) ||
+              v.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0 ||
+              v[3] >= static_cast<long long>(element_end - k))
+            refuse(k,
+                   "an element block header must read 'dimension (0-3) "
+                   "tag type count' with its elements following");
+          const int       n     = nodes_of_type(k, v[2]);
+          const long long count = v[3];
+          for (long long i = 1; i <= count; ++i)
+            {
+              if (!read_integers(lines[k + i], v) ||
+                  static_cast<long long>(v.size()) != 1 + n)
+                refuse(k + i,
+                       "an element line must hold its tag and " +
+                         std::to_string(n) + " nodes");
+              for (int j = 1; j <= n; ++j)
+                check_node_reference(k + i, v[j]);
+            }
+          counted += count;
+          k += 1 + count;
+        }
+      if (k != element_end || counted != n_elements)
+        refuse(k,
+               "the element blocks do not add up to the $Elements "
+               "header (a stray or missing line?)");
+    }
+
+    void
+    GmshRecordCheck::refuse(const std::size_t  line,
+                            const std::string &what) const
+    {
+      throw InputError(entry,
+                       "'" + file + "', line " + std::to_string(line + 1) +
+                         ": " + what);
+    }
+
+    std::pair<std::size_t, std::size_t>
+    GmshRecordCheck::section(const std::string &name) const
+    {
+      std::size_t begin = 0;
+      while (begin < lines.size() && lines[begin] != "$" + name)
+        ++begin;
+      std::size_t end = begin;
+      while (end < lines.size() && lines[end] != "$End" + name)
+        ++end;
+      return std::make_pair(begin, end);
+    }
+
+    std::vector<double>
+    GmshRecordCheck::coordinates(const std::size_t k) const
+    {
+      std::istringstream  in(lines[k]);
+      std::vector<double> x;
+      std::string         field;
+      while (in >> field)
+        {
+          char *end = nullptr;
+          x.push_back(std::strtod(field.c_str(), &end));
+          if (*end != '\0' || !std::isfinite(x.back()))
+            refuse(k, "a node coordinate is not a finite number");
+        }
+      return x;
+    }
+
+    void
+    GmshRecordCheck::check_node_line(const std::size_t          k,
+                                     const std::vector<double> &x) const
+    {
+      if (x.size() < 3)
+        refuse(k, "a node needs x, y and z");
+      if (x[2] != 0.)
+        refuse(k,
+               "a node has z = " + std::to_string(x[2]) +
+                 ": glissade's meshes lie in the plane z = 0");
+    }
+
+    int
+    GmshRecordCheck::nodes_of_type(const std::size_t k,
+                                   const long long   type) const
+    {
+      const int n = gmsh_nodes_per_element(type);
+      if (n < 0)
+        refuse(k,
+               "element type " + std::to_string(type) +
+                 " is not a Gmsh element glissade knows");
+      return n;
+    }
+
+    void
+    GmshRecordCheck::check_node_reference(const std::size_t k,
+                                          const long long   tag) const
+    {
+      if (!nodes.count(tag))
+        refuse(k,
+               "the element names node " + std::to_string(tag) +
+                 ", which $Nodes does not declare");
+    }
+
     void
     check_gmsh_records(const std::vector<std::string> &lines,
                        const bool                      version_2,
                        const std::string              &file,
                        const std::string              &entry)
     {
-      const auto refuse = [&](const std::size_t line, const std::string &what) {
-        throw InputError(entry,
-                         "'" + file + "', line " + std::to_string(line + 1) +
-                           ": " + what);
-      };
-      const auto section = [&](const std::string &name) {
-        std::size_t begin = 0;
-        while (begin < lines.size() && lines[begin] != "$" + name)
-          ++begin;
-        std::size_t end = begin;
-        while (end < lines.size() && lines[end] != "$End" + name)
-          ++end;
-        return std::make_pair(begin, end); // both lines.size() if absent
-      };
-      std::vector<long long> v;
-      std::set<long long>    nodes;
-      const auto [node_begin, node_end]       = section("Nodes");
-      const auto [element_begin, element_end] = section("Elements");
-      const auto coordinates                  = [&](const std::size_t k) {
-        std::istringstream  in(lines[k]);
-        std::vector<double> x;
-        std::string         field;
-        while (in >> field)
-          {
-            char *end = nullptr;
-            x.push_back(std::strtod(field.c_str(), &end));
-            if (*end != '\0' || !std::isfinite(x.back()))
-              refuse(k, "a node coordinate is not a finite number");
-          }
-        return x;
-      };
-      const auto check_node_line = [&](const std::size_t          k,
-                                       const std::vector<double> &x) {
-        if (x.size() < 3)
-          refuse(k, "a node needs x, y and z");
-        if (x[2] != 0.)
-          refuse(k,
-                 "a node has z = " + std::to_string(x[2]) +
-                   ": glissade's meshes lie in the plane z = 0");
-      };
-
-      const auto nodes_of_type = [&](const std::size_t k,
-                                     const long long   type) {
-        const int n = gmsh_nodes_per_element(type);
-        if (n < 0)
-          refuse(k,
-                 "element type " + std::to_string(type) +
-                   " is not a Gmsh element glissade knows");
-        return n;
-      };
-      const auto check_node_reference = [&](const std::size_t k,
-                                            const long long   tag) {
-        if (!nodes.count(tag))
-          refuse(k,
-                 "the element names node " + std::to_string(tag) +
-                   ", which $Nodes does not declare");
-      };
-
+      GmshRecordCheck check(lines, file, entry);
       if (version_2)
+        check.check_version_2();
+      else
         {
-          // "N", then N lines "tag x y z".
-          for (std::size_t k = node_begin + 2; k < node_end; ++k)
-            {
-              const std::vector<double> x = coordinates(k);
-              if (x.size() != 4)
-                refuse(k, "a node line must read 'tag x y z'");
-              check_node_line(k, {x[1], x[2], x[3]});
-              nodes.insert(static_cast<long long>(x[0]));
-            }
-          // "id type n_tags tags... nodes..."
-          for (std::size_t k = element_begin + 2; k < element_end; ++k)
-            {
-              if (!read_integers(lines[k], v) || v.size() < 3)
-                refuse(k,
-                       "an element line must read 'id type n_tags tags... "
-                       "nodes...'");
-              const int n = nodes_of_type(k, v[1]);
-              if (v[2] < 0 || static_cast<long long>(v.size()) != 3 + v[2] + n)
-                refuse(k,
-                       "the element's number of tags and of nodes do not "
-                       "match its line");
-              for (long long i = 3 + v[2]; i < static_cast<long long>(v.size());
-                   ++i)
-                check_node_reference(k, v[i]);
-            }
-          return;
+          check.check_entities();
+          check.check_nodes_4();
+          check.check_elements_4();
         }
-
-      // Version 4.1. $Entities: "n_points n_curves n_surfaces n_volumes"
-      // and one line per entity.
-      const auto [entity_begin, entity_end] = section("Entities");
-      if (entity_begin < lines.size())
-        {
-          if (!read_integers(lines[entity_begin + 1], v) || v.size() != 4)
-            refuse(entity_begin + 1, "$Entities must start with four counts");
-          long long total = 0;
-          for (const long long c : v)
-            {
-              if (c < 0)
-                refuse(entity_begin + 1, "a negative entity count");
-              total += c;
-            }
-          if (total != static_cast<long long>(entity_end - entity_begin) - 2)
-            refuse(entity_begin + 1,
-                   "$Entities declares " + std::to_string(total) +
-                     " entities but has " +
-                     std::to_string(entity_end - entity_begin - 2) + " lines");
-        }
-      // $Nodes: "n_blocks n_nodes min max", per block "dim tag parametric
-      // n", n tags, n coordinate lines.
-      if (!read_integers(lines[node_begin + 1], v) || v.size() != 4 || v[0] < 0)
-        refuse(node_begin + 1, "$Nodes must start with 'blocks nodes min max'");
-      {
-        const long long n_blocks = v[0], n_nodes = v[1];
-        std::size_t     k = node_begin + 2;
-        for (long long b = 0; b < n_blocks; ++b)
-          {
-            if (k >= node_end || !read_integers(lines[k], v) || v.size() != 4 ||
-                v[0] < 0 || v[0] > 3 || v[2] != 0 || v[3] < 0 ||
-                2 * v[3] >= static_cast<long long>(node_end - k))
-              refuse(k,
-                     "a node block header must read 'dimension (0-3) tag "
-                     "0 count' with its count of nodes following");
-            const long long n = v[3];
-            for (long long i = 1; i <= n; ++i)
-              {
-                if (!read_integers(lines[k + i], v) || v.size() != 1)
-                  refuse(k + i, "a node tag line must hold one tag");
-                nodes.insert(v[0]);
-              }
-            for (long long i = 1; i <= n; ++i)
-              check_node_line(k + n + i, coordinates(k + n + i));
-            k += 1 + 2 * n;
-          }
-        if (k != node_end || static_cast<long long>(nodes.size()) != n_nodes)
-          refuse(k,
-                 "the node blocks do not add up to the $Nodes header "
-                 "(a stray or missing line, or a repeated tag)");
-      }
-      // $Elements: "n_blocks n_elements min max", per block "dim tag type
-      // n", n lines "tag nodes...".
-      if (!read_integers(lines[element_begin + 1], v) || v.size() != 4 ||
-          v[0] < 0)
-        refuse(element_begin + 1,
-               "$Elements must start with 'blocks elements min max'");
-      {
-        const long long n_blocks = v[0], n_elements = v[1];
-        long long       counted = 0;
-        std::size_t     k       = element_begin + 2;
-        for (long long b = 0; b < n_blocks; ++b)
-          {
-            if (k >= element_end || !read_integers(lines[k], v) ||
-                v.size() != 4 || v[0] < 0 || v[0] > 3 || v[3] < 0 ||
-                v[3] >= static_cast<long long>(element_end - k))
-              refuse(k,
-                     "an element block header must read 'dimension (0-3) "
-                     "tag type count' with its elements following");
-            const int       n     = nodes_of_type(k, v[2]);
-            const long long count = v[3];
-            for (long long i = 1; i <= count; ++i)
-              {
-                if (!read_integers(lines[k + i], v) ||
-                    static_cast<long long>(v.size()) != 1 + n)
-                  refuse(k + i,
-                         "an element line must hold its tag and " +
-                           std::to_string(n) + " nodes");
-                for (int j = 1; j <= n; ++j)
-                  check_node_reference(k + i, v[j]);
-              }
-            counted += count;
-            k += 1 + count;
-          }
-        if (k != element_end || counted != n_elements)
-          refuse(k,
-                 "the element blocks do not add up to the $Elements "
-                 "header (a stray or missing line?)");
-      }
     }
 
     /**

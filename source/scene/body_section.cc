@@ -126,14 +126,12 @@ namespace glissade
 
 
 
+    /** Fixed: 'location: components; ...'. */
     void
-    parse_boundary_conditions(SectionReader     &prm,
-                              BodyDescription   &body,
-                              const std::string &where_body)
+    parse_fixed_supports(SectionReader     &prm,
+                         const std::string &where,
+                         BodyDescription   &body)
     {
-      prm.enter_subsection("Boundary conditions");
-      const std::string where = where_body + "/Boundary conditions/";
-
       for (const auto &f : entry_format::items(
              prm.get("Fixed"), 2, where + "Fixed", "location: components"))
         {
@@ -144,7 +142,19 @@ namespace glissade
           parse_components(f[1], item, item.entry);
           body.dirichlet.push_back(item);
         }
+    }
 
+
+
+    /**
+     * Prescribed displacement: 'location: components: expressions; ...',
+     * one expression per component.
+     */
+    void
+    parse_prescribed_displacements(SectionReader     &prm,
+                                   const std::string &where,
+                                   BodyDescription   &body)
+    {
       for (const auto &f :
            entry_format::items(prm.get("Prescribed displacement"),
                                3,
@@ -167,7 +177,16 @@ namespace glissade
           entry_format::check_expressions(item.expressions, item.entry);
           body.dirichlet.push_back(item);
         }
+    }
 
+
+
+    /** Prescribed rotation: 'location: cx, cy: angle; ...'. */
+    void
+    parse_prescribed_rotations(SectionReader     &prm,
+                               const std::string &where,
+                               BodyDescription   &body)
+    {
       for (const auto &f : entry_format::items(prm.get("Prescribed rotation"),
                                                3,
                                                where + "Prescribed rotation",
@@ -182,28 +201,35 @@ namespace glissade
           entry_format::check_expressions({f[2]}, item.entry);
           body.dirichlet.push_back(item);
         }
+    }
 
-      // Two Dirichlet data on one location and component contradict each
-      // other (which wins would depend on the order of application).
+
+
+    /**
+     * Two Dirichlet data on one location and component contradict each
+     * other (which wins would depend on the order of application): the
+     * second is refused.
+     */
+    void
+    check_one_datum_per_component(const BodyDescription &body)
+    {
+      // A rotation, a normal or a tangential support involves both
+      // Cartesian components.
+      const auto both_x = [](const DirichletDescription &d) {
+        return d.kind == DirichletDescription::Kind::rotation ||
+               d.direction != DirichletDescription::Direction::cartesian ||
+               d.x_component;
+      };
+      const auto both_y = [](const DirichletDescription &d) {
+        return d.kind == DirichletDescription::Kind::rotation ||
+               d.direction != DirichletDescription::Direction::cartesian ||
+               d.y_component;
+      };
       for (unsigned int i = 0; i < body.dirichlet.size(); ++i)
         for (unsigned int j = 0; j < i; ++j)
           {
             const DirichletDescription &a = body.dirichlet[j],
                                        &b = body.dirichlet[i];
-            // A rotation, a normal or a tangential support involves both
-            // Cartesian components.
-            const auto both_x = [](const DirichletDescription &d) {
-              return d.kind == DirichletDescription::Kind::rotation ||
-                     d.direction !=
-                       DirichletDescription::Direction::cartesian ||
-                     d.x_component;
-            };
-            const auto both_y = [](const DirichletDescription &d) {
-              return d.kind == DirichletDescription::Kind::rotation ||
-                     d.direction !=
-                       DirichletDescription::Direction::cartesian ||
-                     d.y_component;
-            };
             if (text::trim(a.location) == text::trim(b.location) &&
                 ((both_x(a) && both_x(b)) || (both_y(a) && both_y(b))))
               throw InputError(b.entry,
@@ -214,53 +240,92 @@ namespace glissade
                                  ": give each component of a boundary one "
                                  "Dirichlet datum");
           }
+    }
 
-      const auto add_neumann = [&](const std::string             &entry,
-                                   const NeumannDescription::Kind kind,
-                                   const unsigned int             n_expressions,
-                                   const std::string             &syntax) {
-        for (const auto &f :
-             entry_format::items(prm.get(entry), 2, where + entry, syntax))
-          {
-            NeumannDescription item;
-            item.kind        = kind;
-            item.location    = f[0];
-            item.entry       = where + entry;
-            item.expressions = text::split_top_level(f[1], ',');
-            if (item.expressions.size() != n_expressions)
-              throw InputError(item.entry,
-                               "'" + f[1] + "': expected '" + syntax + "'");
-            entry_format::check_expressions(item.expressions, item.entry);
-            double     x, y;
-            const bool is_point =
-              text::parse_point_location(item.location, x, y);
-            if (kind == NeumannDescription::Kind::point_load && !is_point)
-              throw InputError(item.entry,
-                               "point loads act on 'point(x, y)', not on '" +
-                                 item.location + "'");
-            if (kind != NeumannDescription::Kind::point_load && is_point)
-              throw InputError(item.entry,
-                               "tractions and pressures act on a boundary, "
-                               "not on a point");
-            body.neumann.push_back(item);
-          }
-      };
-      add_neumann("Point loads",
-                  NeumannDescription::Kind::point_load,
-                  2,
-                  "point(x, y): fx, fy");
-      add_neumann("Nodal loads",
-                  NeumannDescription::Kind::nodal_loads,
-                  2,
-                  "boundary: fx, fy");
-      add_neumann("Tractions",
-                  NeumannDescription::Kind::traction,
-                  2,
-                  "boundary: tx, ty");
-      add_neumann("Pressure",
-                  NeumannDescription::Kind::pressure,
-                  1,
-                  "boundary: p");
+
+
+    /**
+     * One entry of loads ('location: expressions; ...', n_expressions of
+     * them): point loads act on points, the others on boundaries.
+     */
+    void
+    parse_neumann_entry(SectionReader                 &prm,
+                        const std::string             &where,
+                        const std::string             &entry,
+                        const NeumannDescription::Kind kind,
+                        const unsigned int             n_expressions,
+                        const std::string             &syntax,
+                        BodyDescription               &body)
+    {
+      for (const auto &f :
+           entry_format::items(prm.get(entry), 2, where + entry, syntax))
+        {
+          NeumannDescription item;
+          item.kind        = kind;
+          item.location    = f[0];
+          item.entry       = where + entry;
+          item.expressions = text::split_top_level(f[1], ',');
+          if (item.expressions.size() != n_expressions)
+            throw InputError(item.entry,
+                             "'" + f[1] + "': expected '" + syntax + "'");
+          entry_format::check_expressions(item.expressions, item.entry);
+          double     x, y;
+          const bool is_point = text::parse_point_location(item.location, x, y);
+          if (kind == NeumannDescription::Kind::point_load && !is_point)
+            throw InputError(item.entry,
+                             "point loads act on 'point(x, y)', not on '" +
+                               item.location + "'");
+          if (kind != NeumannDescription::Kind::point_load && is_point)
+            throw InputError(item.entry,
+                             "tractions and pressures act on a boundary, "
+                             "not on a point");
+          body.neumann.push_back(item);
+        }
+    }
+
+
+
+    void
+    parse_boundary_conditions(SectionReader     &prm,
+                              BodyDescription   &body,
+                              const std::string &where_body)
+    {
+      prm.enter_subsection("Boundary conditions");
+      const std::string where = where_body + "/Boundary conditions/";
+
+      parse_fixed_supports(prm, where, body);
+      parse_prescribed_displacements(prm, where, body);
+      parse_prescribed_rotations(prm, where, body);
+      check_one_datum_per_component(body);
+
+      parse_neumann_entry(prm,
+                          where,
+                          "Point loads",
+                          NeumannDescription::Kind::point_load,
+                          2,
+                          "point(x, y): fx, fy",
+                          body);
+      parse_neumann_entry(prm,
+                          where,
+                          "Nodal loads",
+                          NeumannDescription::Kind::nodal_loads,
+                          2,
+                          "boundary: fx, fy",
+                          body);
+      parse_neumann_entry(prm,
+                          where,
+                          "Tractions",
+                          NeumannDescription::Kind::traction,
+                          2,
+                          "boundary: tx, ty",
+                          body);
+      parse_neumann_entry(prm,
+                          where,
+                          "Pressure",
+                          NeumannDescription::Kind::pressure,
+                          1,
+                          "boundary: p",
+                          body);
       if (const std::string g = text::trim(prm.get("Gravity")); !g.empty())
         {
           body.gravity = text::split_top_level(g, ',');

@@ -16,6 +16,7 @@
 #include <cctype>
 #include <cstdint>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -142,6 +143,155 @@ namespace glissade
       std::ostringstream hex;
       hex << std::hex << std::setw(16) << std::setfill('0') << hash;
       return hex.str();
+    }
+
+
+
+    /**
+     * Parses the file's text into prm, then applies the overrides that
+     * `applies` selects; deal.II's errors become an InputError naming the
+     * file (ours pass as they are).
+     */
+    void
+    parse_with_overrides(ParameterHandler               &prm,
+                         const std::string              &text_value,
+                         const std::string              &source,
+                         const bool                      skip_undefined,
+                         const std::vector<std::string> &overrides,
+                         const std::function<bool(const std::string &)> applies)
+    {
+      try
+        {
+          prm.parse_input_from_string(text_value, "", skip_undefined);
+          for (const auto &o : overrides)
+            if (applies(o))
+              apply_override(prm, o);
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(source, text::essential_message(e));
+        }
+    }
+
+
+
+    /** Pass 1 over the file: the body and contact pair names only. */
+    void
+    read_scene_names(const std::string              &text_value,
+                     const std::string              &source,
+                     const std::vector<std::string> &overrides,
+                     std::vector<std::string>       &body_names,
+                     std::vector<std::string>       &contact_names)
+    {
+      ParameterHandler prm;
+      prm.enter_subsection("Scene");
+      prm.declare_entry("Bodies", "body", Patterns::Anything());
+      prm.declare_entry("Contact pairs", "", Patterns::Anything());
+      prm.leave_subsection();
+      parse_with_overrides(
+        prm, text_value, source, true, overrides, [](const std::string &o) {
+          return o.rfind("Scene/", 0) == 0;
+        });
+      prm.enter_subsection("Scene");
+      body_names = read_body_names(prm.get("Bodies"), source);
+      contact_names =
+        Utilities::split_string_list(prm.get("Contact pairs"), ',');
+      check_file_name_parts(contact_names,
+                            source + ": Scene/Contact pairs",
+                            "contact pair");
+      prm.leave_subsection();
+    }
+
+
+
+    /**
+     * Pass 1b: each body's material regions, whose subsections pass 2
+     * declares by name.
+     */
+    std::map<std::string, std::vector<std::string>>
+    read_material_regions(const std::string              &text_value,
+                          const std::string              &source,
+                          const std::vector<std::string> &overrides,
+                          const std::vector<std::string> &body_names)
+    {
+      ParameterHandler prm;
+      for (const auto &name : body_names)
+        {
+          prm.enter_subsection("Body " + name);
+          prm.enter_subsection("Material");
+          prm.declare_entry("Regions", "", Patterns::Anything());
+          prm.leave_subsection();
+          prm.leave_subsection();
+        }
+      parse_with_overrides(
+        prm, text_value, source, true, overrides, [](const std::string &o) {
+          return o.find("/Material/Regions=") != std::string::npos;
+        });
+      std::map<std::string, std::vector<std::string>> regions;
+      for (const auto &name : body_names)
+        {
+          prm.enter_subsection("Body " + name);
+          prm.enter_subsection("Material");
+          regions[name] = Utilities::split_string_list(prm.get("Regions"), ',');
+          prm.leave_subsection();
+          prm.leave_subsection();
+          const std::string entry =
+            source + ": Body " + name + "/Material/Regions";
+          for (unsigned int i = 0; i < regions[name].size(); ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              if (regions[name][i] == regions[name][j])
+                throw InputError(entry,
+                                 "region '" + regions[name][i] +
+                                   "' is named twice");
+        }
+      return regions;
+    }
+
+
+
+    /**
+     * ParameterHandler reports paths with special characters mangled as
+     * "_XX" (hex): the path as the file wrote it.
+     */
+    std::string
+    demangle_path(const std::string &mangled)
+    {
+      std::string plain;
+      for (unsigned int i = 0; i < mangled.size(); ++i)
+        if (mangled[i] == '_' && i + 2 < mangled.size() &&
+            std::isxdigit(mangled[i + 1]) && std::isxdigit(mangled[i + 2]))
+          {
+            plain += static_cast<char>(
+              std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          plain += mangled[i];
+      return plain;
+    }
+
+
+
+    /**
+     * Mesh/Type must be set for every body: how a body of Scene/Bodies
+     * without its subsection is caught.
+     */
+    void
+    check_every_body_has_a_mesh(const ParameterHandler         &prm,
+                                const std::vector<std::string> &body_names,
+                                const std::string              &source)
+    {
+      for (const auto &name : body_names)
+        for (const auto &missing : prm.get_entries_wrongly_not_set())
+          if (demangle_path(missing).find("Body " + name) != std::string::npos)
+            throw InputError(source + ": Body " + name + "/Mesh/Type",
+                             "is not set: every body of Scene/Bodies needs a "
+                             "'subsection Body " +
+                               name + "' with at least its Mesh/Type");
     }
   } // namespace
 
@@ -320,125 +470,21 @@ namespace glissade
                            const std::string              &source,
                            const std::vector<std::string> &overrides)
   {
-    // Pass 1: the body and contact pair names only.
     std::vector<std::string> body_names, contact_names;
-    {
-      ParameterHandler prm;
-      prm.enter_subsection("Scene");
-      prm.declare_entry("Bodies", "body", Patterns::Anything());
-      prm.declare_entry("Contact pairs", "", Patterns::Anything());
-      prm.leave_subsection();
-      try
-        {
-          prm.parse_input_from_string(text_value, "", true);
-          for (const auto &o : overrides)
-            if (o.rfind("Scene/", 0) == 0)
-              apply_override(prm, o);
-        }
-      catch (const InputError &)
-        {
-          throw;
-        }
-      catch (const std::exception &e)
-        {
-          throw InputError(source, text::essential_message(e));
-        }
-      prm.enter_subsection("Scene");
-      body_names = read_body_names(prm.get("Bodies"), source);
-      contact_names =
-        Utilities::split_string_list(prm.get("Contact pairs"), ',');
-      check_file_name_parts(contact_names,
-                            source + ": Scene/Contact pairs",
-                            "contact pair");
-      prm.leave_subsection();
-    }
-
-    // Pass 1b: each body's material regions, whose subsections are
-    // declared by name in pass 2.
-    std::map<std::string, std::vector<std::string>> regions;
-    {
-      ParameterHandler prm;
-      for (const auto &name : body_names)
-        {
-          prm.enter_subsection("Body " + name);
-          prm.enter_subsection("Material");
-          prm.declare_entry("Regions", "", Patterns::Anything());
-          prm.leave_subsection();
-          prm.leave_subsection();
-        }
-      try
-        {
-          prm.parse_input_from_string(text_value, "", true);
-          for (const auto &o : overrides)
-            if (o.find("/Material/Regions=") != std::string::npos)
-              apply_override(prm, o);
-        }
-      catch (const InputError &)
-        {
-          throw;
-        }
-      catch (const std::exception &e)
-        {
-          throw InputError(source, text::essential_message(e));
-        }
-      for (const auto &name : body_names)
-        {
-          prm.enter_subsection("Body " + name);
-          prm.enter_subsection("Material");
-          regions[name] = Utilities::split_string_list(prm.get("Regions"), ',');
-          prm.leave_subsection();
-          prm.leave_subsection();
-          const std::string entry =
-            source + ": Body " + name + "/Material/Regions";
-          for (unsigned int i = 0; i < regions[name].size(); ++i)
-            for (unsigned int j = 0; j < i; ++j)
-              if (regions[name][i] == regions[name][j])
-                throw InputError(entry,
-                                 "region '" + regions[name][i] +
-                                   "' is named twice");
-        }
-    }
+    read_scene_names(text_value, source, overrides, body_names, contact_names);
+    const std::map<std::string, std::vector<std::string>> regions =
+      read_material_regions(text_value, source, overrides, body_names);
 
     // Pass 2: everything, strictly: an undeclared entry is an error.
     ParameterHandler prm;
     declare_parameters(prm, body_names, contact_names, regions);
-    try
-      {
-        prm.parse_input_from_string(text_value, "", false);
-        for (const auto &o : overrides)
-          apply_override(prm, o);
-      }
-    catch (const InputError &)
-      {
-        throw;
-      }
-    catch (const std::exception &e)
-      {
-        throw InputError(source, text::essential_message(e));
-      }
-    // ParameterHandler reports paths with special characters mangled as
-    // "_XX" (hex); undo that before looking for the body's name.
-    const auto demangle = [](const std::string &mangled) {
-      std::string plain;
-      for (unsigned int i = 0; i < mangled.size(); ++i)
-        if (mangled[i] == '_' && i + 2 < mangled.size() &&
-            std::isxdigit(mangled[i + 1]) && std::isxdigit(mangled[i + 2]))
-          {
-            plain += static_cast<char>(
-              std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-          }
-        else
-          plain += mangled[i];
-      return plain;
-    };
-    for (const auto &name : body_names)
-      for (const auto &missing : prm.get_entries_wrongly_not_set())
-        if (demangle(missing).find("Body " + name) != std::string::npos)
-          throw InputError(source + ": Body " + name + "/Mesh/Type",
-                           "is not set: every body of Scene/Bodies needs a "
-                           "'subsection Body " +
-                             name + "' with at least its Mesh/Type");
+    parse_with_overrides(prm,
+                         text_value,
+                         source,
+                         false,
+                         overrides,
+                         [](const std::string &) { return true; });
+    check_every_body_has_a_mesh(prm, body_names, source);
     try
       {
         return parse_parameters(prm, body_names, contact_names, source);

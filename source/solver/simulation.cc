@@ -126,55 +126,11 @@ namespace glissade
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
       {
-        bool   admissible       = true;
-        double residual_squared = 0., scale = 0.;
-        {
-          TimerOutput::Scope scope(timer, timing::assembly);
-          // The bodies are independent until the contact correction: one
-          // task each, on both cores (the same arithmetic as one after the
-          // other). The factorisations stay in sequence: they call the
-          // threaded BLAS, and two at once took 1.7 times as long
-          // (doc/performance.md).
-          // What a body's assembly throws (a boundary datum that is not
-          // finite: an input error naming it) is rethrown here, the first
-          // body's first, as the sequential loop would have.
-          std::vector<char>               assembled(all_bodies.size());
-          std::vector<std::exception_ptr> thrown(all_bodies.size());
-          Threads::TaskGroup<void>        tasks;
-          for (unsigned int b = 0; b < all_bodies.size(); ++b)
-            tasks += Threads::new_task([&, b]() {
-              try
-                {
-                  assembled[b] = all_bodies[b]->assemble();
-                }
-              catch (...)
-                {
-                  thrown[b] = std::current_exception();
-                }
-            });
-          tasks.join_all();
-          for (const std::exception_ptr &e : thrown)
-            if (e)
-              std::rethrow_exception(e);
-          for (unsigned int b = 0; b < all_bodies.size(); ++b)
-            {
-              admissible = assembled[b] && admissible;
-              residual_squared += std::pow(all_bodies[b]->residual_norm(), 2);
-              scale = std::max(scale, all_bodies[b]->force_scale());
-            }
-        }
-        const double residual = std::sqrt(residual_squared);
+        double     residual = 0., scale = 0.;
+        const bool admissible = assemble_bodies(residual, scale);
         if (!admissible || !std::isfinite(residual))
           {
-            failure_cause.clear();
-            for (auto &b : all_bodies)
-              if (!b->assembly_problem().empty())
-                failure_cause +=
-                  (failure_cause.empty() ? "" : "; ") + b->assembly_problem();
-            if (failure_cause.empty())
-              failure_cause = "the residual overflows double precision "
-                              "(loads or prescribed displacements too large "
-                              "for the bodies' stiffness?)";
+            failure_cause = assembly_failure();
             return false;
           }
         criterion.add_residual(iteration, residual, scale);
@@ -224,34 +180,8 @@ namespace glissade
         // Predictor: the contact-free step of every body; then the contact
         // correction on the condensed system; then the update.
         std::vector<Vector<double>> du(all_bodies.size());
-        for (unsigned int b = 0; b < all_bodies.size(); ++b)
-          {
-            // (with the sparse contact method, the contact step solves the
-            // bodies in contact together)
-            if (contact_problem->solves_body(b))
-              continue;
-            try
-              {
-                TimerOutput::Scope scope(timer, timing::factorization);
-                if (previous_tangent)
-                  ++stats.n_reused_factorizations;
-                else
-                  all_bodies[b]->system().factorize();
-              }
-            catch (const std::runtime_error &e)
-              {
-                // A singular tangent: a structural limit point (free
-                // rigid-body motions are refused before computing, or
-                // regularised where contact holds them).
-                failure_cause = "the tangent of body '" +
-                                all_bodies[b]->name() +
-                                "' cannot be factorised: " + e.what();
-                return false;
-              }
-            TimerOutput::Scope scope(timer, timing::predictor);
-            all_bodies[b]->system().solve(
-              all_bodies[b]->system().right_hand_side(), du[b]);
-          }
+        if (!predict(previous_tangent, du))
+          return false;
         if (!contact_problem->empty() && !contact_problem->correct(du))
           {
             failure_cause =
@@ -261,30 +191,14 @@ namespace glissade
                         << contact_problem->last_result().message << std::endl;
             return false;
           }
-        double increment_squared = 0., displacement_squared = 0.;
-        for (unsigned int b = 0; b < all_bodies.size(); ++b)
-          {
-            all_bodies[b]->update(du[b]);
-            increment_squared += du[b].norm_sqr();
-            displacement_squared += all_bodies[b]->displacement().norm_sqr();
-          }
-        const double last_increment    = std::sqrt(increment_squared);
-        const double displacement_norm = std::sqrt(displacement_squared);
+        double last_increment = 0., displacement_norm = 0.;
+        update_bodies(du, last_increment, displacement_norm);
         criterion.add_correction(last_increment, displacement_norm);
         if (!contact_problem->empty())
           contact_problem->update_state();
         if (debug_log::at(1))
-          for (unsigned int b = 0; b < all_bodies.size(); ++b)
-            debug_log::stream()
-              << "    body " << b << " |du| " << du[b].l2_norm() << " max "
-              << du[b].linfty_norm() << " |u| "
-              << all_bodies[b]->displacement().l2_norm() << std::endl;
-        if (debug_log::at(1))
-          debug_log::stream()
-            << "  it " << iteration << " |R|/F " << scaled << " |du| "
-            << last_increment << " |u| " << displacement_norm << " active "
-            << contact_problem->n_active() << " sweeps "
-            << contact_problem->last_result().sweeps << std::endl;
+          log_iteration(
+            iteration, scaled, du, last_increment, displacement_norm);
         if (!std::isfinite(last_increment))
           {
             failure_cause = "the Newton correction is not finite (a singular "
@@ -297,6 +211,140 @@ namespace glissade
     failure_cause = "no convergence in Newton/Maximum iterations = " +
                     std::to_string(settings.max_iterations);
     return false;
+  }
+
+
+
+  bool
+  Simulation::assemble_bodies(double &residual, double &scale)
+  {
+    TimerOutput::Scope scope(timer, timing::assembly);
+    // The bodies are independent until the contact correction: one task
+    // each, on both cores (the same arithmetic as one after the other). The
+    // factorisations stay in sequence: they call the threaded BLAS, and two
+    // at once took 1.7 times as long (doc/performance.md).
+    // What a body's assembly throws (a boundary datum that is not finite:
+    // an input error naming it) is rethrown here, the first body's first,
+    // as the sequential loop would have.
+    std::vector<char>               assembled(all_bodies.size());
+    std::vector<std::exception_ptr> thrown(all_bodies.size());
+    Threads::TaskGroup<void>        tasks;
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      tasks += Threads::new_task([&, b]() {
+        try
+          {
+            assembled[b] = all_bodies[b]->assemble();
+          }
+        catch (...)
+          {
+            thrown[b] = std::current_exception();
+          }
+      });
+    tasks.join_all();
+    for (const std::exception_ptr &e : thrown)
+      if (e)
+        std::rethrow_exception(e);
+    bool   admissible       = true;
+    double residual_squared = 0.;
+    scale                   = 0.;
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      {
+        admissible = assembled[b] && admissible;
+        residual_squared += std::pow(all_bodies[b]->residual_norm(), 2);
+        scale = std::max(scale, all_bodies[b]->force_scale());
+      }
+    residual = std::sqrt(residual_squared);
+    return admissible;
+  }
+
+
+
+  std::string
+  Simulation::assembly_failure() const
+  {
+    std::string cause;
+    for (auto &b : all_bodies)
+      if (!b->assembly_problem().empty())
+        cause += (cause.empty() ? "" : "; ") + b->assembly_problem();
+    if (cause.empty())
+      cause = "the residual overflows double precision (loads or prescribed "
+              "displacements too large for the bodies' stiffness?)";
+    return cause;
+  }
+
+
+
+  bool
+  Simulation::predict(const bool                   previous_tangent,
+                      std::vector<Vector<double>> &du)
+  {
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      {
+        // (with the sparse contact method, the contact step solves the
+        // bodies in contact together)
+        if (contact_problem->solves_body(b))
+          continue;
+        try
+          {
+            TimerOutput::Scope scope(timer, timing::factorization);
+            if (previous_tangent)
+              ++stats.n_reused_factorizations;
+            else
+              all_bodies[b]->system().factorize();
+          }
+        catch (const std::runtime_error &e)
+          {
+            // A singular tangent: a structural limit point (free rigid-body
+            // motions are refused before computing, or regularised where
+            // contact holds them).
+            failure_cause = "the tangent of body '" + all_bodies[b]->name() +
+                            "' cannot be factorised: " + e.what();
+            return false;
+          }
+        TimerOutput::Scope scope(timer, timing::predictor);
+        all_bodies[b]->system().solve(all_bodies[b]->system().right_hand_side(),
+                                      du[b]);
+      }
+    return true;
+  }
+
+
+
+  void
+  Simulation::update_bodies(const std::vector<Vector<double>> &du,
+                            double                            &increment_norm,
+                            double &displacement_norm)
+  {
+    double increment_squared = 0., displacement_squared = 0.;
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      {
+        all_bodies[b]->update(du[b]);
+        increment_squared += du[b].norm_sqr();
+        displacement_squared += all_bodies[b]->displacement().norm_sqr();
+      }
+    increment_norm    = std::sqrt(increment_squared);
+    displacement_norm = std::sqrt(displacement_squared);
+  }
+
+
+
+  void
+  Simulation::log_iteration(const unsigned int                 iteration,
+                            const double                       scaled_residual,
+                            const std::vector<Vector<double>> &du,
+                            const double                       increment_norm,
+                            const double displacement_norm) const
+  {
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      debug_log::stream() << "    body " << b << " |du| " << du[b].l2_norm()
+                          << " max " << du[b].linfty_norm() << " |u| "
+                          << all_bodies[b]->displacement().l2_norm()
+                          << std::endl;
+    debug_log::stream() << "  it " << iteration << " |R|/F " << scaled_residual
+                        << " |du| " << increment_norm << " |u| "
+                        << displacement_norm << " active "
+                        << contact_problem->n_active() << " sweeps "
+                        << contact_problem->last_result().sweeps << std::endl;
   }
 
 
@@ -423,22 +471,8 @@ namespace glissade
     for (const unsigned int n : program.stage_increments)
       n_total += n;
 
-    unsigned int restart_increment = 0;
-    if (restart)
-      {
-        restart_increment = read_checkpoint();
-        if (scene.output.progress)
-          std::cout << "restart after increment " << restart_increment
-                    << " (t = " << current_time << ") from "
-                    << checkpoint_file() << std::endl;
-      }
-    else
-      {
-        integrator->initialize();
-        history->record(0, 0., 0);
-        output->write_initial_state();
-      }
-    const double wall_before = stats.wall_seconds;
+    const unsigned int restart_increment = begin_run(restart);
+    const double       wall_before       = stats.wall_seconds;
 
     unsigned int increment = 0;
     double       t_begin   = 0.;
@@ -470,21 +504,13 @@ namespace glissade
               }
             ++stats.increments;
             if (scene.output.progress)
-              std::cout << "increment " << std::setw(5) << increment << "/"
-                        << n_total << "  t = " << std::setw(10) << t
-                        << "  Newton iterations " << std::setw(2) << iterations
-                        << "  |R|/F = " << std::scientific
-                        << std::setprecision(2) << residual_history.back()
-                        << std::defaultfloat << std::setprecision(6)
-                        << (contact_problem->empty() ?
-                              std::string() :
-                              "  active contact nodes " +
-                                std::to_string(contact_problem->n_active()))
-                        << "  "
-                        << time_left(wall.wall_time(),
-                                     increment - restart_increment,
-                                     n_total - increment)
-                        << std::endl;
+              report_increment(increment,
+                               n_total,
+                               t,
+                               iterations,
+                               time_left(wall.wall_time(),
+                                         increment - restart_increment,
+                                         n_total - increment));
             history->record(increment, t, iterations);
             if (on_increment)
               on_increment(increment, t);
@@ -492,8 +518,7 @@ namespace glissade
             output->write_increment(increment, t, last);
 
             const bool stop = (increment == scene.checkpoint.stop_after);
-            if (stop || (scene.checkpoint.interval > 0 &&
-                         increment % scene.checkpoint.interval == 0))
+            if (stop || checkpoint_due(increment))
               {
                 stats.wall_seconds = wall_before + wall.wall_time();
                 history->write();
@@ -511,21 +536,7 @@ namespace glissade
               {
                 history->write();
                 stats.wall_seconds = wall_before + wall.wall_time();
-                if (!(scene.checkpoint.interval > 0 &&
-                      increment % scene.checkpoint.interval == 0))
-                  write_checkpoint(increment);
-                output->write_interrupted_state(increment, t, last);
-                write_summary_file(
-                  "stopped by " + interruption::signal_name(signal) +
-                  " after increment " + std::to_string(increment) + " of " +
-                  std::to_string(n_total) + "; continue with --restart\n");
-                throw RunInterrupted(interruption::signal_name(signal) +
-                                     " received: stopped "
-                                     "after increment " +
-                                     std::to_string(increment) + " of " +
-                                     std::to_string(n_total) +
-                                     " (t = " + std::to_string(t) +
-                                     "), its state in " + checkpoint_file());
+                stop_on_signal(signal, increment, n_total, t, last);
               }
           }
         t_begin = t_end;
@@ -541,6 +552,81 @@ namespace glissade
                     "--restart\n");
     output->draw_pictures();
     return completed;
+  }
+
+
+
+  unsigned int
+  Simulation::begin_run(const bool restart)
+  {
+    if (!restart)
+      {
+        integrator->initialize();
+        history->record(0, 0., 0);
+        output->write_initial_state();
+        return 0;
+      }
+    const unsigned int restart_increment = read_checkpoint();
+    if (scene.output.progress)
+      std::cout << "restart after increment " << restart_increment
+                << " (t = " << current_time << ") from " << checkpoint_file()
+                << std::endl;
+    return restart_increment;
+  }
+
+
+
+  void
+  Simulation::report_increment(const unsigned int increment,
+                               const unsigned int n_total,
+                               const double       t,
+                               const unsigned int iterations,
+                               const std::string &remaining) const
+  {
+    std::cout << "increment " << std::setw(5) << increment << "/" << n_total
+              << "  t = " << std::setw(10) << t << "  Newton iterations "
+              << std::setw(2) << iterations << "  |R|/F = " << std::scientific
+              << std::setprecision(2) << residual_history.back()
+              << std::defaultfloat << std::setprecision(6)
+              << (contact_problem->empty() ?
+                    std::string() :
+                    "  active contact nodes " +
+                      std::to_string(contact_problem->n_active()))
+              << "  " << remaining << std::endl;
+  }
+
+
+
+  bool
+  Simulation::checkpoint_due(const unsigned int increment) const
+  {
+    return scene.checkpoint.interval > 0 &&
+           increment % scene.checkpoint.interval == 0;
+  }
+
+
+
+  void
+  Simulation::stop_on_signal(const int          signal,
+                             const unsigned int increment,
+                             const unsigned int n_total,
+                             const double       t,
+                             const bool         last)
+  {
+    // (the state of this increment is in a checkpoint: the periodic one,
+    // or one written now)
+    if (!checkpoint_due(increment))
+      write_checkpoint(increment);
+    output->write_interrupted_state(increment, t, last);
+    write_summary_file("stopped by " + interruption::signal_name(signal) +
+                       " after increment " + std::to_string(increment) +
+                       " of " + std::to_string(n_total) +
+                       "; continue with --restart\n");
+    throw RunInterrupted(
+      interruption::signal_name(signal) +
+      " received: stopped after increment " + std::to_string(increment) +
+      " of " + std::to_string(n_total) + " (t = " + std::to_string(t) +
+      "), its state in " + checkpoint_file());
   }
 
 

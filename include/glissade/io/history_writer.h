@@ -83,6 +83,58 @@ namespace glissade
     }
 
   private:
+    /**
+     * One item of Output/History, "kind(arguments)": its columns and their
+     * evaluator; an InputError naming `entry` if it cannot be read or
+     * names what the scene does not have.
+     */
+    void
+    add_item(const std::string                               &item,
+             const std::vector<std::unique_ptr<Body>>        &bodies,
+             const std::vector<std::unique_ptr<ContactPair>> &pairs,
+             const EnergyAccount                             *energies,
+             const std::string                               &entry);
+
+    /** energies(): those of a dynamic scheme, a column each. */
+    void
+    add_energies(const EnergyAccount *energies,
+                 const std::string   &item,
+                 const std::string   &entry);
+
+    /** contact_force(pair): its total force and active nodes. */
+    void
+    add_contact_force(const ContactPair &pair, const std::string &name);
+
+    /** contact_node(pair, point(x, y)): the reaction and gap of a node. */
+    void
+    add_contact_node(const ContactPair &pair,
+                     const std::string &name,
+                     const std::string &location,
+                     const std::string &item,
+                     const std::string &entry);
+
+    /** momentum(body), of a dynamic scheme. */
+    void
+    add_momentum(const Body        &body,
+                 const std::string &name,
+                 const std::string &item,
+                 const std::string &entry);
+
+    /** displacement(body, point(x, y)), of a vertex. */
+    void
+    add_displacement(const Body        &body,
+                     const std::string &name,
+                     const std::string &location,
+                     const std::string &item,
+                     const std::string &entry);
+
+    /** reaction(body, boundary). */
+    void
+    add_reaction(const Body        &body,
+                 const std::string &name,
+                 const std::string &where,
+                 const std::string &entry);
+
     std::string                                             filename;
     std::vector<std::string>                                columns;
     std::vector<std::function<void(std::vector<double> &)>> evaluators;

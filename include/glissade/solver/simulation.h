@@ -122,6 +122,41 @@ namespace glissade
     bool
     newton(const double t_start, const double t);
 
+    /**
+     * Every body's residual and tangent, one task per body: the residual's
+     * norm over all bodies and the largest force scale; false if an
+     * assembly met an inadmissible state (an inverted element).
+     */
+    bool
+    assemble_bodies(double &residual, double &scale);
+
+    /** What made an assembly fail, for failure_cause. */
+    std::string
+    assembly_failure() const;
+
+    /**
+     * The contact-free step du of every body that the contact step does
+     * not solve (factorising its tangent unless previous_tangent); false,
+     * with failure_cause, if a tangent cannot be factorised.
+     */
+    bool
+    predict(const bool                           previous_tangent,
+            std::vector<dealii::Vector<double>> &du);
+
+    /** Applies du to every body: the norms of du and of the displacement. */
+    void
+    update_bodies(const std::vector<dealii::Vector<double>> &du,
+                  double                                    &increment_norm,
+                  double                                    &displacement_norm);
+
+    /** A Newton iteration's lines of the debug log. */
+    void
+    log_iteration(const unsigned int                         iteration,
+                  const double                               scaled_residual,
+                  const std::vector<dealii::Vector<double>> &du,
+                  const double                               increment_norm,
+                  const double displacement_norm) const;
+
     bool
     advance(const double t_start, const double t_end, const unsigned int depth);
 
@@ -132,6 +167,37 @@ namespace glissade
      */
     void
     write_last_converged_state(const unsigned int increment);
+
+    /**
+     * The state a run starts from: the initial state (recorded and
+     * written), or with `restart` the checkpoint's; returns the increment
+     * it is the state after.
+     */
+    unsigned int
+    begin_run(const bool restart);
+
+    /** An increment's progress line; `remaining`: the time left. */
+    void
+    report_increment(const unsigned int increment,
+                     const unsigned int n_total,
+                     const double       t,
+                     const unsigned int iterations,
+                     const std::string &remaining) const;
+
+    /** Whether Checkpoint/Interval asks for a checkpoint after increment. */
+    bool
+    checkpoint_due(const unsigned int increment) const;
+
+    /**
+     * A stop on SIGINT or SIGTERM after increment (of n_total, at t): its
+     * checkpoint, its output and summary, then RunInterrupted.
+     */
+    [[noreturn]] void
+    stop_on_signal(const int          signal,
+                   const unsigned int increment,
+                   const unsigned int n_total,
+                   const double       t,
+                   const bool         last);
 
     /** summary.txt: the summary line, the timing table, and `ending`. */
     void

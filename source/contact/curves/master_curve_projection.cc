@@ -205,6 +205,22 @@ namespace glissade
                                                 double(k + 1) / n_intervals,
                                                 f[k + 1]));
     }
+
+    // The tangent at a convex corner: that of the average of the two
+    // adjacent normals (of the outgoing normal if they cancel).
+    Point
+    corner_tangent(const Point &incoming_tangent, const Point &outgoing_tangent)
+    {
+      const Point  n_in   = rotate_left(incoming_tangent);
+      const Point  n_out  = rotate_left(outgoing_tangent);
+      Point        n      = {{n_in[0] + n_out[0], n_in[1] + n_out[1]}};
+      const double length = norm(n);
+      if (length > 1e-12)
+        n = {{n[0] / length, n[1] / length}};
+      else
+        n = n_out;
+      return rotate_right(n);
+    }
   } // namespace
 
 
@@ -250,9 +266,8 @@ namespace glissade
   MasterCurve::Projection
   MasterCurve::project(const Point &x) const
   {
-    Projection result;
     if (n_segments() == 0 || !std::isfinite(x[0]) || !std::isfinite(x[1]))
-      return result;
+      return Projection();
 
     // Deterministic order on candidates: a segment end s = 1 is the same
     // point as s = 0 of the next segment, so compare in that form.
@@ -271,9 +286,6 @@ namespace glissade
       if (a.stationary != b.stationary)
         return a.stationary;
       return canonical_key(a) < canonical_key(b);
-    };
-    const auto node_of = [this](const Candidate &c) {
-      return segment_nodes(c.segment)[c.s == 0. ? 0 : 1];
     };
 
     std::vector<unsigned int> searched;
@@ -329,43 +341,23 @@ namespace glissade
     const auto is_orthogonal = [&](const Candidate &c) {
       if (c.s != 0. && c.s != 1.)
         return true;
-      const NodeCase node = classify_node(node_of(c), x);
+      const NodeCase node =
+        classify_node(segment_nodes(c.segment)[c.s == 0. ? 0 : 1], x);
       return node.orthogonal_to_outgoing || node.orthogonal_to_incoming;
     };
     if (global_search || !is_orthogonal(best))
       {
-        // Distance from x to each box, compared squared (no hypot in this
-        // O(N) loop). The segments that may hold a closer point are searched
-        // nearest box first, so that the best distance drops quickly and
-        // prunes the rest.
+        // The segments that may hold a closer point are searched nearest
+        // box first, so that the best distance drops quickly and prunes
+        // the rest. (Distances compared squared: no hypot in the O(N) box
+        // loop.)
         const auto reach_squared = [&]() {
           const double reach =
             best.distance + 1e-13 * (scale + 2. * best.distance);
           return reach * reach;
         };
-        const bool cached = (segment_boxes.size() == n_segments());
-        std::vector<std::pair<double, unsigned int>> close_boxes;
-        double                                       reach2 = reach_squared();
-        Point                                        low, high;
-        for (unsigned int segment = 0; segment < n_segments(); ++segment)
-          {
-            if (cached)
-              {
-                low  = segment_boxes[segment][0];
-                high = segment_boxes[segment][1];
-              }
-            else
-              bounding_box(segment, low, high);
-            const double dx =
-              std::max(std::max(low[0] - x[0], x[0] - high[0]), 0.);
-            const double dy =
-              std::max(std::max(low[1] - x[1], x[1] - high[1]), 0.);
-            const double box_distance2 = dx * dx + dy * dy;
-            if (box_distance2 <= reach2 && !was_searched(segment))
-              close_boxes.emplace_back(box_distance2, segment);
-          }
-        std::sort(close_boxes.begin(), close_boxes.end());
-        for (const auto &[box_distance2, segment] : close_boxes)
+        for (const auto &[box_distance2, segment] :
+             boxes_within(x, reach_squared(), searched))
           {
             if (box_distance2 > reach_squared())
               break;
@@ -373,17 +365,61 @@ namespace glissade
           }
       }
 
-    // Steps 5 and 7: fill in the result; at a node decide between an
-    // orthogonal projection, a corner and an open end.
-    result.valid             = true;
-    result.segment           = best.segment;
-    result.s                 = best.s;
-    result.newton_iterations = best.iterations;
+    return projection_from(best.segment, best.s, best.iterations, x);
+  }
 
-    Point tangent;
-    if (best.s == 0. || best.s == 1.)
+
+
+  std::vector<std::pair<double, unsigned int>>
+  MasterCurve::boxes_within(const Point                     &x,
+                            const double                     reach2,
+                            const std::vector<unsigned int> &searched) const
+  {
+    const bool cached = (segment_boxes.size() == n_segments());
+    std::vector<std::pair<double, unsigned int>> close_boxes;
+    Point                                        low, high;
+    for (unsigned int segment = 0; segment < n_segments(); ++segment)
       {
-        const NodeCase node = classify_node(node_of(best), x);
+        if (cached)
+          {
+            low  = segment_boxes[segment][0];
+            high = segment_boxes[segment][1];
+          }
+        else
+          bounding_box(segment, low, high);
+        const double dx = std::max(std::max(low[0] - x[0], x[0] - high[0]), 0.);
+        const double dy = std::max(std::max(low[1] - x[1], x[1] - high[1]), 0.);
+        const double box_distance2 = dx * dx + dy * dy;
+        if (box_distance2 <= reach2 &&
+            std::find(searched.begin(), searched.end(), segment) ==
+              searched.end())
+          close_boxes.emplace_back(box_distance2, segment);
+      }
+    std::sort(close_boxes.begin(), close_boxes.end());
+    return close_boxes;
+  }
+
+
+
+  MasterCurve::Projection
+  MasterCurve::projection_from(const unsigned int segment,
+                               const double       s,
+                               const unsigned int newton_iterations,
+                               const Point       &x) const
+  {
+    Projection result;
+    result.valid             = true;
+    result.segment           = segment;
+    result.s                 = s;
+    result.newton_iterations = newton_iterations;
+
+    // At a node: an orthogonal projection on one of its segments (the
+    // outgoing first), a convex corner, or an open end.
+    Point tangent;
+    if (s == 0. || s == 1.)
+      {
+        const NodeCase node =
+          classify_node(segment_nodes(segment)[s == 0. ? 0 : 1], x);
         if (node.has_outgoing && node.orthogonal_to_outgoing)
           {
             result.segment = node.outgoing;
@@ -398,19 +434,11 @@ namespace glissade
           }
         else if (node.has_outgoing && node.has_incoming)
           {
-            // Convex corner: the average of the two adjacent normals.
-            result.on_vertex    = true;
-            result.segment      = node.outgoing;
-            result.s            = 0.;
-            const Point  n_in   = rotate_left(node.incoming_tangent);
-            const Point  n_out  = rotate_left(node.outgoing_tangent);
-            Point        n      = {{n_in[0] + n_out[0], n_in[1] + n_out[1]}};
-            const double length = norm(n);
-            if (length > 1e-12)
-              n = {{n[0] / length, n[1] / length}};
-            else
-              n = n_out;
-            tangent = rotate_right(n);
+            result.on_vertex = true;
+            result.segment   = node.outgoing;
+            result.s         = 0.;
+            tangent =
+              corner_tangent(node.incoming_tangent, node.outgoing_tangent);
           }
         else
           {
@@ -422,11 +450,11 @@ namespace glissade
             tangent =
               node.has_outgoing ? node.outgoing_tangent : node.incoming_tangent;
           }
-        if (result.segment != best.segment)
+        if (result.segment != segment)
           result.newton_iterations = 0;
       }
     else
-      tangent = unit_tangent(best.segment, best.s);
+      tangent = unit_tangent(segment, s);
 
     result.point    = value(result.segment, result.s);
     result.tangent  = tangent;

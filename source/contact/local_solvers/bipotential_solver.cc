@@ -242,6 +242,365 @@ namespace glissade
             }
       return problem.str();
     }
+
+    // The nodes whose normal compliance is zero, negative, or round-off
+    // below the largest one: a gap that no reaction can change (both
+    // bodies rigid at the node), which no iteration can solve.
+    std::vector<unsigned int>
+    singular_nodes_of(const ComplianceMatrix &W,
+                      const double            max_normal_compliance)
+    {
+      std::vector<unsigned int> singular;
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        {
+          const double w_nn = W.normal_compliance(k);
+          if (!(w_nn > singular_fraction * max_normal_compliance) || w_nn <= 0.)
+            singular.push_back(k);
+        }
+      return singular;
+    }
+
+    std::string
+    singular_nodes_message(const std::vector<unsigned int> &singular)
+    {
+      std::ostringstream message;
+      message << "BiPotentialSolver: " << singular.size()
+              << " node(s) with W_kk[n][n] <= 0 (or below 1e-14 of the "
+                 "largest), i.e. a gap that no reaction can change (both "
+                 "bodies rigid at the node?): ";
+      for (std::size_t i = 0; i < singular.size() && i < 10; ++i)
+        message << singular[i] << ' ';
+      if (singular.size() > 10)
+        message << "...";
+      return message.str();
+    }
+
+    // rho_k of each node (BiPotentialSolver::RhoChoice): beta over the
+    // normal compliance, or over the largest eigenvalue of W_kk for a
+    // node with friction if the settings ask for the safe choice.
+    std::vector<double>
+    step_lengths(const BiPotentialSolver::Settings &settings,
+                 const ComplianceMatrix            &W,
+                 const std::vector<double>         &mu)
+    {
+      std::vector<double> rho(W.n_nodes());
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        {
+          const ComplianceMatrix::Block w_kk = W.diagonal_block(k);
+          const bool                    use_largest =
+            settings.rho_choice ==
+              BiPotentialSolver::RhoChoice::largest_diagonal_compliance &&
+            mu[k] > 0.;
+          rho[k] = settings.beta /
+                   (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
+        }
+      return rho;
+    }
+
+    // The new reaction of one node in a Gauss-Seidel sweep, from its
+    // reaction r_k and displacement u_k with the latest reactions of all
+    // the others.
+    Vector2
+    gauss_seidel_update(const Vector2 &r_k,
+                        const Vector2 &u_k,
+                        const double   rho_k,
+                        const double   mu_k)
+    {
+      if (mu_k == 0.)
+        // Frictionless: projected SOR on the normal LCP.
+        return {{0., std::max(0., r_k[n] - rho_k * u_k[n])}};
+      // Bi-potential step: the normal argument is the modified gap
+      // g + mu |u_t|, which couples Signorini and Coulomb so that a single
+      // projection on K_mu enforces both.
+      const Vector2 trial = {
+        {r_k[t] - rho_k * u_k[t],
+         r_k[n] - rho_k * (u_k[n] + mu_k * std::abs(u_k[t]))}};
+      return BiPotentialSolver::project_on_coulomb_cone(trial, mu_k);
+    }
+
+    // When to polish. Gauss-Seidel finds the statuses (open, stick, slip)
+    // long before the values; once they have not changed for a few sweeps,
+    // the law is linear and can be solved directly. The watch counts the
+    // sweeps over which the statuses stayed the same, and says when that
+    // count first reaches 5, then 20, 80, ... (a polish that failed is not
+    // repeated at every sweep while nothing changes).
+    class StatusWatch
+    {
+    public:
+      explicit StatusWatch(const unsigned int n_nodes)
+        : statuses(n_nodes)
+      {}
+
+      // Called once per sweep with its reactions: true if the statuses have
+      // now been unchanged for the number of sweeps after which to polish.
+      bool
+      settled(const std::vector<Vector2> &r, const std::vector<double> &mu)
+      {
+        for (unsigned int k = 0; k < statuses.size(); ++k)
+          statuses[k] = BiPotentialSolver::classify(r[k], mu[k]);
+        if (statuses == previous_statuses)
+          ++stable_sweeps;
+        else
+          {
+            stable_sweeps     = 0;
+            polish_after      = first_polish_after_stable_sweeps;
+            previous_statuses = statuses;
+          }
+        const bool result = stable_sweeps == polish_after;
+        if (result)
+          polish_after *= 4;
+        return result;
+      }
+
+    private:
+      std::vector<NodeStatus> statuses, previous_statuses;
+      unsigned int            stable_sweeps = 0;
+      unsigned int            polish_after  = first_polish_after_stable_sweeps;
+    };
+
+    // The iterate of BiPotentialSolver::solve(): the reactions r and the
+    // displacements u = u_free + W r, with the problem they belong to. u
+    // is kept up to date incrementally as r changes (one column of W per
+    // changed node) and recomputed from scratch where it must be exact;
+    // u_is_exact says whether it has been since r last changed.
+    class GaussSeidelIterate
+    {
+    public:
+      GaussSeidelIterate(const BiPotentialSolver::Settings &settings,
+                         const ComplianceMatrix            &W,
+                         const std::vector<Vector2>        &u_free,
+                         const std::vector<double>         &mu,
+                         const std::vector<double>         &rho,
+                         const double                       scale,
+                         const double                       free_length,
+                         std::vector<Vector2>              &r)
+        : settings(settings)
+        , W(W)
+        , u_free(u_free)
+        , mu(mu)
+        , rho(rho)
+        , scale(scale)
+        , free_length(free_length)
+        , r(r)
+      {
+        compute_displacement(W, u_free, r, u);
+      }
+
+      // One sweep over the nodes in order, each reaction replaced with the
+      // latest ones of all other nodes; returns the largest change of a
+      // node's reaction. A node whose reaction does not change costs O(1).
+      double
+      sweep();
+
+      // u from scratch, so that the round-off of the incremental updates
+      // cannot pile up.
+      void
+      refresh();
+
+      // The bound on the residuals for reactions as large as max_reaction.
+      double
+      residual_bound(const double max_reaction) const;
+
+      // Whether the iterate satisfies the law to the bound (u exact).
+      bool
+      satisfies_law(const double bound) const;
+
+      // The polish: the linear law of the iterate's statuses solved
+      // directly. Gauss-Seidel finds the statuses long before the values,
+      // the more so when W is ill-conditioned (a stiff slave on a soft
+      // master: the reactions of neighbouring nodes trade off along an
+      // almost null direction of W). If its answer satisfies the law, it
+      // becomes the iterate, `bound` is set and the result is true;
+      // otherwise it may give Gauss-Seidel a new start (restart_from()).
+      bool
+      polish_solves(double &bound);
+
+      // u of the returned reactions, exact.
+      std::vector<Vector2> &
+      exact_displacement();
+
+      // After a divergence: r is set back by the caller, so u no longer
+      // belongs to it.
+      void
+      reactions_replaced();
+
+    private:
+      // A polish that is not the answer yet (some statuses were wrong) has
+      // the right values on the nodes whose statuses were. Projected on the
+      // admissible cones it is a new starting point for Gauss-Seidel: taken
+      // if it satisfies the law better than the iterate, a bounded number
+      // of times, so that a W that is not positive semi-definite still
+      // shows its divergence.
+      void
+      restart_from(const std::vector<Vector2> &candidate);
+
+      // How far (u, r) is from the law: the sum of its two residuals.
+      double
+      merit(const std::vector<Vector2> &uu,
+            const std::vector<Vector2> &rr) const;
+
+      const BiPotentialSolver::Settings &settings;
+      const ComplianceMatrix            &W;
+      const std::vector<Vector2>        &u_free;
+      const std::vector<double>         &mu;
+      const std::vector<double>         &rho;
+      const double                       scale;
+      const double                       free_length;
+      std::vector<Vector2>              &r;
+      std::vector<Vector2>               u;
+      bool                               u_is_exact = true;
+      unsigned int                       restarts   = 0;
+    };
+
+    double
+    GaussSeidelIterate::sweep()
+    {
+      double max_change = 0.;
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        {
+          const Vector2 new_r = gauss_seidel_update(r[k], u[k], rho[k], mu[k]);
+          const Vector2 delta = {{new_r[t] - r[k][t], new_r[n] - r[k][n]}};
+          if (delta[t] != 0. || delta[n] != 0.)
+            {
+              r[k] = new_r;
+              W.add_column_product(k, delta, u);
+              u_is_exact = false;
+              max_change = std::max(max_change, norm(delta));
+            }
+        }
+      return max_change;
+    }
+
+    void
+    GaussSeidelIterate::refresh()
+    {
+      compute_displacement(W, u_free, r, u);
+      u_is_exact = true;
+    }
+
+    double
+    GaussSeidelIterate::residual_bound(const double max_reaction) const
+    {
+      return settings.residual_tolerance *
+             std::max(free_length, scale * max_reaction);
+    }
+
+    bool
+    GaussSeidelIterate::satisfies_law(const double bound) const
+    {
+      const Residuals residuals = residuals_of(u, r, mu, scale);
+      return residuals.complementarity <= bound && residuals.friction <= bound;
+    }
+
+    bool
+    GaussSeidelIterate::polish_solves(double &bound)
+    {
+      std::vector<Vector2> candidate, candidate_u;
+      if (!polish(W, u_free, mu, r, candidate))
+        return false;
+      compute_displacement(W, u_free, candidate, candidate_u);
+      const double    candidate_bound = residual_bound(max_norm(candidate));
+      const Residuals residuals =
+        residuals_of(candidate_u, candidate, mu, scale);
+      if (residuals.complementarity <= candidate_bound &&
+          residuals.friction <= candidate_bound &&
+          residuals.max_cone_violation <= candidate_bound)
+        {
+          r          = std::move(candidate);
+          u          = std::move(candidate_u);
+          u_is_exact = true;
+          bound      = candidate_bound;
+          return true;
+        }
+      restart_from(candidate);
+      return false;
+    }
+
+    std::vector<Vector2> &
+    GaussSeidelIterate::exact_displacement()
+    {
+      if (!u_is_exact)
+        refresh();
+      return u;
+    }
+
+    void
+    GaussSeidelIterate::reactions_replaced()
+    {
+      u_is_exact = false;
+    }
+
+    void
+    GaussSeidelIterate::restart_from(const std::vector<Vector2> &candidate)
+    {
+      if (restarts >= max_polish_restarts)
+        return;
+      std::vector<Vector2> projected(W.n_nodes()), projected_u;
+      for (unsigned int k = 0; k < W.n_nodes(); ++k)
+        projected[k] =
+          mu[k] == 0. ?
+            Vector2{{0., std::max(0., candidate[k][n])}} :
+            BiPotentialSolver::project_on_coulomb_cone(candidate[k], mu[k]);
+      compute_displacement(W, u_free, projected, projected_u);
+      if (!u_is_exact)
+        refresh();
+      if (merit(projected_u, projected) < merit(u, r))
+        {
+          r = std::move(projected);
+          u = std::move(projected_u);
+          ++restarts;
+        }
+    }
+
+    double
+    GaussSeidelIterate::merit(const std::vector<Vector2> &uu,
+                              const std::vector<Vector2> &rr) const
+    {
+      const Residuals e = residuals_of(uu, rr, mu, scale);
+      return e.complementarity + e.friction;
+    }
+
+    // The sentence for the log on the outcome of a solve, from its result
+    // (residuals included). Not converged with friction, it names the usual
+    // culprit: a tangential step that cannot contract (see
+    // RhoChoice::normal_compliance).
+    std::string
+    outcome_message(const BiPotentialSolver::Result &result,
+                    const ComplianceMatrix          &W,
+                    const std::vector<double>       &mu,
+                    const std::vector<double>       &rho)
+    {
+      std::ostringstream message;
+      if (result.outcome == Outcome::diverged)
+        message << "BiPotentialSolver: the iteration diverged at sweep "
+                << result.sweeps
+                << "; the starting reactions are returned. Is W positive "
+                   "semi-definite? With friction, try a smaller beta or "
+                   "RhoChoice::largest_diagonal_compliance.";
+      if (result.outcome == Outcome::converged)
+        message << "BiPotentialSolver: converged in " << result.sweeps
+                << " sweeps" << (result.polished ? " (active-set polish)" : "");
+      else if (result.outcome == Outcome::max_sweeps_reached)
+        {
+          message << "BiPotentialSolver: not converged after " << result.sweeps
+                  << " sweeps (last change " << result.last_reaction_change
+                  << ", bound " << result.reaction_change_bound << ")";
+          unsigned int n_overshooting = 0;
+          for (unsigned int k = 0; k < W.n_nodes(); ++k)
+            if (mu[k] > 0. && rho[k] * W.diagonal_block(k)[t][t] >= 2.)
+              ++n_overshooting;
+          if (n_overshooting > 0)
+            message << "; " << n_overshooting
+                    << " friction node(s) have rho W_tt >= 2, so their stick "
+                       "iteration cannot contract: use a smaller beta or "
+                       "RhoChoice::largest_diagonal_compliance";
+        }
+      if (result.outcome != Outcome::diverged)
+        message << "; complementarity " << result.residuals.complementarity
+                << ", friction " << result.residuals.friction << " (bound "
+                << result.residual_bound << ")";
+      return message.str();
+    }
   } // namespace
 
   BiPotentialSolver::BiPotentialSolver()
@@ -368,46 +727,21 @@ namespace glissade
         result.message = "BiPotentialSolver: invalid input: " + problem;
         return result;
       }
-
     const double max_normal_compliance = natural_scale(W);
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      {
-        const double w_nn = W.normal_compliance(k);
-        if (!(w_nn > singular_fraction * max_normal_compliance) || w_nn <= 0.)
-          result.singular_nodes.push_back(k);
-      }
+    result.singular_nodes = singular_nodes_of(W, max_normal_compliance);
     if (!result.singular_nodes.empty())
       {
-        std::ostringstream message;
-        message << "BiPotentialSolver: " << result.singular_nodes.size()
-                << " node(s) with W_kk[n][n] <= 0 (or below 1e-14 of the "
-                   "largest), i.e. a gap that no reaction can change (both "
-                   "bodies rigid at the node?): ";
-        for (std::size_t i = 0; i < result.singular_nodes.size() && i < 10; ++i)
-          message << result.singular_nodes[i] << ' ';
-        if (result.singular_nodes.size() > 10)
-          message << "...";
         result.outcome = Outcome::singular_node;
-        result.message = message.str();
+        result.message = singular_nodes_message(result.singular_nodes);
         return result;
       }
 
     // 2. Scales and step lengths.
-    const double scale           = settings.force_to_length_scale > 0. ?
-                                     settings.force_to_length_scale :
-                                     max_normal_compliance;
-    result.force_to_length_scale = scale;
-
-    std::vector<double> rho(n_nodes);
-    for (unsigned int k = 0; k < n_nodes; ++k)
-      {
-        const ComplianceMatrix::Block w_kk = W.diagonal_block(k);
-        const bool                    use_largest =
-          settings.rho_choice == RhoChoice::largest_diagonal_compliance &&
-          mu[k] > 0.;
-        rho[k] =
-          settings.beta / (use_largest ? largest_eigenvalue(w_kk) : w_kk[n][n]);
-      }
+    const double scale            = settings.force_to_length_scale > 0. ?
+                                      settings.force_to_length_scale :
+                                      max_normal_compliance;
+    result.force_to_length_scale  = scale;
+    const std::vector<double> rho = step_lengths(settings, W, mu);
 
     const std::vector<Vector2> initial_r =
       r.empty() ? std::vector<Vector2>(n_nodes, Vector2{{0., 0.}}) : r;
@@ -420,63 +754,18 @@ namespace glissade
     const double force_reference = std::max(
       {free_length / scale, settings.reaction_floor, max_norm(initial_r)});
 
-    std::vector<Vector2> u;
-    compute_displacement(W, u_free, r, u);
-
-    // 3. Gauss-Seidel sweeps. Gauss-Seidel finds the statuses (open,
-    // stick, slip) long before the values; once they have not changed for
-    // a few sweeps, the law is linear and is solved directly (the polish).
-    bool                    u_is_exact = true;
-    std::vector<NodeStatus> statuses(n_nodes), previous_statuses;
-    unsigned int            stable_sweeps = 0;
-    unsigned int            polish_after  = first_polish_after_stable_sweeps;
-    unsigned int            restarts      = 0;
-    result.outcome                        = Outcome::max_sweeps_reached;
+    // 3. Gauss-Seidel sweeps, until the change of r is small and the law
+    // holds; once the statuses have settled, or every polish_period sweeps,
+    // the law of the iterate's statuses is solved directly (the polish).
+    GaussSeidelIterate iterate(
+      settings, W, u_free, mu, rho, scale, free_length, r);
+    StatusWatch watch(n_nodes);
+    result.outcome = Outcome::max_sweeps_reached;
     for (unsigned int sweep = 1; sweep <= settings.max_sweeps; ++sweep)
       {
-        result.sweeps     = sweep;
-        double max_change = 0.;
-        for (unsigned int k = 0; k < n_nodes; ++k)
-          {
-            const Vector2 &u_k = u[k];
-            Vector2        new_r;
-            if (mu[k] == 0.)
-              // Frictionless: projected SOR on the normal LCP.
-              new_r = {{0., std::max(0., r[k][n] - rho[k] * u_k[n])}};
-            else
-              {
-                // Bi-potential step: the normal argument is the modified
-                // gap g + mu |u_t|, which couples Signorini and Coulomb so
-                // that a single projection on K_mu enforces both.
-                const Vector2 trial = {
-                  {r[k][t] - rho[k] * u_k[t],
-                   r[k][n] - rho[k] * (u_k[n] + mu[k] * std::abs(u_k[t]))}};
-                new_r = project_on_coulomb_cone(trial, mu[k]);
-              }
-
-            const Vector2 delta = {{new_r[t] - r[k][t], new_r[n] - r[k][n]}};
-            if (delta[t] != 0. || delta[n] != 0.)
-              {
-                r[k] = new_r;
-                W.add_column_product(k, delta, u);
-                u_is_exact = false;
-                max_change = std::max(max_change, norm(delta));
-              }
-          }
-
-        for (unsigned int k = 0; k < n_nodes; ++k)
-          statuses[k] = classify(r[k], mu[k]);
-        if (statuses == previous_statuses)
-          ++stable_sweeps;
-        else
-          {
-            stable_sweeps     = 0;
-            polish_after      = first_polish_after_stable_sweeps;
-            previous_statuses = statuses;
-          }
-        const bool statuses_settled = stable_sweeps == polish_after;
-        if (statuses_settled)
-          polish_after *= 4;
+        result.sweeps                 = sweep;
+        const double max_change       = iterate.sweep();
+        const bool   statuses_settled = watch.settled(r, mu);
 
         const double max_reaction   = max_norm(r);
         result.last_reaction_change = max_change;
@@ -492,17 +781,11 @@ namespace glissade
           std::max(max_reaction, settings.reaction_floor);
         const bool small_change = max_change <= result.reaction_change_bound;
         if (small_change || sweep % refresh_period == 0)
-          {
-            compute_displacement(W, u_free, r, u);
-            u_is_exact = true;
-          }
+          iterate.refresh();
         if (small_change)
           {
-            result.residual_bound = settings.residual_tolerance *
-                                    std::max(free_length, scale * max_reaction);
-            const Residuals residuals = residuals_of(u, r, mu, scale);
-            if (residuals.complementarity <= result.residual_bound &&
-                residuals.friction <= result.residual_bound)
+            result.residual_bound = iterate.residual_bound(max_reaction);
+            if (iterate.satisfies_law(result.residual_bound))
               {
                 result.outcome = Outcome::converged;
                 break;
@@ -512,119 +795,37 @@ namespace glissade
                  (statuses_settled || sweep % settings.polish_period == 0 ||
                   sweep == settings.max_sweeps))
           {
-            // Gauss-Seidel finds the statuses long before the values, the
-            // more so when W is ill-conditioned (a stiff slave on a soft
-            // master: the reactions of neighbouring nodes trade off along an
-            // almost null direction of W). With the statuses fixed the law is
-            // linear: solve it, and keep the answer if it satisfies the law.
-            std::vector<Vector2> candidate, candidate_u;
-            if (polish(W, u_free, mu, r, candidate))
+            double bound = 0.;
+            if (iterate.polish_solves(bound))
               {
-                compute_displacement(W, u_free, candidate, candidate_u);
-                const double bound =
-                  settings.residual_tolerance *
-                  std::max(free_length, scale * max_norm(candidate));
-                const Residuals residuals =
-                  residuals_of(candidate_u, candidate, mu, scale);
-                if (residuals.complementarity <= bound &&
-                    residuals.friction <= bound &&
-                    residuals.max_cone_violation <= bound)
-                  {
-                    r                     = std::move(candidate);
-                    u                     = std::move(candidate_u);
-                    u_is_exact            = true;
-                    result.residual_bound = bound;
-                    result.polished       = true;
-                    result.outcome        = Outcome::converged;
-                    break;
-                  }
-                // Not the answer yet (some statuses were wrong), but the
-                // right values on the nodes whose statuses were. Projected
-                // on the admissible cones it is a new starting point for
-                // Gauss-Seidel: taken if it satisfies the law better than
-                // the iterate, a bounded number of times, so that a W that
-                // is not positive semi-definite still shows its divergence.
-                if (restarts < max_polish_restarts)
-                  {
-                    std::vector<Vector2> projected(n_nodes), projected_u;
-                    for (unsigned int k = 0; k < n_nodes; ++k)
-                      projected[k] =
-                        mu[k] == 0. ?
-                          Vector2{{0., std::max(0., candidate[k][n])}} :
-                          project_on_coulomb_cone(candidate[k], mu[k]);
-                    compute_displacement(W, u_free, projected, projected_u);
-                    if (!u_is_exact)
-                      {
-                        compute_displacement(W, u_free, r, u);
-                        u_is_exact = true;
-                      }
-                    const auto merit = [&](const std::vector<Vector2> &uu,
-                                           const std::vector<Vector2> &rr) {
-                      const Residuals e = residuals_of(uu, rr, mu, scale);
-                      return e.complementarity + e.friction;
-                    };
-                    if (merit(projected_u, projected) < merit(u, r))
-                      {
-                        r = std::move(projected);
-                        u = std::move(projected_u);
-                        ++restarts;
-                      }
-                  }
+                result.residual_bound = bound;
+                result.polished       = true;
+                result.outcome        = Outcome::converged;
+                break;
               }
           }
       }
 
     // 4. Report on exactly what is returned.
-    std::ostringstream message;
     if (result.outcome == Outcome::diverged)
       {
-        r          = initial_r;
-        u_is_exact = false;
-        message << "BiPotentialSolver: the iteration diverged at sweep "
-                << result.sweeps
-                << "; the starting reactions are returned. Is W positive "
-                   "semi-definite? With friction, try a smaller beta or "
-                   "RhoChoice::largest_diagonal_compliance.";
+        r = initial_r;
+        iterate.reactions_replaced();
       }
-    if (!u_is_exact)
-      compute_displacement(W, u_free, r, u);
-    result.residuals = residuals_of(u, r, mu, scale);
+    std::vector<Vector2> &u = iterate.exact_displacement();
+    result.residuals        = residuals_of(u, r, mu, scale);
     if (result.residual_bound == 0.)
-      result.residual_bound = settings.residual_tolerance *
-                              std::max(free_length, scale * max_norm(r));
+      result.residual_bound = iterate.residual_bound(max_norm(r));
     result.converged    = result.outcome == Outcome::converged;
     result.displacement = std::move(u);
     result.status.resize(n_nodes);
     for (unsigned int k = 0; k < n_nodes; ++k)
       result.status[k] = classify(r[k], mu[k]);
-
-    if (result.outcome == Outcome::converged)
-      message << "BiPotentialSolver: converged in " << result.sweeps
-              << " sweeps" << (result.polished ? " (active-set polish)" : "");
-    else if (result.outcome == Outcome::max_sweeps_reached)
-      {
-        message << "BiPotentialSolver: not converged after " << result.sweeps
-                << " sweeps (last change " << result.last_reaction_change
-                << ", bound " << result.reaction_change_bound << ")";
-        // The usual culprit with friction: a tangential step that cannot
-        // contract (see RhoChoice::normal_compliance).
-        unsigned int n_overshooting = 0;
-        for (unsigned int k = 0; k < n_nodes; ++k)
-          if (mu[k] > 0. && rho[k] * W.diagonal_block(k)[t][t] >= 2.)
-            ++n_overshooting;
-        if (n_overshooting > 0)
-          message << "; " << n_overshooting
-                  << " friction node(s) have rho W_tt >= 2, so their stick "
-                     "iteration cannot contract: use a smaller beta or "
-                     "RhoChoice::largest_diagonal_compliance";
-      }
-    if (result.outcome != Outcome::diverged)
-      message << "; complementarity " << result.residuals.complementarity
-              << ", friction " << result.residuals.friction << " (bound "
-              << result.residual_bound << ")";
-    result.message = message.str();
+    result.message = outcome_message(result, W, mu, rho);
     return result;
   }
+
+
 
   BiPotentialSolver::Residuals
   compute_contact_residuals(const ComplianceMatrix     &W,

@@ -80,6 +80,196 @@ namespace glissade
       for (const auto &e : *v.coefficients)
         u[v.bodies[e.body]](e.dof) += factor * e.value;
     }
+
+    /** An entry of a row or load on one body: local dof index, value. */
+    struct LocalEntry
+    {
+      unsigned int index;
+      double       value;
+    };
+
+    /**
+     * Rows or loads on one body: each that has an entry there, as (its
+     * index among all rows or loads, its entries by local dof index).
+     */
+    using LocalVectors =
+      std::vector<std::pair<std::size_t, std::vector<LocalEntry>>>;
+
+    /**
+     * What the compliance products of one body need: its dofs that the
+     * rows reach and those the loads reach (sorted), the rows and the
+     * loads in those local numbers.
+     */
+    struct BodyProducts
+    {
+      std::vector<types::global_dof_index> row_dofs, column_dofs;
+      LocalVectors                         rows, loads;
+    };
+
+    /**
+     * The part of `vectors` on body b: its dofs there, sorted, into
+     * `dofs`, and the vectors numbered by their position in `dofs`.
+     */
+    void
+    restrict_to_body(const std::vector<PairVector>        &vectors,
+                     const unsigned int                    b,
+                     std::vector<types::global_dof_index> &dofs,
+                     LocalVectors                         &local)
+    {
+      std::map<types::global_dof_index, unsigned int> index;
+      for (const auto &v : vectors)
+        for (const auto &e : *v.coefficients)
+          if (v.bodies[e.body] == b)
+            index.emplace(e.dof, 0);
+      for (auto &[dof, i] : index)
+        {
+          i = dofs.size();
+          dofs.push_back(dof);
+        }
+      for (std::size_t i = 0; i < vectors.size(); ++i)
+        {
+          std::vector<LocalEntry> entries;
+          for (const auto &e : *vectors[i].coefficients)
+            if (vectors[i].bodies[e.body] == b)
+              entries.push_back({index[e.dof], e.value});
+          if (!entries.empty())
+            local.emplace_back(i, std::move(entries));
+        }
+    }
+
+    // Rows C loads, one of two ways. Dense: the rows and loads as dense
+    // matrices, two BLAS products. Sparse: loops over the entries
+    // (add_sparse_products). On a B-spline master every row and load
+    // reaches some 50 nodes (the interpolation's band): at 160 active nodes
+    // the dense way does 3 times the flops and takes 3.5 times less time
+    // (W 0.215 s -> 0.061 s on the peers benchmark's rings at 160 x 16), at
+    // 800 nodes 16 times the flops and 1.3 times less (3.51 s against
+    // 4.44 s per run). On a faceted master a row has 4 entries and the
+    // dense way would do a thousand times the work. A BLAS flop costs about
+    // a thirtieth of one in the loops: dense when it needs fewer than 30
+    // times the flops.
+    bool
+    dense_is_cheaper(const BodyProducts &body)
+    {
+      const std::size_t m         = body.row_dofs.size(),
+                        m_columns = body.column_dofs.size();
+      const std::size_t n_here = body.rows.size(), l_here = body.loads.size();
+      double            sparse_flops = 0.;
+      for (const auto &[j, load] : body.loads)
+        sparse_flops += double(load.size()) * m;
+      for (const auto &[i, row] : body.rows)
+        sparse_flops += double(row.size()) * l_here;
+      const double dense_flops =
+        double(m) * m_columns * l_here + double(n_here) * m * l_here;
+      return dense_flops < 30. * sparse_flops;
+    }
+
+    /** products += rows C loads on one body, by two BLAS products. */
+    void
+    add_dense_products(const BodyProducts        &body,
+                       const std::vector<double> &C,
+                       const std::size_t          n_rows,
+                       std::vector<double>       &products)
+    {
+      const std::size_t m         = body.row_dofs.size(),
+                        m_columns = body.column_dofs.size();
+      const std::size_t   n_here = body.rows.size(), l_here = body.loads.size();
+      std::vector<double> L(m_columns * l_here, 0.), R(n_here * m, 0.);
+      for (std::size_t k = 0; k < l_here; ++k)
+        for (const auto &e : body.loads[k].second)
+          L[e.index + k * m_columns] += e.value;
+      for (std::size_t k = 0; k < n_here; ++k)
+        for (const auto &e : body.rows[k].second)
+          R[k + std::size_t(e.index) * n_here] += e.value;
+      std::vector<double> T(m * l_here), RT(n_here * l_here);
+      const int           im = m, ic = m_columns, il = l_here, ir = n_here;
+      const double        one = 1., zero = 0.;
+      dgemm_("N",
+             "N",
+             &im,
+             &il,
+             &ic,
+             &one,
+             C.data(),
+             &im,
+             L.data(),
+             &ic,
+             &zero,
+             T.data(),
+             &im);
+      dgemm_("N",
+             "N",
+             &ir,
+             &il,
+             &im,
+             &one,
+             R.data(),
+             &ir,
+             T.data(),
+             &im,
+             &zero,
+             RT.data(),
+             &ir);
+      for (std::size_t k = 0; k < l_here; ++k)
+        for (std::size_t r = 0; r < n_here; ++r)
+          products[body.rows[r].first + body.loads[k].first * n_rows] +=
+            RT[r + k * n_here];
+    }
+
+    /**
+     * products += rows C loads on one body, by loops over the entries. T =
+     * C L column by column (each load's entries: axpys down the columns of
+     * C), turned over so that a row of T is contiguous, then each row of the
+     * products = sum_e r_e T(e, :) (axpys along the rows of T). Every inner
+     * loop runs over contiguous memory; gathering T(e) for each row and load
+     * instead took 1.6 times as long (the rings at 800 x 80, B-spline
+     * master). The loads go in blocks, so that T costs 2 m x 256 doubles,
+     * not m x loads.
+     */
+    void
+    add_sparse_products(const BodyProducts        &body,
+                        const std::vector<double> &C,
+                        const std::size_t          n_rows,
+                        std::vector<double>       &products)
+    {
+      const std::size_t m = body.row_dofs.size(), l_here = body.loads.size();
+      constexpr std::size_t block = 256;
+      std::vector<double>   T(m * block), T_rows(m * block), row_product(block);
+      for (std::size_t k0 = 0; k0 < l_here; k0 += block)
+        {
+          const std::size_t width = std::min(block, l_here - k0);
+          std::fill(T.begin(), T.end(), 0.);
+          for (std::size_t k = 0; k < width; ++k)
+            {
+              double *t = &T[k * m];
+              for (const auto &e : body.loads[k0 + k].second)
+                {
+                  const double *column = &C[std::size_t(e.index) * m];
+                  for (std::size_t r = 0; r < m; ++r)
+                    t[r] += e.value * column[r];
+                }
+            }
+          constexpr std::size_t tile = 64;
+          for (std::size_t r0 = 0; r0 < m; r0 += tile)
+            for (std::size_t k1 = 0; k1 < width; k1 += tile)
+              for (std::size_t r = r0; r < std::min(m, r0 + tile); ++r)
+                for (std::size_t k = k1; k < std::min(width, k1 + tile); ++k)
+                  T_rows[r * width + k] = T[k * m + r];
+          for (const auto &[i, row] : body.rows)
+            {
+              std::fill(row_product.begin(), row_product.begin() + width, 0.);
+              for (const auto &e : row)
+                {
+                  const double *t = &T_rows[std::size_t(e.index) * width];
+                  for (std::size_t k = 0; k < width; ++k)
+                    row_product[k] += e.value * t[k];
+                }
+              for (std::size_t k = 0; k < width; ++k)
+                products[i + body.loads[k0 + k].first * n_rows] +=
+                  row_product[k];
+            }
+        }
+    }
   } // namespace
 
 
@@ -94,10 +284,8 @@ namespace glissade
     , n(nodes.size())
     , n_given(nodes.terms.size())
   {
-    // Rows: R (2n), then V (one per term); loads: F (2n), then U. An
-    // augmented direction is a term whose row is the direction's row and
-    // whose load is the same row times -E_k (scaled below, once E_k is
-    // known from the products).
+    // Rows: R (2n), then V (one per term); loads: F (2n), then U, the
+    // augmented directions last (add_augmented_terms()).
     std::vector<PairVector> all_rows(nodes.rows);
     std::vector<PairVector> all_loads(nodes.forces);
     for (const auto &term : nodes.terms)
@@ -105,6 +293,35 @@ namespace glissade
         all_rows.push_back(term.row);
         all_loads.push_back(term.load);
       }
+    add_augmented_terms(augmentation, all_rows, all_loads);
+    const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
+    std::vector<double> P(n_rows * n_loads, 0.);
+    add_compliance_products(all_rows, all_loads, P);
+    const std::vector<double> rows_of_a =
+      scale_augmented_loads(augmentation.factor, n_rows, P);
+
+    // Every row applied to d = du_lib + K^-1 a.
+    std::vector<double> row_of_d(n_rows);
+    for (std::size_t i = 0; i < n_rows; ++i)
+      row_of_d[i] = dot(all_rows[i], predictor) + rows_of_a[i];
+
+    is_regular = solve_woodbury_system(P, n_rows, row_of_d);
+    if (!is_regular)
+      return;
+    form_compliance(P, n_rows);
+    form_free_displacement(P, n_rows, row_of_d);
+  }
+
+
+
+  void
+  CondensedProblem::add_augmented_terms(const Augmentation      &augmentation,
+                                        std::vector<PairVector> &all_rows,
+                                        std::vector<PairVector> &all_loads)
+  {
+    // An augmented direction is a term whose row is the direction's row
+    // and whose load is the same row times -E_k (scaled in
+    // scale_augmented_loads(), once E_k is known from the products).
     for (unsigned int k = 0; k < augmentation.directions.size(); ++k)
       for (unsigned int c = 0; c < 2; ++c)
         if (augmentation.directions[k][c])
@@ -114,14 +331,20 @@ namespace glissade
             all_rows.push_back(nodes.rows[2 * k + c]);
             all_loads.push_back(nodes.rows[2 * k + c]);
           }
-    const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
-    std::vector<double> P(n_rows * n_loads, 0.);
-    add_compliance_products(all_rows, all_loads, P);
+  }
+
+
+
+  std::vector<double>
+  CondensedProblem::scale_augmented_loads(const double         factor,
+                                          const std::size_t    n_rows,
+                                          std::vector<double> &P)
+  {
     const auto product = [&](const std::size_t i,
                              const std::size_t j) -> double & {
       return P[i + j * n_rows];
     };
-    const int size = 2 * n, t = n_given + augmented_row.size();
+    const std::size_t size = 2 * n;
 
     // E_k = factor / (node k's normal compliance through its bodies alone),
     // a scale at which S stays well conditioned.
@@ -130,7 +353,7 @@ namespace glissade
     for (unsigned int k = 0; k < n; ++k)
       {
         const double w = product(2 * k + 1, 2 * k + 1);
-        stiffness[k]   = w > 0. ? augmentation.factor / w : 0.;
+        stiffness[k]   = w > 0. ? factor / w : 0.;
         largest        = std::max(largest, stiffness[k]);
       }
     std::vector<double> rows_of_a(n_rows, 0.);
@@ -146,11 +369,20 @@ namespace glissade
             rows_of_a[i] += value * augmented_gap[j];
           }
       }
+    return rows_of_a;
+  }
 
-    // Every row applied to d = du_lib + K^-1 a.
-    std::vector<double> row_of_d(n_rows);
-    for (std::size_t i = 0; i < n_rows; ++i)
-      row_of_d[i] = dot(all_rows[i], predictor) + rows_of_a[i];
+
+
+  bool
+  CondensedProblem::solve_woodbury_system(const std::vector<double> &P,
+                                          const std::size_t          n_rows,
+                                          const std::vector<double> &row_of_d)
+  {
+    const auto product = [&](const std::size_t i, const std::size_t j) {
+      return P[i + j * n_rows];
+    };
+    const int size = 2 * n, t = n_given + augmented_row.size();
 
     // S = I - V C U, X = S^-1 V C F, y = S^-1 V d.
     S.assign(std::size_t(t) * t, 0.);
@@ -165,40 +397,39 @@ namespace glissade
         X[i + std::size_t(j) * t] = product(size + i, j);
     for (int i = 0; i < t; ++i)
       y[i] = row_of_d[size + i];
-    if (t > 0)
-      {
-        pivots.resize(t);
-        int                 info = 0;
-        std::vector<double> work(4 * t);
-        std::vector<int>    iwork(t);
-        const double norm = dlange_("1", &t, &t, S.data(), &t, work.data());
-        dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
-        // Singular in floating point too: a body that relies on contact
-        // with its springs taken out and the contact not holding it leaves
-        // S singular up to round-off, not exactly.
-        double rcond = 0.;
-        if (info == 0)
-          dgecon_("1",
-                  &t,
-                  S.data(),
-                  &t,
-                  &norm,
-                  &rcond,
-                  work.data(),
-                  iwork.data(),
-                  &info);
-        is_regular = (info == 0 && rcond > 1e-13);
-        if (!is_regular)
-          return;
-        const int one = 1;
-        dgetrs_(
-          "N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
-        dgetrs_(
-          "N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
-      }
+    if (t == 0)
+      return true;
 
-    // W = R C F + (R C U) X (BLAS: the product is the dense part of the
-    // contact tangent's cost) and u_free = u_0 + R d + (R C U) y.
+    pivots.resize(t);
+    int                 info = 0;
+    std::vector<double> work(4 * t);
+    std::vector<int>    iwork(t);
+    const double        norm = dlange_("1", &t, &t, S.data(), &t, work.data());
+    dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
+    // Singular in floating point too: a body that relies on contact with
+    // its springs taken out and the contact not holding it leaves S
+    // singular up to round-off, not exactly.
+    double rcond = 0.;
+    if (info == 0)
+      dgecon_(
+        "1", &t, S.data(), &t, &norm, &rcond, work.data(), iwork.data(), &info);
+    if (!(info == 0 && rcond > 1e-13))
+      return false;
+    const int one = 1;
+    dgetrs_("N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
+    dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
+    return true;
+  }
+
+
+
+  void
+  CondensedProblem::form_compliance(const std::vector<double> &P,
+                                    const std::size_t          n_rows)
+  {
+    // W = R C F + (R C U) X; BLAS: the product is the dense part of the
+    // contact tangent's cost.
+    const int           size = 2 * n, t = n_given + augmented_row.size();
     std::vector<double> W_dense(std::size_t(size) * size);
     for (int j = 0; j < size; ++j)
       std::copy(&P[std::size_t(j) * n_rows],
@@ -233,12 +464,23 @@ namespace glissade
                 W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
           W.set_block(k, l, block);
         }
+  }
+
+
+
+  void
+  CondensedProblem::form_free_displacement(const std::vector<double> &P,
+                                           const std::size_t          n_rows,
+                                           const std::vector<double> &row_of_d)
+  {
+    // u_free = u_0 + R d + (R C U) y.
+    const int size = 2 * n, t = n_given + augmented_row.size();
     u_free = nodes.initial;
     for (int i = 0; i < size; ++i)
       {
         double value = row_of_d[i];
         for (int k = 0; k < t; ++k)
-          value += product(i, size + k) * y[k];
+          value += P[i + std::size_t(size + k) * n_rows] * y[k];
         u_free[i / 2][i % 2] += value;
       }
   }
@@ -279,168 +521,21 @@ namespace glissade
     const std::vector<PairVector> &all_loads,
     std::vector<double>           &products) const
   {
-    const std::size_t n_rows = all_rows.size();
-    struct Local
-    {
-      unsigned int index;
-      double       value;
-    };
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        // The rows and loads on body b, by local index among the body's
-        // row dofs and load dofs.
-        std::map<types::global_dof_index, unsigned int> row_index, column_index;
-        for (const auto &v : all_rows)
-          for (const auto &e : *v.coefficients)
-            if (v.bodies[e.body] == b)
-              row_index.emplace(e.dof, 0);
-        for (const auto &v : all_loads)
-          for (const auto &e : *v.coefficients)
-            if (v.bodies[e.body] == b)
-              column_index.emplace(e.dof, 0);
-        if (row_index.empty() || column_index.empty())
+        BodyProducts body;
+        restrict_to_body(all_rows, b, body.row_dofs, body.rows);
+        restrict_to_body(all_loads, b, body.column_dofs, body.loads);
+        if (body.row_dofs.empty() || body.column_dofs.empty())
           continue;
-        std::vector<types::global_dof_index> row_dofs, column_dofs;
-        for (auto &[dof, i] : row_index)
-          {
-            i = row_dofs.size();
-            row_dofs.push_back(dof);
-          }
-        for (auto &[dof, i] : column_index)
-          {
-            i = column_dofs.size();
-            column_dofs.push_back(dof);
-          }
-        const auto local =
-          [&](const PairVector                                &v,
-              std::map<types::global_dof_index, unsigned int> &index) {
-            std::vector<Local> result;
-            for (const auto &e : *v.coefficients)
-              if (v.bodies[e.body] == b)
-                result.push_back({index[e.dof], e.value});
-            return result;
-          };
-        std::vector<std::pair<std::size_t, std::vector<Local>>> rows_here;
-        for (std::size_t i = 0; i < n_rows; ++i)
-          if (auto l = local(all_rows[i], row_index); !l.empty())
-            rows_here.emplace_back(i, std::move(l));
-
         std::vector<double> C;
-        bodies[b]->system().compliance_block(row_dofs, column_dofs, C);
-
-        std::vector<std::pair<std::size_t, std::vector<Local>>> loads_here;
-        for (std::size_t j = 0; j < all_loads.size(); ++j)
-          if (auto l = local(all_loads[j], column_index); !l.empty())
-            loads_here.emplace_back(j, std::move(l));
-
-        // Rows C loads, one of two ways. Dense: the rows and loads as
-        // dense matrices, two BLAS products. Sparse: loops over the
-        // entries (below). On a B-spline master every row and load reaches
-        // some 50 nodes (the interpolation's band): at 160 active nodes
-        // the dense way does 3 times the flops and takes 3.5 times less
-        // time (W 0.215 s -> 0.061 s on the peers benchmark's rings at
-        // 160 x 16), at 800 nodes 16 times the flops and 1.3 times less
-        // (3.51 s against 4.44 s per run). On a faceted master a row has
-        // 4 entries and the dense way would do a thousand times the work.
-        // A BLAS flop costs about a thirtieth of one in the loops: dense
-        // when it needs fewer than 30 times the flops.
-        const std::size_t m = row_dofs.size(), m_columns = column_dofs.size();
-        const std::size_t n_here = rows_here.size(), l_here = loads_here.size();
-        double            sparse_flops = 0.;
-        for (const auto &[j, load] : loads_here)
-          sparse_flops += double(load.size()) * m;
-        for (const auto &[i, row] : rows_here)
-          sparse_flops += double(row.size()) * l_here;
-        const double dense_flops =
-          double(m) * m_columns * l_here + double(n_here) * m * l_here;
-        if (dense_flops < 30. * sparse_flops)
-          {
-            std::vector<double> L(m_columns * l_here, 0.), R(n_here * m, 0.);
-            for (std::size_t k = 0; k < l_here; ++k)
-              for (const auto &e : loads_here[k].second)
-                L[e.index + k * m_columns] += e.value;
-            for (std::size_t k = 0; k < n_here; ++k)
-              for (const auto &e : rows_here[k].second)
-                R[k + std::size_t(e.index) * n_here] += e.value;
-            std::vector<double> T(m * l_here), RT(n_here * l_here);
-            const int    im = m, ic = m_columns, il = l_here, ir = n_here;
-            const double one = 1., zero = 0.;
-            dgemm_("N",
-                   "N",
-                   &im,
-                   &il,
-                   &ic,
-                   &one,
-                   C.data(),
-                   &im,
-                   L.data(),
-                   &ic,
-                   &zero,
-                   T.data(),
-                   &im);
-            dgemm_("N",
-                   "N",
-                   &ir,
-                   &il,
-                   &im,
-                   &one,
-                   R.data(),
-                   &ir,
-                   T.data(),
-                   &im,
-                   &zero,
-                   RT.data(),
-                   &ir);
-            for (std::size_t k = 0; k < l_here; ++k)
-              for (std::size_t r = 0; r < n_here; ++r)
-                products[rows_here[r].first + loads_here[k].first * n_rows] +=
-                  RT[r + k * n_here];
-            continue;
-          }
-
-        // Sparse: T = C L column by column (each load's entries: axpys down
-        // the columns of C), turned over so that a row of T is contiguous,
-        // then each row of the products = sum_e r_e T(e, :) (axpys along
-        // the rows of T). Every inner loop runs over contiguous memory;
-        // gathering T(e) for each row and load instead took 1.6 times as
-        // long (the rings at 800 x 80, B-spline master). The loads go in
-        // blocks, so that T costs 2 m x 256 doubles, not m x loads.
-        constexpr std::size_t block = 256;
-        std::vector<double> T(m * block), T_rows(m * block), row_product(block);
-        for (std::size_t k0 = 0; k0 < l_here; k0 += block)
-          {
-            const std::size_t width = std::min(block, l_here - k0);
-            std::fill(T.begin(), T.end(), 0.);
-            for (std::size_t k = 0; k < width; ++k)
-              {
-                double *t = &T[k * m];
-                for (const auto &e : loads_here[k0 + k].second)
-                  {
-                    const double *column = &C[std::size_t(e.index) * m];
-                    for (std::size_t r = 0; r < m; ++r)
-                      t[r] += e.value * column[r];
-                  }
-              }
-            constexpr std::size_t tile = 64;
-            for (std::size_t r0 = 0; r0 < m; r0 += tile)
-              for (std::size_t k1 = 0; k1 < width; k1 += tile)
-                for (std::size_t r = r0; r < std::min(m, r0 + tile); ++r)
-                  for (std::size_t k = k1; k < std::min(width, k1 + tile); ++k)
-                    T_rows[r * width + k] = T[k * m + r];
-            for (const auto &[i, row] : rows_here)
-              {
-                std::fill(row_product.begin(), row_product.begin() + width, 0.);
-                for (const auto &e : row)
-                  {
-                    const double *t = &T_rows[std::size_t(e.index) * width];
-                    for (std::size_t k = 0; k < width; ++k)
-                      row_product[k] += e.value * t[k];
-                  }
-                for (std::size_t k = 0; k < width; ++k)
-                  products[i + loads_here[k0 + k].first * n_rows] +=
-                    row_product[k];
-              }
-          }
+        bodies[b]->system().compliance_block(body.row_dofs,
+                                             body.column_dofs,
+                                             C);
+        if (dense_is_cheaper(body))
+          add_dense_products(body, C, all_rows.size(), products);
+        else
+          add_sparse_products(body, C, all_rows.size(), products);
       }
   }
 

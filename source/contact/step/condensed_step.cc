@@ -13,6 +13,68 @@ namespace glissade
 {
   using namespace dealii;
 
+  namespace
+  {
+    using NodeStatus = BiPotentialSolver::NodeStatus;
+
+    // The directions that the contact law holds at a node of this status:
+    // the tangent if it sticks (with friction), the normal if it is closed.
+    std::array<bool, 2>
+    held_directions(const NodeStatus status, const double mu)
+    {
+      return {
+        {status == NodeStatus::stick && mu > 0., status != NodeStatus::open}};
+    }
+
+    // The augmentation is exact only while its directions hold: an augmented
+    // normal must end closed, an augmented tangent sticking. Those that do
+    // not are released (from the augmentation and from `held`), and the
+    // result is false, so that the problem is solved again without them.
+    bool
+    augmentation_consistent(const std::vector<NodeStatus>    &status,
+                            Augmentation                     &augmentation,
+                            std::vector<std::array<bool, 2>> &held)
+    {
+      bool consistent = true;
+      for (unsigned int k = 0; k < augmentation.directions.size(); ++k)
+        {
+          auto &d = augmentation.directions[k];
+          if (d[1] && status[k] == NodeStatus::open)
+            d = held[k] = {{false, false}}, consistent = false;
+          if (d[0] && status[k] != NodeStatus::stick)
+            d[0] = held[k][0] = false, consistent = false;
+        }
+      return consistent;
+    }
+
+    // Escalation when a solve fails: the held directions, then every
+    // direction of every node, then with a ten and a hundred times stiffer
+    // augmentation. False once all of that has been tried.
+    bool
+    escalate_augmentation(unsigned int                           &stage,
+                          Augmentation                           &augmentation,
+                          const std::vector<std::array<bool, 2>> &held,
+                          const std::vector<double>              &friction)
+    {
+      ++stage;
+      if (stage == 1 && augmentation.directions != held)
+        augmentation.directions = held;
+      else if (stage <= 2)
+        {
+          stage = 2;
+          for (unsigned int k = 0; k < friction.size(); ++k)
+            augmentation.directions[k] = {{friction[k] > 0., true}};
+        }
+      else if (stage <= 4)
+        augmentation.factor *= 10.;
+      else
+        return false;
+      return true;
+    }
+  } // namespace
+
+
+
   CondensedStep::CondensedStep(const ContactStepContext &context)
     : bodies(context.bodies)
     , bodies_in_contact(context.bodies_in_contact)
@@ -170,18 +232,15 @@ namespace glissade
     augmentation.directions.resize(n);
     for (unsigned int k = 0; k < n; ++k)
       {
-        const auto status =
-          BiPotentialSolver::classify(start[k], nodes.friction[k]);
-        held[k] = {{status == BiPotentialSolver::NodeStatus::stick &&
-                      nodes.friction[k] > 0.,
-                    status != BiPotentialSolver::NodeStatus::open}};
+        held[k] =
+          held_directions(BiPotentialSolver::classify(start[k],
+                                                      nodes.friction[k]),
+                          nodes.friction[k]);
         for (unsigned int c = 0; c < 2; ++c)
           augmentation.directions[k][c] = held[k][c] && active[k]->augmented[c];
       }
 
-    // Escalation when a solve fails: the held directions, then every
-    // direction of every node, then with a ten and a hundred times stiffer
-    // augmentation.
+    // Solved, with a consistent augmentation, or escalated until it is.
     unsigned int                      stage = 0;
     std::unique_ptr<CondensedProblem> condensed;
     while (true)
@@ -193,77 +252,10 @@ namespace glissade
                                                          bodies,
                                                          predictor);
         }
-        // The bi-potential iteration (Gauss-Seidel), the paper's law
-        // solver. Where W is not positive on the directions in play (the
-        // tangent alone is indefinite), the law can have other solutions
-        // than the Newton step's; if Gauss-Seidel changed the statuses
-        // there, or failed, the active-set iteration from the held
-        // statuses finds the one that continues them.
-        bool solved = false;
-        result      = BiPotentialSolver::Result();
-        if (condensed->regular())
-          {
-            TimerOutput::Scope      scope(timer, timing::local_solve);
-            const BiPotentialSolver solver(settings);
-            r                 = start;
-            result            = solver.solve(condensed->compliance(),
-                                  condensed->free_displacement(),
-                                  nodes.friction,
-                                  r);
-            solved            = result.converged;
-            bool check_branch = !solved;
-            if (solved)
-              {
-                std::vector<std::array<bool, 2>> in_play = held;
-                bool                             changed = false;
-                for (unsigned int k = 0; k < n; ++k)
-                  {
-                    const auto                status = result.status[k];
-                    const std::array<bool, 2> now    = {
-                         {status == BiPotentialSolver::NodeStatus::stick &&
-                            nodes.friction[k] > 0.,
-                          status != BiPotentialSolver::NodeStatus::open}};
-                    changed = changed || now != held[k];
-                    for (unsigned int c = 0; c < 2; ++c)
-                      in_play[k][c] = in_play[k][c] || now[c];
-                  }
-                check_branch = changed && augmentation.count() == 0 &&
-                               !condensed->positive_definite_on(in_play);
-              }
-            if (check_branch)
-              {
-                std::vector<BiPotentialSolver::Vector2> continued = start;
-                const BiPotentialSolver::Result         continuation =
-                  solver.solve_by_active_set(condensed->compliance(),
-                                             condensed->free_displacement(),
-                                             nodes.friction,
-                                             continued);
-                if (continuation.converged)
-                  {
-                    r      = continued;
-                    result = continuation;
-                    solved = true;
-                  }
-              }
-          }
-        else
-          result.message = "the Newton matrix with the contact terms is "
-                           "singular on the contact dofs";
-
-        // Augmented directions must end closed (normal) or sticking
-        // (tangential); those that do not are released and the problem
-        // solved again.
-        bool consistent = solved;
-        if (solved)
-          for (unsigned int k = 0; k < n; ++k)
-            {
-              auto      &d      = augmentation.directions[k];
-              const auto status = result.status[k];
-              if (d[1] && status == BiPotentialSolver::NodeStatus::open)
-                d = held[k] = {{false, false}}, consistent = false;
-              if (d[0] && status != BiPotentialSolver::NodeStatus::stick)
-                d[0] = held[k][0] = false, consistent = false;
-            }
+        const bool solved =
+          solve_contact_law(*condensed, nodes, start, held, augmentation, r);
+        const bool consistent =
+          solved && augmentation_consistent(result.status, augmentation, held);
         if (debug_log::at(1))
           debug_log::stream()
             << "    contact solve: " << augmentation.count()
@@ -276,32 +268,9 @@ namespace glissade
           break;
         if (solved)
           continue;
-
-        ++stage;
-        if (stage == 1 && augmentation.directions != held)
-          augmentation.directions = held;
-        else if (stage <= 2)
+        if (!escalate_augmentation(stage, augmentation, held, nodes.friction))
           {
-            stage = 2;
-            for (unsigned int k = 0; k < n; ++k)
-              augmentation.directions[k] = {{nodes.friction[k] > 0., true}};
-          }
-        else if (stage <= 4)
-          augmentation.factor *= 10.;
-        else
-          {
-            if (!problem.held_by_contact_message().empty() &&
-                !condensed->regular())
-              result.message = problem.held_by_contact_message() +
-                               ": its contact nodes are open or slipping "
-                               "where they would have to hold it";
-            else if (condensed->regular())
-              {
-                const std::string where =
-                  not_positive_at(problem, active, *condensed);
-                if (!where.empty())
-                  result.message = where;
-              }
+            explain_failure(problem, active, *condensed);
             return nullptr;
           }
       }
@@ -309,6 +278,88 @@ namespace glissade
     for (unsigned int k = 0; k < n; ++k)
       active[k]->augmented = augmentation.directions[k];
     return condensed;
+  }
+
+
+
+  bool
+  CondensedStep::solve_contact_law(
+    const CondensedProblem                        &condensed,
+    const ActiveNodes                             &nodes,
+    const std::vector<BiPotentialSolver::Vector2> &start,
+    const std::vector<std::array<bool, 2>>        &held,
+    const Augmentation                            &augmentation,
+    std::vector<BiPotentialSolver::Vector2>       &r)
+  {
+    result = BiPotentialSolver::Result();
+    if (!condensed.regular())
+      {
+        result.message = "the Newton matrix with the contact terms is "
+                         "singular on the contact dofs";
+        return false;
+      }
+    // The bi-potential iteration (Gauss-Seidel), the paper's law solver.
+    // Where W is not positive on the directions in play (the tangent alone
+    // is indefinite), the law can have other solutions than the Newton
+    // step's; if Gauss-Seidel changed the statuses there, or failed, the
+    // active-set iteration from the held statuses finds the one that
+    // continues them.
+    TimerOutput::Scope      scope(timer, timing::local_solve);
+    const BiPotentialSolver solver(settings);
+    r                 = start;
+    result            = solver.solve(condensed.compliance(),
+                          condensed.free_displacement(),
+                          nodes.friction,
+                          r);
+    bool check_branch = !result.converged;
+    if (result.converged)
+      {
+        std::vector<std::array<bool, 2>> in_play = held;
+        bool                             changed = false;
+        for (unsigned int k = 0; k < held.size(); ++k)
+          {
+            const std::array<bool, 2> now =
+              held_directions(result.status[k], nodes.friction[k]);
+            changed = changed || now != held[k];
+            for (unsigned int c = 0; c < 2; ++c)
+              in_play[k][c] = in_play[k][c] || now[c];
+          }
+        check_branch = changed && augmentation.count() == 0 &&
+                       !condensed.positive_definite_on(in_play);
+      }
+    if (!check_branch)
+      return result.converged;
+
+    std::vector<BiPotentialSolver::Vector2> continued = start;
+    const BiPotentialSolver::Result         continuation =
+      solver.solve_by_active_set(condensed.compliance(),
+                                 condensed.free_displacement(),
+                                 nodes.friction,
+                                 continued);
+    if (!continuation.converged)
+      return result.converged;
+    r      = continued;
+    result = continuation;
+    return true;
+  }
+
+
+
+  void
+  CondensedStep::explain_failure(ContactProblem                   &problem,
+                                 const std::vector<ContactNode *> &active,
+                                 const CondensedProblem           &condensed)
+  {
+    if (!problem.held_by_contact_message().empty() && !condensed.regular())
+      result.message = problem.held_by_contact_message() +
+                       ": its contact nodes are open or slipping where they "
+                       "would have to hold it";
+    else if (condensed.regular())
+      {
+        const std::string where = not_positive_at(problem, active, condensed);
+        if (!where.empty())
+          result.message = where;
+      }
   }
 
 

@@ -33,6 +33,38 @@ namespace glissade
     // case 3 with mu = 0.3; 1 and 10 (then of the bodies' mean diagonal)
     // made the roller's statuses cycle (3 and 17 cut-backs).
     constexpr double trial_stiffness = 0.1;
+
+    // The slip (row 2k) or gap (row 2k + 1) of a node after the step:
+    // its value now plus the row applied to the increments.
+    double
+    value_after_step(const ActiveNodes                         &nodes,
+                     const unsigned int                         row,
+                     const std::vector<dealii::Vector<double>> &increments)
+    {
+      const PairVector &v      = nodes.rows[row];
+      double            result = nodes.initial[row / 2][row % 2];
+      for (const auto &e : *v.coefficients)
+        {
+          const unsigned int b = v.bodies[e.body];
+          if (b != dealii::numbers::invalid_unsigned_int)
+            result += e.value * increments[b](e.dof);
+        }
+      return result;
+    }
+
+    void
+    log_sparse_pass(const unsigned int                                pass,
+                    const std::vector<BiPotentialSolver::NodeStatus> &status,
+                    const bool                                        changed)
+    {
+      unsigned int counts[3] = {0, 0, 0};
+      for (const BiPotentialSolver::NodeStatus st : status)
+        ++counts[static_cast<int>(st)];
+      debug_log::stream() << "      sparse pass " << pass << ": open "
+                          << counts[0] << " stick " << counts[1] << " slip "
+                          << counts[2] << (changed ? " (changed)" : "")
+                          << std::endl;
+    }
   } // namespace
 
 
@@ -284,156 +316,27 @@ namespace glissade
   {
     const unsigned int m = nodes.size();
     set_up_pattern(nodes);
-
-    // The scale of the multiplier rows and columns: the bodies' mean
-    // diagonal stiffness.
-    std::vector<double> diagonal(n_body_unknowns);
-    double              sum = 0.;
-    for (const unsigned int b : in_contact)
-      {
-        const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
-        for (unsigned int i = 0; i < K.m(); ++i)
-          {
-            diagonal[offset[b] + i] = std::abs(K.diag_element(i));
-            sum += diagonal[offset[b] + i];
-          }
-      }
-    alpha = n_body_unknowns > 0 && sum > 0. ? sum / n_body_unknowns : 1.;
-
-    // Each node's stiffness c_k for the status tests: trial_stiffness over
-    // the diagonal estimate of its normal compliance, sum g_j^2 / K_jj over
-    // the unknowns of its gap row (through both bodies; a stiffness ratio
-    // between the bodies then does not leave the soft side's nodes judged
-    // by the stiff side's scale).
-    std::vector<double> stiffness(m, alpha * trial_stiffness);
-    {
-      std::vector<Share> c;
-      double             constant = 0.;
-      for (unsigned int k = 0; k < m; ++k)
-        {
-          expand(nodes.rows[2 * k + normal], c, constant);
-          double compliance = 0.;
-          for (const Share &j : c)
-            if (diagonal[j.column] > 0.)
-              compliance += j.weight * j.weight / diagonal[j.column];
-          if (compliance > 0.)
-            stiffness[k] = trial_stiffness / compliance;
-        }
-    }
+    const std::vector<double> diagonal  = scale_reactions();
+    const std::vector<double> stiffness = status_stiffness(nodes, diagonal);
 
     // Friction against the slip: r_t = s mu r_n, s from the last reaction.
     std::vector<double> slip_sign(m);
     for (unsigned int k = 0; k < m; ++k)
       slip_sign[k] = r[k][tangential] >= 0. ? 1. : -1.;
 
+    // The active-set passes: solve with the statuses, then the statuses
+    // of the solution, until they no longer change.
     Vector<double> x;
     for (last_passes = 1; last_passes <= max_passes; ++last_passes)
       {
         assemble(nodes, status, slip_sign);
-        try
-          {
-            lu.factorize(matrix);
-          }
-        catch (const std::exception &e)
-          {
-            message = std::string("the sparse contact system cannot be "
-                                  "factorised (a body that nothing holds "
-                                  "with these contact statuses?): ") +
-                      e.what();
-            return false;
-          }
-        x = rhs;
-        lu.solve(x);
-        for (unsigned int i = 0; i < x.size(); ++i)
-          if (!std::isfinite(x(i)))
-            {
-              message = "the sparse contact system is singular (a body that "
-                        "nothing holds with these contact statuses?)";
-              return false;
-            }
-        for (const unsigned int b : in_contact)
-          {
-            increments[b].reinit(bodies[b]->n_dofs());
-            for (unsigned int i = 0; i < increments[b].size(); ++i)
-              increments[b](i) = x(offset[b] + i);
-            bodies[b]->system().constraints().distribute(increments[b]);
-          }
-
-        // The reactions, and the gap and slip after the step.
-        double largest = 0.;
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            r[k]    = {{alpha * x(n_body_unknowns + 2 * k + tangential),
-                        alpha * x(n_body_unknowns + 2 * k + normal)}};
-            largest = std::max(largest, std::abs(r[k][normal]));
-          }
-        const auto after = [&](const unsigned int row) {
-          const PairVector &v      = nodes.rows[row];
-          double            result = nodes.initial[row / 2][row % 2];
-          for (const auto &e : *v.coefficients)
-            {
-              const unsigned int b = v.bodies[e.body];
-              if (b != numbers::invalid_unsigned_int)
-                result += e.value * increments[b](e.dof);
-            }
-          return result;
-        };
-        // Round-off of the reactions and of the positions.
-        const double force_tolerance = 1e-12 * largest;
-        double       size            = 0.;
-        for (const unsigned int b : in_contact)
-          size = std::max(size, bodies[b]->size());
-        const double gap_tolerance = 1e-12 * size;
-
-        // The statuses of the semi-smooth Newton method for the contact
-        // law's complementarity functions (Hueber, Stadler and Wohlmuth,
-        // SIAM J. Sci. Comput. 30, 2008), with a stiffness c turning
-        // displacements into forces: closed if r_n - c g > 0; then
-        // sticking if |r_t - c u_t| < mu (r_n - c g), else slipping with
-        // friction along r_t - c u_t. A consistent stick (u_t = 0) or slip
-        // (u_t against r_t) keeps its status.
-        bool changed = false;
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            const double     mu           = nodes.friction[k];
-            const NodeStatus old          = status[k];
-            const double     gap          = after(2 * k + normal);
-            const double     c            = stiffness[k];
-            const double     normal_trial = r[k][normal] - c * gap;
-            if (!(normal_trial > force_tolerance + c * gap_tolerance))
-              status[k] = NodeStatus::open;
-            else if (mu == 0.)
-              status[k] = NodeStatus::slip;
-            else
-              {
-                const double trial =
-                  r[k][tangential] - c * after(2 * k + tangential);
-                const double bound  = mu * normal_trial;
-                const double margin = force_tolerance + c * gap_tolerance;
-                if (std::abs(trial) < bound - margin)
-                  status[k] = NodeStatus::stick;
-                else if (std::abs(trial) > bound + margin)
-                  {
-                    const double sign = trial >= 0. ? 1. : -1.;
-                    changed           = changed ||
-                              (old == NodeStatus::slip && sign != slip_sign[k]);
-                    status[k]    = NodeStatus::slip;
-                    slip_sign[k] = sign;
-                  }
-                // (on the bound to round-off: the status stays)
-              }
-            changed = changed || status[k] != old;
-          }
+        if (!solve_system(x, message))
+          return false;
+        read_solution(x, r, increments);
+        const bool changed =
+          update_statuses(nodes, r, increments, stiffness, status, slip_sign);
         if (debug_log::at(1))
-          {
-            unsigned int counts[3] = {0, 0, 0};
-            for (const NodeStatus st : status)
-              ++counts[static_cast<int>(st)];
-            debug_log::stream()
-              << "      sparse pass " << last_passes << ": open " << counts[0]
-              << " stick " << counts[1] << " slip " << counts[2]
-              << (changed ? " (changed)" : "") << std::endl;
-          }
+          log_sparse_pass(last_passes, status, changed);
         if (!changed)
           {
             for (unsigned int k = 0; k < m; ++k)
@@ -447,6 +350,165 @@ namespace glissade
          << " active-set passes of the sparse method";
     message = text.str();
     return false;
+  }
+
+
+
+  std::vector<double>
+  SparseContactStep::scale_reactions()
+  {
+    std::vector<double> diagonal(n_body_unknowns);
+    double              sum = 0.;
+    for (const unsigned int b : in_contact)
+      {
+        const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
+        for (unsigned int i = 0; i < K.m(); ++i)
+          {
+            diagonal[offset[b] + i] = std::abs(K.diag_element(i));
+            sum += diagonal[offset[b] + i];
+          }
+      }
+    alpha = n_body_unknowns > 0 && sum > 0. ? sum / n_body_unknowns : 1.;
+    return diagonal;
+  }
+
+
+
+  std::vector<double>
+  SparseContactStep::status_stiffness(const ActiveNodes         &nodes,
+                                      const std::vector<double> &diagonal) const
+  {
+    // trial_stiffness over the diagonal estimate of the node's normal
+    // compliance, sum g_j^2 / K_jj over the unknowns of its gap row
+    // (through both bodies; a stiffness ratio between the bodies then does
+    // not leave the soft side's nodes judged by the stiff side's scale).
+    std::vector<double> stiffness(nodes.size(), alpha * trial_stiffness);
+    std::vector<Share>  c;
+    double              constant = 0.;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        expand(nodes.rows[2 * k + normal], c, constant);
+        double compliance = 0.;
+        for (const Share &j : c)
+          if (diagonal[j.column] > 0.)
+            compliance += j.weight * j.weight / diagonal[j.column];
+        if (compliance > 0.)
+          stiffness[k] = trial_stiffness / compliance;
+      }
+    return stiffness;
+  }
+
+
+
+  bool
+  SparseContactStep::solve_system(Vector<double> &x, std::string &message)
+  {
+    try
+      {
+        lu.factorize(matrix);
+      }
+    catch (const std::exception &e)
+      {
+        message = std::string("the sparse contact system cannot be "
+                              "factorised (a body that nothing holds "
+                              "with these contact statuses?): ") +
+                  e.what();
+        return false;
+      }
+    x = rhs;
+    lu.solve(x);
+    for (unsigned int i = 0; i < x.size(); ++i)
+      if (!std::isfinite(x(i)))
+        {
+          message = "the sparse contact system is singular (a body that "
+                    "nothing holds with these contact statuses?)";
+          return false;
+        }
+    return true;
+  }
+
+
+
+  void
+  SparseContactStep::read_solution(
+    const Vector<double>                &x,
+    std::vector<Vector2>                &r,
+    std::vector<dealii::Vector<double>> &increments) const
+  {
+    for (const unsigned int b : in_contact)
+      {
+        increments[b].reinit(bodies[b]->n_dofs());
+        for (unsigned int i = 0; i < increments[b].size(); ++i)
+          increments[b](i) = x(offset[b] + i);
+        bodies[b]->system().constraints().distribute(increments[b]);
+      }
+    for (unsigned int k = 0; k < r.size(); ++k)
+      r[k] = {{alpha * x(n_body_unknowns + 2 * k + tangential),
+               alpha * x(n_body_unknowns + 2 * k + normal)}};
+  }
+
+
+
+  bool
+  SparseContactStep::update_statuses(
+    const ActiveNodes                         &nodes,
+    const std::vector<Vector2>                &r,
+    const std::vector<dealii::Vector<double>> &increments,
+    const std::vector<double>                 &stiffness,
+    std::vector<NodeStatus>                   &status,
+    std::vector<double>                       &slip_sign) const
+  {
+    // Round-off of the reactions and of the positions.
+    double largest = 0.;
+    for (const Vector2 &r_k : r)
+      largest = std::max(largest, std::abs(r_k[normal]));
+    const double force_tolerance = 1e-12 * largest;
+    double       size            = 0.;
+    for (const unsigned int b : in_contact)
+      size = std::max(size, bodies[b]->size());
+    const double gap_tolerance = 1e-12 * size;
+
+    // The statuses of the semi-smooth Newton method for the contact law's
+    // complementarity functions (Hueber, Stadler and Wohlmuth, SIAM J. Sci.
+    // Comput. 30, 2008), with a stiffness c turning displacements into
+    // forces: closed if r_n - c g > 0; then sticking if |r_t - c u_t| < mu
+    // (r_n - c g), else slipping with friction along r_t - c u_t. A
+    // consistent stick (u_t = 0) or slip (u_t against r_t) keeps its
+    // status.
+    bool changed = false;
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        const double     mu  = nodes.friction[k];
+        const NodeStatus old = status[k];
+        const double gap = value_after_step(nodes, 2 * k + normal, increments);
+        const double c   = stiffness[k];
+        const double normal_trial = r[k][normal] - c * gap;
+        if (!(normal_trial > force_tolerance + c * gap_tolerance))
+          status[k] = NodeStatus::open;
+        else if (mu == 0.)
+          status[k] = NodeStatus::slip;
+        else
+          {
+            const double trial =
+              r[k][tangential] -
+              c * value_after_step(nodes, 2 * k + tangential, increments);
+            const double bound  = mu * normal_trial;
+            const double margin = force_tolerance + c * gap_tolerance;
+            if (std::abs(trial) < bound - margin)
+              status[k] = NodeStatus::stick;
+            else if (std::abs(trial) > bound + margin)
+              {
+                const double sign = trial >= 0. ? 1. : -1.;
+                changed =
+                  changed || (old == NodeStatus::slip && sign != slip_sign[k]);
+                status[k]    = NodeStatus::slip;
+                slip_sign[k] = sign;
+              }
+            // (on the bound to round-off: the status stays)
+          }
+        changed = changed || status[k] != old;
+      }
+    return changed;
   }
 
 

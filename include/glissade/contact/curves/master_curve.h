@@ -362,6 +362,27 @@ namespace glissade
     NodeCase
     classify_node(unsigned int node, const Point &x) const;
 
+    /**
+     * Step 6 of project(): the segments not yet searched whose bounding
+     * box is within sqrt(reach2) of x, as (squared box distance, segment),
+     * nearest first.
+     */
+    std::vector<std::pair<double, unsigned int>>
+    boxes_within(const Point                     &x,
+                 double                           reach2,
+                 const std::vector<unsigned int> &searched) const;
+
+    /**
+     * Steps 5 and 7 of project(): the result for the closest point found,
+     * at (segment, s) after newton_iterations; at a node, an orthogonal
+     * projection on one of its segments, a convex corner or an open end.
+     */
+    Projection
+    projection_from(unsigned int segment,
+                    double       s,
+                    unsigned int newton_iterations,
+                    const Point &x) const;
+
     std::vector<Point>                node_positions;
     std::vector<std::array<Point, 2>> segment_boxes;
     double                            scale = 1.;

@@ -164,6 +164,47 @@ namespace glissade
                             const std::vector<PairVector> &all_loads,
                             std::vector<double>           &products) const;
 
+    /**
+     * The augmented directions as rank-one terms: their rows appended to
+     * `all_rows` and, unscaled, to `all_loads`; fills `augmented_row` and
+     * `augmented_gap`.
+     */
+    void
+    add_augmented_terms(const Augmentation      &augmentation,
+                        std::vector<PairVector> &all_rows,
+                        std::vector<PairVector> &all_loads);
+
+    /**
+     * Scales the products of the augmented loads by -E_k (into
+     * `augmented_scale`), E_k from the normal compliances in the products
+     * P (n_rows rows); returns each row applied to K^-1 a, a the
+     * augmentation's load.
+     */
+    std::vector<double>
+    scale_augmented_loads(double               factor,
+                          std::size_t          n_rows,
+                          std::vector<double> &P);
+
+    /**
+     * S = I - V C U (its LU), X = S^-1 V C F and y = S^-1 V d from the
+     * products P and the rows applied to d; false if S is singular to
+     * working precision.
+     */
+    bool
+    solve_woodbury_system(const std::vector<double> &P,
+                          std::size_t                n_rows,
+                          const std::vector<double> &row_of_d);
+
+    /** W = R C F + (R C U) X. */
+    void
+    form_compliance(const std::vector<double> &P, std::size_t n_rows);
+
+    /** u_free = u_0 + R d + (R C U) y. */
+    void
+    form_free_displacement(const std::vector<double> &P,
+                           std::size_t                n_rows,
+                           const std::vector<double> &row_of_d);
+
     const ActiveNodes                        &nodes;
     const std::vector<std::unique_ptr<Body>> &bodies;
     const unsigned int                        n;

@@ -3,6 +3,7 @@
 #include <glissade/contact/step/condensed_problem.h>
 #include <glissade/contact/step/contact_step.h>
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,31 @@ namespace glissade
                         const ActiveNodes                         &nodes,
                         const std::vector<dealii::Vector<double>> &predictor,
                         std::vector<BiPotentialSolver::Vector2>   &r);
+
+    /**
+     * The contact law on one condensed problem, from the reactions
+     * `start` into r and `result`: Gauss-Seidel, then the active-set
+     * iteration where W is not positive on the directions in play and
+     * the statuses left those `held`. False if neither solved it (or the
+     * problem is singular).
+     */
+    bool
+    solve_contact_law(const CondensedProblem                        &condensed,
+                      const ActiveNodes                             &nodes,
+                      const std::vector<BiPotentialSolver::Vector2> &start,
+                      const std::vector<std::array<bool, 2>>        &held,
+                      const Augmentation                      &augmentation,
+                      std::vector<BiPotentialSolver::Vector2> &r);
+
+    /**
+     * The message of `result` once every augmentation has failed: a body
+     * that its contact does not hold, or a node where the bodies are
+     * unstable (not_positive_at()).
+     */
+    void
+    explain_failure(ContactProblem                   &problem,
+                    const std::vector<ContactNode *> &active,
+                    const CondensedProblem           &condensed);
 
     /**
      * Why the local problem failed, for a user, where a node's own

@@ -127,6 +127,47 @@ namespace glissade
              const std::vector<NodeStatus> &status,
              const std::vector<double>     &slip_sign);
 
+    /**
+     * The scale of the multiplier rows and columns: sets alpha to the
+     * bodies' mean diagonal stiffness, and returns each body unknown's
+     * |K_ii| (by global unknown).
+     */
+    std::vector<double>
+    scale_reactions();
+
+    /**
+     * Each node's stiffness c_k for the status tests: trial_stiffness over
+     * the estimate of its normal compliance from the diagonals.
+     */
+    std::vector<double>
+    status_stiffness(const ActiveNodes         &nodes,
+                     const std::vector<double> &diagonal) const;
+
+    /**
+     * Factorises and solves the assembled system into x; false, with
+     * `message`, if it is singular.
+     */
+    bool
+    solve_system(dealii::Vector<double> &x, std::string &message);
+
+    /** The bodies' increments and the reactions r = alpha x from x. */
+    void
+    read_solution(const dealii::Vector<double>        &x,
+                  std::vector<Vector2>                &r,
+                  std::vector<dealii::Vector<double>> &increments) const;
+
+    /**
+     * The statuses (and slip signs) that the solution of a pass implies;
+     * true if any changed.
+     */
+    bool
+    update_statuses(const ActiveNodes                         &nodes,
+                    const std::vector<Vector2>                &r,
+                    const std::vector<dealii::Vector<double>> &increments,
+                    const std::vector<double>                 &stiffness,
+                    std::vector<NodeStatus>                   &status,
+                    std::vector<double>                       &slip_sign) const;
+
     const std::vector<std::unique_ptr<Body>> &bodies;
     const std::vector<unsigned int>           in_contact;
     dealii::TimerOutput                      &timer;
