@@ -48,8 +48,19 @@ namespace glissade
         return identifier(trimmed.substr(6, trimmed.size() - 7));
       return identifier(trimmed);
     }
-  } // namespace
 
+    /** The reference position of an item's "point(x, y)". */
+    Point<2>
+    point_of(const std::string &location,
+             const std::string &item,
+             const std::string &entry)
+    {
+      double x, y;
+      if (!text::parse_point_location(location, x, y))
+        throw InputError(entry, "'" + item + "': expected point(x, y)");
+      return Point<2>(x, y);
+    }
+  } // namespace
 
 
   HistoryWriter::HistoryWriter(
@@ -206,10 +217,7 @@ namespace glissade
                                   const std::string &item,
                                   const std::string &entry)
   {
-    double x, y;
-    if (!text::parse_point_location(location, x, y))
-      throw InputError(entry, "'" + item + "': expected point(x, y)");
-    const Point<2> X(x, y);
+    const Point<2> X = point_of(location, item, entry);
     if (pair.node_at(X).reference_position.distance(X) > 1e-8 * (1. + X.norm()))
       throw InputError(entry,
                        "'" + item + "': no slave node of pair '" + name +
@@ -258,15 +266,13 @@ namespace glissade
                                   const std::string &item,
                                   const std::string &entry)
   {
-    double x, y;
-    if (!text::parse_point_location(location, x, y))
-      throw InputError(entry, "'" + item + "': expected point(x, y)");
+    const Point<2> X = point_of(location, item, entry);
     // The vertex and its dofs are found once: searching them at every
     // increment made 320 columns cost 6 times the solve.
     std::array<types::global_dof_index, 2> vertex_dofs;
     try
       {
-        vertex_dofs = vertex_value_dofs(body, Point<2>(x, y));
+        vertex_dofs = vertex_value_dofs(body, X);
       }
     catch (const InputError &e)
       {

@@ -611,7 +611,8 @@ namespace glissade
       else
         // The curve's own weights (the Hermite edge's, the
         // spline's): the reaction's work conjugate to the gap.
-        for (const SurfaceWeight &e : curve_surface->forces_at(i, t))
+        for (const SurfaceWeight &e :
+             curve_surface->forces_at(i, t, on_curve.kinematics[q]))
           add_force_weight(e.dof, e.component, e.value + e.derivative * deta);
       return true;
     }
@@ -920,15 +921,16 @@ namespace glissade
           l.gap_row.push_back({0, node.dofs[c], n[c]});
           l.slip_row.push_back({0, node.dofs[c], t[c]});
         }
-      if (!curve_points)
-        for (const auto &[k, M] : s.M)
-          for (unsigned int c = 0; c < 2; ++c)
-            {
-              l.gap_row.push_back(
-                {1, master_points[k].dofs[c], -M.value / D * n[c]});
-              l.slip_row.push_back(
-                {1, master_points[k].dofs[c], -M.value / D * t[c]});
-            }
+      // (M holds the faceted master's weights only: empty on a curve or
+      // an obstacle, whose y_j's change is in the Y rows below)
+      for (const auto &[k, M] : s.M)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            l.gap_row.push_back(
+              {1, master_points[k].dofs[c], -M.value / D * n[c]});
+            l.slip_row.push_back(
+              {1, master_points[k].dofs[c], -M.value / D * t[c]});
+          }
       add_scaled(l.gap_row, -(t * x_minus_y), s.rotation_row);
       add_scaled(l.slip_row, n * d, s.rotation_row);
       // Against an obstacle or a curve, y_j and its motion change with

@@ -183,13 +183,15 @@ namespace glissade
 
 
   std::vector<SurfaceWeight>
-  CurveSurface::forces_at(const unsigned int segment, const double s) const
+  CurveSurface::forces_at(const unsigned int                segment,
+                          const double                      s,
+                          const std::vector<SurfaceWeight> &kinematics) const
   {
     SurfacePoint point;
     point.valid      = true;
     point.segment    = segment;
     point.s          = s;
-    point.kinematics = kinematics_at(segment, s);
+    point.kinematics = kinematics;
     set_forces(point);
     return point.forces;
   }

@@ -67,9 +67,14 @@ namespace glissade
     std::vector<SurfaceWeight>
     kinematics_at(unsigned int segment, double s) const;
 
-    /** Where a force at (segment, s) goes, with the weights' derivatives. */
+    /**
+     * Where a force at (segment, s) goes, with the weights' derivatives,
+     * given the point's kinematics_at(segment, s).
+     */
     std::vector<SurfaceWeight>
-    forces_at(unsigned int segment, double s) const;
+    forces_at(unsigned int                      segment,
+              double                            s,
+              const std::vector<SurfaceWeight> &kinematics) const;
 
     /**
      * True when the reaction goes to the two nodes of the straight
