@@ -62,7 +62,7 @@ namespace glissade
       from_factor = from_factor && contact_position[dof] >= 0;
     if (from_factor)
       {
-        block_from_factor(rows, columns, factorization.cholesky(), block);
+        block_from_factor(rows, columns, factorization.inverse_block(), block);
         return;
       }
 
@@ -89,7 +89,7 @@ namespace glissade
   ContactPort::block_from_factor(
     const std::vector<types::global_dof_index> &rows,
     const std::vector<types::global_dof_index> &columns,
-    SchurCholesky                              &cholesky,
+    TrailingBlockInverse                       &cholesky,
     std::vector<double>                        &block)
   {
     if (contact_rows_resolved.empty())

@@ -10,18 +10,6 @@
 #include <string>
 #include <type_traits>
 
-extern "C" void
-dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-extern "C" void
-dpotrs_(const char   *uplo,
-        const int    *n,
-        const int    *nrhs,
-        const double *a,
-        const int    *lda,
-        double       *b,
-        const int    *ldb,
-        int          *info);
-
 namespace glissade
 {
   using namespace dealii;
@@ -173,8 +161,7 @@ namespace glissade
       }
     cholmod_l_factorize(&A, cholmod->factor, &cholmod->common);
     factorization_seconds += timer.wall_time();
-    inverse_block.clear();
-    column_of.clear();
+    forget_inverse_columns();
     return cholmod->common.status == CHOLMOD_OK && factorized();
   }
 
@@ -204,48 +191,20 @@ namespace glissade
 
 
   void
-  SchurCholesky::compute_inverse_columns(const std::vector<long> &positions)
+  SchurCholesky::trailing_factor(std::vector<double> &trailing) const
   {
-    if (n_last == 0)
-      return;
-    // The columns wanted: those asked for and those already formed.
-    std::vector<long> wanted;
-    if (column_of.size() != std::size_t(n_last))
-      column_of.assign(n_last, -1);
-    for (long j = 0; j < n_last; ++j)
-      if (column_of[j] >= 0)
-        wanted.push_back(j);
-    const std::size_t formed = wanted.size();
-    for (const long j : positions)
-      if (j >= 0 && column_of[j] < 0)
-        {
-          column_of[j] = -2; // marked, so that a repeated j is added once
-          wanted.push_back(j);
-        }
-    if (wanted.size() == formed)
-      return; // every column is there already
-    std::sort(wanted.begin(), wanted.end());
-    const bool whole_block = 3 * long(wanted.size()) >= n_last;
-    if (whole_block)
-      {
-        wanted.resize(n_last);
-        for (long j = 0; j < n_last; ++j)
-          wanted[j] = j;
-      }
-
-    Timer                 timer;
     const cholmod_factor &L     = *cholmod->factor;
     const long            n     = L.n;
     const long            first = n - n_last;
     // Copy the trailing block L_cc out of the supernodes that hold it:
     // supernode s has columns super[s] .. super[s+1]-1, rows Ls[pi[s]..],
     // values column major from px[s] with leading dimension = its rows.
-    std::vector<double> trailing(std::size_t(n_last) * n_last, 0.);
-    const long         *super = static_cast<const long *>(L.super);
-    const long         *pi    = static_cast<const long *>(L.pi);
-    const long         *px    = static_cast<const long *>(L.px);
-    const long         *rows  = static_cast<const long *>(L.s);
-    const double       *x     = static_cast<const double *>(L.x);
+    trailing.assign(std::size_t(n_last) * n_last, 0.);
+    const long   *super = static_cast<const long *>(L.super);
+    const long   *pi    = static_cast<const long *>(L.pi);
+    const long   *px    = static_cast<const long *>(L.px);
+    const long   *rows  = static_cast<const long *>(L.s);
+    const double *x     = static_cast<const double *>(L.x);
     for (std::size_t s = 0; s < L.nsuper; ++s)
       {
         const long k1 = super[s], k2 = super[s + 1];
@@ -260,34 +219,5 @@ namespace glissade
                 x[px[s] + i + column * n_rows];
           }
       }
-
-    const int m    = n_last;
-    int       info = 0;
-    if (whole_block)
-      {
-        // (L_cc L_cc^T)^-1 in the lower triangle, then mirrored.
-        dpotri_("L", &m, trailing.data(), &m, &info);
-        for (long j = 0; j < n_last && info == 0; ++j)
-          for (long i = j + 1; i < n_last; ++i)
-            trailing[j + i * n_last] = trailing[i + j * n_last];
-        inverse_block.swap(trailing);
-      }
-    else
-      {
-        // C e_j = (L_cc L_cc^T)^-1 e_j for each wanted column j.
-        const int k = wanted.size();
-        inverse_block.assign(std::size_t(n_last) * k, 0.);
-        for (int c = 0; c < k; ++c)
-          inverse_block[wanted[c] + std::size_t(c) * n_last] = 1.;
-        dpotrs_(
-          "L", &m, &k, trailing.data(), &m, inverse_block.data(), &m, &info);
-      }
-    if (info != 0)
-      throw std::runtime_error("LAPACK dpotri/dpotrs failed with info " +
-                               std::to_string(info));
-    std::fill(column_of.begin(), column_of.end(), -1);
-    for (std::size_t c = 0; c < wanted.size(); ++c)
-      column_of[wanted[c]] = c;
-    inverse_seconds += timer.wall_time();
   }
 } // namespace glissade

@@ -75,7 +75,7 @@ namespace glissade
     block_from_factor(
       const std::vector<dealii::types::global_dof_index> &rows,
       const std::vector<dealii::types::global_dof_index> &columns,
-      SchurCholesky                                      &cholesky,
+      TrailingBlockInverse                               &cholesky,
       std::vector<double>                                &block);
 
     const dealii::types::global_dof_index n_dofs;

@@ -2,6 +2,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <glissade/lac/trailing_block_inverse.h>
+
 #include <memory>
 #include <vector>
 
@@ -26,7 +28,7 @@ namespace glissade
    * The matrix is handed over in compressed-column form with the full
    * (symmetric) pattern, sorted; only its upper triangle is read.
    */
-  class SchurCholesky
+  class SchurCholesky : public TrailingBlockInverse
   {
   public:
     SchurCholesky();
@@ -59,54 +61,17 @@ namespace glissade
     void
     solve(dealii::Vector<double> &x) const;
 
-    /**
-     * Makes the columns of C, the block of A^-1 on the last unknowns, at
-     * the given positions available (after factorize). When contact
-     * touches only part of the declared area, few columns are needed: each
-     * costs two triangular solves with L_cc (LAPACK dpotrs, 2 m^2 flops).
-     * From a third of the m columns on, the whole block by dpotri
-     * ((2/3) m^3) is cheaper and is formed instead. Columns already formed
-     * for this factorisation are kept.
-     */
-    void
-    compute_inverse_columns(const std::vector<long> &positions);
-
-    /** Position of an unknown among the last unknowns, or -1. */
-    long
-    last_position(const long unknown) const
-    {
-      return unknown < static_cast<long>(position.size()) ? position[unknown] :
-                                                            -1;
-    }
-
-    /** C between the last unknowns at positions i and j (column j formed). */
-    double
-    inverse_entry(const long i, const long j) const
-    {
-      return inverse_block[i + column_of[j] * n_last];
-    }
-
-    /** Columns of C formed for the current factorisation. */
-    long
-    n_inverse_columns() const
-    {
-      return n_last > 0 ? inverse_block.size() / n_last : 0;
-    }
-
     double analysis_seconds      = 0.;
     double factorization_seconds = 0.;
-    double inverse_seconds       = 0.;
 
   private:
+    /** L_cc, copied out of the supernodes that hold it. */
+    void
+    trailing_factor(std::vector<double> &factor) const override;
+
     struct Cholmod;
     std::unique_ptr<Cholmod> cholmod;
     std::vector<long>        last_unknowns;
-    std::vector<long>        position;
-    long                     n_last   = 0;
     bool                     analysed = false;
-    /** Formed columns of C, column major, n_last rows. */
-    std::vector<double> inverse_block;
-    /** Column of inverse_block holding C's column j, or -1. */
-    std::vector<long> column_of;
   };
 } // namespace glissade
