@@ -23,8 +23,10 @@ done
 # reference BLAS makes the factorisation 2-3 times slower. The suite's
 # tools: numdiff compares scene outputs with their references, and
 # clang-format-14 is what the test source_formatted checks the formatting
-# with.
-packages="libdeal.ii-dev libopenblas0-pthread cmake g++ make python3-matplotlib"
+# with. MUMPS (a run on several processes factorises with it) and mpirun
+# come with deal.II's dependencies; named here so that a slimmer install
+# still has them.
+packages="libdeal.ii-dev libopenblas0-pthread libmumps-dev openmpi-bin cmake g++ make python3-matplotlib"
 if $all; then
   packages="$packages numdiff clang-format-14"
 fi

@@ -4,9 +4,12 @@
 
 #include <deal.II/base/config.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <glissade/base/config.h>
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
+#include <glissade/base/processes.h>
 #include <glissade/base/text.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -17,8 +20,12 @@
 #include <paper_studies/geometric_study.h>
 #include <paper_studies/trade_study.h>
 
+#include <dlfcn.h>
+
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,6 +71,34 @@ namespace
     return drivers;
   }
 
+  /**
+   * True if mpirun (Open MPI, MPICH) or srun started this process: MPI is
+   * then initialised. A plain `glissade` does not initialise MPI at all, so
+   * that one process starts as fast as before (doc/parallel.md).
+   */
+  bool
+  started_by_mpi_launcher()
+  {
+    for (const char *variable :
+         {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(variable) != nullptr)
+        return true;
+    return false;
+  }
+
+  /**
+   * Several processes on one machine share its cores: OpenBLAS (the BLAS
+   * of CHOLMOD and LAPACK here) would start a thread per core in each.
+   */
+  void
+  one_blas_thread_per_process()
+  {
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(
+          dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set(1);
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -85,9 +120,19 @@ main(int argc, char **argv)
 {
   using namespace glissade;
   using namespace dealii;
+  // (threads: the cores of the machine shared out among its processes)
+  std::unique_ptr<Utilities::MPI::MPI_InitFinalize> mpi;
+  if (started_by_mpi_launcher())
+    mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv);
+  if (processes::count() > 1)
+    one_blas_thread_per_process();
+  // Messages from process 0 only: the others take the same decisions.
+  std::ostream  silent(nullptr);
+  std::ostream &err = processes::writes_files() ? std::cerr : silent;
+  std::ostream &out = processes::writes_files() ? std::cout : silent;
   if (argc < 2)
     {
-      print_usage(std::cerr);
+      print_usage(err);
       return 1;
     }
   {
@@ -99,24 +144,24 @@ main(int argc, char **argv)
   }
   if (std::strcmp(argv[1], "--print-parameters") == 0)
     {
-      SceneReader::print_parameters(std::cout);
+      SceneReader::print_parameters(out);
       return 0;
     }
   if (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)
     {
-      print_usage(std::cout);
+      print_usage(out);
       return 0;
     }
   if (std::strcmp(argv[1], "--version") == 0)
     {
-      std::cout << "glissade " << GLISSADE_VERSION << " (deal.II "
-                << DEAL_II_PACKAGE_VERSION << ")\n";
+      out << "glissade " << GLISSADE_VERSION << " (deal.II "
+          << DEAL_II_PACKAGE_VERSION << ")\n";
       return 0;
     }
   if (argv[1][0] == '-')
     {
-      std::cerr << "glissade: unknown option '" << argv[1] << "'\n";
-      print_usage(std::cerr);
+      err << "glissade: unknown option '" << argv[1] << "'\n";
+      print_usage(err);
       return 1;
     }
 
@@ -130,8 +175,8 @@ main(int argc, char **argv)
         restart = true;
       else
         {
-          std::cerr << "glissade: unknown argument '" << argv[i] << "'\n";
-          print_usage(std::cerr);
+          err << "glissade: unknown argument '" << argv[i] << "'\n";
+          print_usage(err);
           return 1;
         }
     }
@@ -148,6 +193,12 @@ main(int argc, char **argv)
       for (const StudyDriver &driver : study_drivers())
         if (driver.name == study)
           {
+            if (processes::count() > 1)
+              throw InputError(argv[1],
+                               "a '" + study +
+                                 "' study driver runs in one process; run "
+                                 "it without mpirun, or run its scenes "
+                                 "under mpirun one by one");
             driver.run(argv[1], overrides);
             return 0;
           }
@@ -155,34 +206,41 @@ main(int argc, char **argv)
       Simulation             simulation(scene);
       interruption::install_handlers();
       const bool completed = simulation.run(restart);
-      std::cout << simulation.summary() << '\n'
-                << simulation.timing_table() << std::flush;
+      out << simulation.summary() << '\n'
+          << simulation.timing_table() << std::flush;
       if (!completed)
-        std::cout << "stopped at Checkpoint/Stop after increment; continue "
-                     "with: glissade "
-                  << argv[1] << " --restart" << std::endl;
+        out << "stopped at Checkpoint/Stop after increment; continue "
+               "with: glissade "
+            << argv[1] << " --restart" << std::endl;
     }
   catch (const InputError &e)
     {
-      std::cerr << "glissade: input error: " << e.what() << std::endl;
+      err << "glissade: input error: " << e.what() << std::endl;
       return 2;
     }
   catch (const ConvergenceFailure &e)
     {
-      std::cerr << "glissade: stopped: " << e.what() << std::endl;
+      err << "glissade: stopped: " << e.what() << std::endl;
       return 3;
     }
   catch (const RunInterrupted &e)
     {
-      std::cerr << "glissade: " << e.what() << "; continue with: glissade "
-                << argv[1] << " --restart" << std::endl;
+      err << "glissade: " << e.what() << "; continue with: glissade " << argv[1]
+          << " --restart" << std::endl;
       return 5;
     }
   catch (const std::exception &e)
     {
-      // Without deal.II's source location and stack trace.
-      std::cerr << "glissade: error: " << text::essential_message(e)
-                << std::endl;
+      // Without deal.II's source location and stack trace. Input errors,
+      // failed increments and signals are met by every process alike and
+      // said once; this one may be a single process's (a file it could not
+      // write): each says it, process 0 as usual, the others by number.
+      if (processes::writes_files())
+        std::cerr << "glissade: error: " << text::essential_message(e)
+                  << std::endl;
+      else
+        std::cerr << "glissade (process " << processes::rank()
+                  << "): error: " << text::essential_message(e) << std::endl;
       return 4;
     }
   return 0;

@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/mesh_diameter.h>
@@ -21,6 +22,21 @@ namespace glissade
 
   namespace
   {
+    using BodyCell = DoFHandler<2>::active_cell_iterator;
+
+    /** The cell of WorkStream's item: a cell, or a place in a list of them. */
+    const BodyCell &
+    body_cell_of(const BodyCell &cell)
+    {
+      return cell;
+    }
+
+    const BodyCell &
+    body_cell_of(const std::vector<BodyCell>::const_iterator &place)
+    {
+      return *place;
+    }
+
     /**
      * An axisymmetric body: refuses a Hermite space and a mesh with a
      * vertex at x = r < 0, naming the cell.
@@ -260,24 +276,43 @@ namespace glissade
     bool               admissible         = true;
     const auto         boundary_evaluator = element_space->create_evaluator();
     const unsigned int n_local            = cell_integration->dofs_per_cell();
-    WorkStream::run(
-      dofs.begin_active(),
-      dofs.end(),
-      [&](const typename DoFHandler<2>::active_cell_iterator &cell,
-          Scratch                                            &scratch,
-          Contribution                                       &data) {
-        cell_integration->integrate(
-          cell, solution, inertia_terms.get(), scratch, data);
-      },
-      [&](const Contribution &data) {
-        add_cell(data,
-                 *boundary_evaluator,
-                 internal_forces,
-                 viscous_forces,
-                 admissible);
-      },
-      Scratch(*element_space, n_local),
-      Contribution(n_local));
+    const auto         integrate =
+      [&](const auto &cell_or_position, Scratch &scratch, Contribution &data) {
+        cell_integration->integrate(body_cell_of(cell_or_position),
+                                    solution,
+                                    inertia_terms.get(),
+                                    scratch,
+                                    data);
+      };
+    const auto add = [&](const Contribution &data) {
+      add_cell(
+        data, *boundary_evaluator, internal_forces, viscous_forces, admissible);
+    };
+    if (processes::count() == 1)
+      WorkStream::run(dofs.begin_active(),
+                      dofs.end(),
+                      integrate,
+                      add,
+                      Scratch(*element_space, n_local),
+                      Contribution(n_local));
+    else
+      {
+        // On several processes each integrates its share of the cells
+        // (own_cells) and the sums are made whole on every process.
+        WorkStream::run(own_cells().begin(),
+                        own_cells().end(),
+                        integrate,
+                        add,
+                        Scratch(*element_space, n_local),
+                        Contribution(n_local));
+        linear_system->sum_over_processes();
+        processes::sum(internal_forces.begin(), internal_forces.size());
+        processes::sum(viscous_forces.begin(), viscous_forces.size());
+        processes::sum(unconstrained_residual.begin(),
+                       unconstrained_residual.size());
+        problem    = processes::first_message(problem);
+        admissible = problem.empty();
+      }
     if (inertia_terms)
       inertia_terms->set_viscous_forces(viscous_forces);
 
@@ -301,6 +336,28 @@ namespace glissade
                 "' is not finite (a load or a prescribed displacement out of "
                 "the range of double precision?)";
     return admissible && problem.empty();
+  }
+
+
+
+  const std::vector<BodyCell> &
+  Body::own_cells()
+  {
+    // A contiguous range of the active cells (their order is the mesh's,
+    // which the mesh types number row by row): process p of P takes cells
+    // n p / P to n (p + 1) / P.
+    if (own_cell_list.empty())
+      {
+        const std::size_t n     = dofs.get_triangulation().n_active_cells(),
+                          first = n * processes::rank() / processes::count(),
+                          end =
+                            n * (processes::rank() + 1) / processes::count();
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (cell->active_cell_index() >= first &&
+              cell->active_cell_index() < end)
+            own_cell_list.push_back(cell);
+      }
+    return own_cell_list;
   }
 
 

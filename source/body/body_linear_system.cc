@@ -5,6 +5,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <glissade/base/processes.h>
 #include <glissade/body/body_linear_system.h>
 
 namespace glissade
@@ -52,6 +53,25 @@ namespace glissade
   {
     iteration_constraints.distribute_local_to_global(
       cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
+  }
+
+
+
+  void
+  BodyLinearSystem::sum_over_processes()
+  {
+    if (processes::count() == 1)
+      return;
+    std::vector<double> values;
+    values.reserve(tangent.n_nonzero_elements() + system_rhs.size());
+    for (const auto &entry : tangent)
+      values.push_back(entry.value());
+    values.insert(values.end(), system_rhs.begin(), system_rhs.end());
+    processes::sum(values);
+    auto value = values.begin();
+    for (auto &entry : tangent)
+      entry.value() = *value++;
+    std::copy(value, values.end(), system_rhs.begin());
   }
 
 

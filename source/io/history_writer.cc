@@ -1,4 +1,5 @@
 #include <glissade/base/input_error.h>
+#include <glissade/base/processes.h>
 #include <glissade/base/text.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/io/atomic_file.h>
@@ -338,6 +339,9 @@ namespace glissade
   void
   HistoryWriter::write()
   {
+    // (in a run on several processes, process 0 writes the file)
+    if (!processes::writes_files())
+      return;
     if (rows_written == rows.size() && rows_written > 0)
       return;
     AtomicFile file(filename);

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <glissade/base/processes.h>
 #include <glissade/lac/direct_solver.h>
 
 #include <suitesparse/umfpack.h>
@@ -98,6 +99,25 @@ namespace glissade
     if (!same_pattern && symbolic != nullptr)
       umfpack_dl_free_symbolic(&symbolic);
 
+    if (processes::count() > 1)
+      {
+        if (distributed == nullptr)
+          distributed =
+            std::make_unique<MumpsFactorization>(processes::communicator());
+        const bool symmetric_matrix = symmetric && !unsymmetric_ordering;
+        distributed->set_last_unknowns(symmetric_matrix ? last_unknowns_sorted :
+                                                          std::vector<long>());
+        const double before =
+          distributed->analysis_seconds + distributed->factorization_seconds;
+        distributed->factorize(
+          n, row_start, column_index, values, symmetric_matrix, !same_pattern);
+        numeric_seconds += distributed->analysis_seconds +
+                           distributed->factorization_seconds - before;
+        ++(symmetric_matrix ? n_cholesky : n_lu);
+        factorization_current = true;
+        return true;
+      }
+
     // The pattern is symmetric (it comes from a DoFHandler), so the rows are
     // also the columns of A: Cholesky reads the arrays as they are.
     cholesky_used = false;
@@ -184,6 +204,11 @@ namespace glissade
   void
   DirectSolver::solve(Vector<double> &x) const
   {
+    if (distributed != nullptr)
+      {
+        distributed->solve(x);
+        return;
+      }
     if (cholesky_used)
       {
         schur.solve(x);

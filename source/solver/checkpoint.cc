@@ -96,6 +96,9 @@ namespace glissade
   void
   Simulation::write_checkpoint(const unsigned int increment)
   {
+    // (every process holds the same state: one file, written by one)
+    if (!writes_files)
+      return;
     TimerOutput::Scope scope(timer, timing::checkpoints);
     AtomicFile         file(checkpoint_file());
     file.write_and_commit([&](std::ostream &out) {

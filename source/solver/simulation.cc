@@ -5,6 +5,7 @@
 #include <glissade/base/debug_log.h>
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
+#include <glissade/base/processes.h>
 #include <glissade/base/progress_text.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/folding_corner.h>
@@ -24,6 +25,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace glissade
@@ -38,6 +40,7 @@ namespace glissade
   Simulation::Simulation(const SceneDescription &scene)
     : scene(scene)
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
+    , writes_files(processes::writes_files())
   {
     // Every body is built, and its boundary names checked against its mesh,
     // before the first mistake is reported: all of them in one message.
@@ -47,7 +50,7 @@ namespace glissade
       mistakes.collect([&]() {
         all_bodies.push_back(std::make_unique<Body>(description, scene.source));
         // A large mesh takes a while to set up: say what is happening.
-        if (scene.output.progress)
+        if (shows_progress())
           std::cout << "body '" << description.name << "': "
                     << all_bodies.back()->triangulation().n_active_cells()
                     << " cells, " << all_bodies.back()->n_dofs()
@@ -128,6 +131,9 @@ namespace glissade
       {
         double     residual = 0., scale = 0.;
         const bool admissible = assemble_bodies(residual, scale);
+        // (on several processes: each decision below is taken alike by all
+        // of them only if they hold the same numbers)
+        processes::check_identical(residual, "the Newton residual");
         if (!admissible || !std::isfinite(residual))
           {
             failure_cause = assembly_failure();
@@ -186,7 +192,7 @@ namespace glissade
           {
             failure_cause =
               "the contact problem: " + contact_problem->last_result().message;
-            if (scene.output.progress)
+            if (shows_progress())
               std::cout << "    contact: "
                         << contact_problem->last_result().message << std::endl;
             return false;
@@ -382,7 +388,7 @@ namespace glissade
       return false;
 
     ++stats.cut_backs;
-    if (scene.output.progress)
+    if (shows_progress())
       std::cout << "    cut-back: t = " << t_start << " -> " << t_end
                 << " bisected" << std::endl;
     const double t_mid = 0.5 * (t_start + t_end);
@@ -430,6 +436,8 @@ namespace glissade
   void
   Simulation::write_last_converged_state(const unsigned int increment)
   {
+    if (!writes_files)
+      return;
     try
       {
         output->write_last_converged_state(increment, current_time);
@@ -451,6 +459,8 @@ namespace glissade
   void
   Simulation::write_summary_file(const std::string &ending) const
   {
+    if (!writes_files)
+      return;
     AtomicFile file(scene.output.directory + "/summary.txt");
     file.stream() << summary() << '\n' << timing_table() << ending;
     file.commit();
@@ -463,8 +473,11 @@ namespace glissade
   {
     Timer wall;
     // One run per output directory at a time (held until run() returns).
-    const DirectoryLock output_lock(scene.output.directory,
-                                    scene.source + ": Output/Directory");
+    // (held by the process that writes the files)
+    std::optional<DirectoryLock> output_lock;
+    if (writes_files)
+      output_lock.emplace(scene.output.directory,
+                          scene.source + ": Output/Directory");
 
     const LoadProgram &program = scene.load_program;
     unsigned int       n_total = 0;
@@ -503,7 +516,7 @@ namespace glissade
                 throw;
               }
             ++stats.increments;
-            if (scene.output.progress)
+            if (shows_progress())
               report_increment(increment,
                                n_total,
                                t,
@@ -515,7 +528,8 @@ namespace glissade
             if (on_increment)
               on_increment(increment, t);
             const bool last = (increment == n_total);
-            output->write_increment(increment, t, last);
+            if (writes_files)
+              output->write_increment(increment, t, last);
 
             const bool stop = (increment == scene.checkpoint.stop_after);
             if (stop || checkpoint_due(increment))
@@ -523,7 +537,7 @@ namespace glissade
                 stats.wall_seconds = wall_before + wall.wall_time();
                 history->write();
                 write_checkpoint(increment);
-                if (scene.output.progress)
+                if (shows_progress())
                   std::cout << "checkpoint after increment " << increment
                             << ": " << checkpoint_file() << std::endl;
               }
@@ -532,7 +546,10 @@ namespace glissade
                 completed = false;
                 break;
               }
-            if (const int signal = interruption::signal_received())
+            // (every process stops after the same increment: the largest signal
+            // number any of them received)
+            if (const int signal =
+                  processes::maximum(interruption::signal_received()))
               {
                 history->write();
                 stats.wall_seconds = wall_before + wall.wall_time();
@@ -550,7 +567,8 @@ namespace glissade
                     " of " + std::to_string(n_total) +
                     " (Checkpoint/Stop after increment); continue with "
                     "--restart\n");
-    output->draw_pictures();
+    if (writes_files)
+      output->draw_pictures();
     return completed;
   }
 
@@ -563,11 +581,12 @@ namespace glissade
       {
         integrator->initialize();
         history->record(0, 0., 0);
-        output->write_initial_state();
+        if (writes_files)
+          output->write_initial_state();
         return 0;
       }
     const unsigned int restart_increment = read_checkpoint();
-    if (scene.output.progress)
+    if (shows_progress())
       std::cout << "restart after increment " << restart_increment
                 << " (t = " << current_time << ") from " << checkpoint_file()
                 << std::endl;
@@ -617,7 +636,8 @@ namespace glissade
     // or one written now)
     if (!checkpoint_due(increment))
       write_checkpoint(increment);
-    output->write_interrupted_state(increment, t, last);
+    if (writes_files)
+      output->write_interrupted_state(increment, t, last);
     write_summary_file("stopped by " + interruption::signal_name(signal) +
                        " after increment " + std::to_string(increment) +
                        " of " + std::to_string(n_total) +

@@ -158,6 +158,10 @@ namespace glissade
     serialize_state(Archive &archive);
 
   private:
+    /** The cells this process integrates in a run on several processes. */
+    const std::vector<dealii::DoFHandler<2>::active_cell_iterator> &
+    own_cells();
+
     /** assemble()'s copier: a cell and its loads to system and forces. */
     void
     add_cell(const CellIntegration::CellContribution &data,
@@ -185,7 +189,8 @@ namespace glissade
     std::string            problem;
     dealii::Vector<double> solution, stored_solution;
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
-    dealii::Vector<double> external_forces;        // F_ext, all dofs
+    std::vector<dealii::DoFHandler<2>::active_cell_iterator> own_cell_list;
+    dealii::Vector<double> external_forces; // F_ext, all dofs
     dealii::Vector<double> contact_forces, stored_contact_forces; // H^T r
     double                 internal_force_norm = 0., external_force_norm = 0.;
   };

@@ -67,6 +67,14 @@ namespace glissade
              const dealii::Vector<double>                       &cell_rhs,
              const std::vector<dealii::types::global_dof_index> &local_dofs);
 
+    /**
+     * In a run on several processes, where each assembled its share of the
+     * cells: the tangent and right-hand side summed over the processes, so
+     * that every process holds the whole system.
+     */
+    void
+    sum_over_processes();
+
     /** Adds nodal forces to the right-hand side, through the constraints. */
     void
     add_nodal_forces(const dealii::Vector<double> &forces);

@@ -3,8 +3,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <glissade/lac/mumps_factorization.h>
 #include <glissade/lac/schur_cholesky.h>
 
+#include <memory>
 #include <vector>
 
 namespace glissade
@@ -24,6 +26,11 @@ namespace glissade
    * block of A^-1 on those dofs without any back-substitution; if Cholesky
    * finds the matrix not positive definite (a tangent past a limit point),
    * that factorisation falls back on LU.
+   *
+   * In a run on several processes (mpirun), the matrix is factorised by
+   * all of them together with MUMPS instead (MumpsFactorization): LDL^T
+   * with the contact dofs' Schur complement where it is symmetric, LU
+   * otherwise; the interface is the same.
    */
   class DirectSolver
   {
@@ -77,7 +84,17 @@ namespace glissade
     bool
     has_inverse_block() const
     {
-      return cholesky_used;
+      return cholesky_used ||
+             (distributed != nullptr && distributed->has_inverse_block());
+    }
+
+    /** The block of A^-1 on the last unknowns (has_inverse_block()). */
+    TrailingBlockInverse &
+    inverse_block()
+    {
+      if (distributed != nullptr)
+        return *distributed;
+      return schur;
     }
 
     SchurCholesky &
@@ -123,5 +140,7 @@ namespace glissade
     bool              unsymmetric_ordering = false;
     bool              cholesky_used        = false;
     SchurCholesky     schur;
+    /** The factorisation of a run on several processes. */
+    std::unique_ptr<MumpsFactorization> distributed;
   };
 } // namespace glissade

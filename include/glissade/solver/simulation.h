@@ -203,6 +203,13 @@ namespace glissade
     void
     write_summary_file(const std::string &ending) const;
 
+    /** Progress lines: asked for, and this process prints them. */
+    bool
+    shows_progress() const
+    {
+      return scene.output.progress && writes_files;
+    }
+
     /** <Output directory>/checkpoint.bin */
     std::string
     checkpoint_file() const;
@@ -235,7 +242,12 @@ namespace glissade
     std::vector<double>          residual_history;
     /** Counters; times restored from a checkpoint (0 in a fresh run). */
     RunStatistics stats;
-    unsigned int  iterations_of_step = 0;
-    double        current_time       = 0.;
+    /**
+     * True on the process that writes the files (process 0 of a run on
+     * several: every process holds the whole state, doc/parallel.md).
+     */
+    const bool   writes_files;
+    unsigned int iterations_of_step = 0;
+    double       current_time       = 0.;
   };
 } // namespace glissade

@@ -1,3 +1,4 @@
+#include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/step/condensed_problem.h>
 
@@ -532,10 +533,37 @@ namespace glissade
         bodies[b]->system().compliance_block(body.row_dofs,
                                              body.column_dofs,
                                              C);
-        if (dense_is_cheaper(body))
-          add_dense_products(body, C, all_rows.size(), products);
-        else
-          add_sparse_products(body, C, all_rows.size(), products);
+        const bool dense = dense_is_cheaper(body);
+        const auto add   = [&](const BodyProducts  &part,
+                             std::vector<double> &sums) {
+          if (dense)
+            add_dense_products(part, C, all_rows.size(), sums);
+          else
+            add_sparse_products(part, C, all_rows.size(), sums);
+        };
+        if (processes::count() == 1)
+          {
+            add(body, products);
+            continue;
+          }
+        // On several processes, each forms the products of its share of
+        // the loads (a slice of the columns, the others left zero) and the
+        // slices are summed: an entry is one process's value plus zeros, the
+        // same bits on every process, and the same arithmetic per entry as
+        // one process does.
+        const std::size_t n_loads = body.loads.size(), rank = processes::rank(),
+                          count = processes::count();
+        BodyProducts share;
+        share.row_dofs    = body.row_dofs;
+        share.column_dofs = body.column_dofs;
+        share.rows        = body.rows;
+        share.loads.assign(body.loads.begin() + n_loads * rank / count,
+                           body.loads.begin() + n_loads * (rank + 1) / count);
+        std::vector<double> slice(products.size(), 0.);
+        add(share, slice);
+        processes::sum(slice);
+        for (std::size_t i = 0; i < products.size(); ++i)
+          products[i] += slice[i];
       }
   }
 

@@ -1,0 +1,116 @@
+#pragma once
+
+#include <deal.II/lac/vector.h>
+
+#include <glissade/lac/trailing_block_inverse.h>
+
+#include <mpi.h>
+
+#include <memory>
+#include <vector>
+
+namespace glissade
+{
+  /**
+   * A body's matrix factorised by all the processes of the run together,
+   * with MUMPS (its C interface, distributed assembled input): the
+   * factorisation of a run on several processes, where one process uses
+   * CHOLMOD or UMFPACK (DirectSolver chooses).
+   *
+   * Every process holds the same matrix (the scene is replicated) and
+   * hands MUMPS its own slice of rows, so the factor, the largest object
+   * of a solve, is shared out. A symmetric matrix is factorised as LDL^T
+   * with the contact dofs kept out of the factor: MUMPS returns their
+   * Schur complement S, whose dense Cholesky factor gives the block of
+   * A^-1 on them (TrailingBlockInverse) as the trailing block of CHOLMOD's
+   * factor does on one process. A solve then goes through S: MUMPS
+   * condenses the right-hand side on the contact dofs, S is solved on
+   * process 0, and MUMPS expands the solution. An unsymmetric matrix is
+   * factorised LU, with no Schur complement.
+   *
+   * Right-hand sides and solutions are whole vectors, the same on every
+   * process (process 0's are broadcast). Every member is collective:
+   * every process calls it, in the same order.
+   */
+  class MumpsFactorization : public TrailingBlockInverse
+  {
+  public:
+    explicit MumpsFactorization(MPI_Comm communicator);
+    MumpsFactorization(const MumpsFactorization &) = delete;
+    MumpsFactorization &
+    operator=(const MumpsFactorization &) = delete;
+    ~MumpsFactorization() override;
+
+    /**
+     * The unknowns to keep out of the factor (sorted, unique), whose Schur
+     * complement is formed; a change redoes the analysis.
+     */
+    void
+    set_last_unknowns(const std::vector<long> &unknowns);
+
+    /**
+     * Analysis (first call, a new pattern, other last unknowns, or the
+     * other symmetry) and numeric factorisation of the n x n matrix in
+     * compressed-row form, columns sorted in each row. Symmetric: LDL^T
+     * with the Schur complement on the last unknowns (the upper triangle
+     * is read); otherwise LU, with no last unknowns.
+     */
+    void
+    factorize(const long                 n,
+              const std::vector<long>   &row_start,
+              const std::vector<long>   &column_index,
+              const std::vector<double> &values,
+              const bool                 symmetric,
+              const bool                 new_pattern);
+
+    /** x <- A^-1 x. */
+    void
+    solve(dealii::Vector<double> &x) const;
+
+    /**
+     * True if the Schur complement on the last unknowns is positive
+     * definite, so that the block of A^-1 on them is available.
+     */
+    bool
+    has_inverse_block() const
+    {
+      return schur_is_positive;
+    }
+
+    double analysis_seconds      = 0.;
+    double factorization_seconds = 0.;
+
+  private:
+    void
+    trailing_factor(std::vector<double> &factor) const override;
+
+    /** Calls MUMPS for `job`; throws with its error, on every process. */
+    void
+    call(const int job, const char *phase) const;
+
+    /** Process 0: S from MUMPS, its LU and (if positive) Cholesky factors. */
+    void
+    factorize_schur_complement();
+
+    struct Instance;
+    std::unique_ptr<Instance> mumps;
+    MPI_Comm                  communicator;
+    bool                      symmetric_instance = false;
+    bool                      analysed           = false;
+    std::vector<long>         last_unknowns;
+    bool                      schur_is_positive = false;
+
+    /** This process's rows, 1-based indices, and the values. */
+    std::vector<int>    row_of_entry, column_of_entry;
+    std::vector<double> local_values;
+    /** The last unknowns, 1-based, as MUMPS reads them. */
+    std::vector<int> schur_list;
+    /** Process 0: S (column major, m x m), its LU and pivots, L_S. */
+    std::vector<double> schur, schur_lu, schur_cholesky;
+    std::vector<int>    schur_pivots;
+    /** L_S on the other processes, received once per factorisation. */
+    mutable std::vector<double> received_cholesky;
+    mutable bool                cholesky_received = false;
+    mutable std::vector<double> rhs, reduced_rhs;
+  };
+} // namespace glissade

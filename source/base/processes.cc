@@ -1,0 +1,127 @@
+// The processes of a run (include/glissade/base/processes.h).
+
+#include <deal.II/base/mpi.h>
+
+#include <glissade/base/processes.h>
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace glissade
+{
+  namespace processes
+  {
+    unsigned int
+    count()
+    {
+      return dealii::Utilities::MPI::job_supports_mpi() ?
+               dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) :
+               1;
+    }
+
+
+
+    unsigned int
+    rank()
+    {
+      return dealii::Utilities::MPI::job_supports_mpi() ?
+               dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) :
+               0;
+    }
+
+
+
+    MPI_Comm
+    communicator()
+    {
+      return dealii::Utilities::MPI::job_supports_mpi() ? MPI_COMM_WORLD :
+                                                          MPI_COMM_SELF;
+    }
+
+
+
+    void
+    sum(double *values, const std::size_t n)
+    {
+      if (count() == 1 || n == 0)
+        return;
+      // (in chunks: MPI counts are int)
+      constexpr std::size_t chunk = std::size_t(1) << 28;
+      for (std::size_t start = 0; start < n; start += chunk)
+        {
+          const int size = std::min(chunk, n - start);
+          if (rank() == 0)
+            MPI_Reduce(MPI_IN_PLACE,
+                       values + start,
+                       size,
+                       MPI_DOUBLE,
+                       MPI_SUM,
+                       0,
+                       communicator());
+          else
+            MPI_Reduce(values + start,
+                       nullptr,
+                       size,
+                       MPI_DOUBLE,
+                       MPI_SUM,
+                       0,
+                       communicator());
+          MPI_Bcast(values + start, size, MPI_DOUBLE, 0, communicator());
+        }
+    }
+
+
+
+    std::string
+    first_message(const std::string &message)
+    {
+      if (count() == 1)
+        return message;
+      int first = message.empty() ? int(count()) : int(rank());
+      MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, communicator());
+      if (first == int(count()))
+        return std::string();
+      int length = message.size();
+      MPI_Bcast(&length, 1, MPI_INT, first, communicator());
+      std::string text = message;
+      text.resize(length);
+      MPI_Bcast(text.data(), length, MPI_CHAR, first, communicator());
+      return text;
+    }
+
+
+
+    int
+    maximum(const int value)
+    {
+      if (count() == 1)
+        return value;
+      int result = value;
+      MPI_Allreduce(MPI_IN_PLACE, &result, 1, MPI_INT, MPI_MAX, communicator());
+      return result;
+    }
+
+
+
+    void
+    check_identical(const double value, const char *what)
+    {
+      if (count() == 1)
+        return;
+      // Process 0's bits, compared everywhere; the verdict gathered, so
+      // that every process throws (or none does).
+      double reference = value;
+      MPI_Bcast(&reference, 1, MPI_DOUBLE, 0, communicator());
+      int differs = std::memcmp(&reference, &value, sizeof(double)) != 0;
+      MPI_Allreduce(
+        MPI_IN_PLACE, &differs, 1, MPI_INT, MPI_MAX, communicator());
+      if (differs != 0)
+        throw std::runtime_error(
+          std::string("the processes of this run no longer agree on ") + what +
+          " (a computation that gives other bits on another process: "
+          "please report it, with the scene)");
+    }
+  } // namespace processes
+} // namespace glissade

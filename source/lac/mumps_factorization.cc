@@ -1,0 +1,309 @@
+// A body's matrix factorised by all the processes of a run together
+// (include/glissade/lac/mumps_factorization.h).
+
+#include <glissade/lac/mumps_factorization.h>
+
+#include <dmumps_c.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+extern "C" void
+dgetrf_(const int *m,
+        const int *n,
+        double    *a,
+        const int *lda,
+        int       *ipiv,
+        int       *info);
+extern "C" void
+dgetrs_(const char   *trans,
+        const int    *n,
+        const int    *nrhs,
+        const double *a,
+        const int    *lda,
+        const int    *ipiv,
+        double       *b,
+        const int    *ldb,
+        int          *info);
+extern "C" void
+dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
+
+// MUMPS's controls and results, numbered as in its user's guide.
+#define ICNTL(I) icntl[(I)-1]
+#define INFOG(I) infog[(I)-1]
+
+namespace glissade
+{
+  namespace
+  {
+    double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+        .count();
+    }
+  } // namespace
+
+  struct MumpsFactorization::Instance
+  {
+    DMUMPS_STRUC_C id{};
+  };
+
+
+
+  MumpsFactorization::MumpsFactorization(MPI_Comm comm)
+  {
+    // (a communicator of its own: MUMPS's messages never meet another
+    // factorisation's or the program's)
+    MPI_Comm_dup(comm, &communicator);
+  }
+
+
+
+  MumpsFactorization::~MumpsFactorization()
+  {
+    if (mumps)
+      {
+        mumps->id.job = -2;
+        dmumps_c(&mumps->id);
+      }
+    MPI_Comm_free(&communicator);
+  }
+
+
+
+  void
+  MumpsFactorization::call(const int job, const char *phase) const
+  {
+    mumps->id.job = job;
+    dmumps_c(&mumps->id);
+    const int error = mumps->id.INFOG(1);
+    if (error >= 0)
+      return;
+    // (INFOG is the same on every process: all of them throw)
+    std::string message = std::string("MUMPS ") + phase +
+                          " failed with INFOG(1) = " + std::to_string(error) +
+                          ", INFOG(2) = " + std::to_string(mumps->id.INFOG(2));
+    if (error == -10)
+      message += " (singular tangent matrix: is every body held against "
+                 "rigid-body motion by its supports?)";
+    if (error == -9 || error == -8 || error == -13)
+      message += " (out of memory)";
+    throw std::runtime_error(message);
+  }
+
+
+
+  void
+  MumpsFactorization::set_last_unknowns(const std::vector<long> &unknowns)
+  {
+    if (unknowns != last_unknowns)
+      {
+        last_unknowns = unknowns;
+        analysed      = false;
+      }
+  }
+
+
+
+  void
+  MumpsFactorization::factorize(const long                 n,
+                                const std::vector<long>   &row_start,
+                                const std::vector<long>   &column_index,
+                                const std::vector<double> &values,
+                                const bool                 symmetric,
+                                const bool                 new_pattern)
+  {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(communicator, &rank);
+    MPI_Comm_size(communicator, &size);
+    if (!mumps || symmetric != symmetric_instance)
+      {
+        if (mumps)
+          {
+            mumps->id.job = -2;
+            dmumps_c(&mumps->id);
+          }
+        mumps                  = std::make_unique<Instance>();
+        mumps->id.comm_fortran = MPI_Comm_c2f(communicator);
+        mumps->id.par          = 1; // process 0 works too
+        mumps->id.sym          = symmetric ? 2 : 0;
+        call(-1, "initialisation");
+        symmetric_instance = symmetric;
+        analysed           = false;
+        auto &id           = mumps->id;
+        id.ICNTL(1)        = -1; // no messages: errors are thrown
+        id.ICNTL(2)        = -1;
+        id.ICNTL(3)        = -1;
+        id.ICNTL(4)        = 0;
+        id.ICNTL(18)       = 3; // distributed assembled matrix
+        id.ICNTL(20)       = 0; // dense right-hand side, on process 0
+        id.ICNTL(21)       = 0; // solution on process 0
+      }
+    const std::vector<long> &kept_out =
+      symmetric ? last_unknowns : std::vector<long>();
+
+    // This process's rows (of the upper triangle if symmetric).
+    const long first = n * rank / size, end = n * (rank + 1) / size;
+    if (new_pattern || !analysed)
+      {
+        row_of_entry.clear();
+        column_of_entry.clear();
+        for (long i = first; i < end; ++i)
+          for (long k = row_start[i]; k < row_start[i + 1]; ++k)
+            if (!symmetric || column_index[k] >= i)
+              {
+                row_of_entry.push_back(i + 1);
+                column_of_entry.push_back(column_index[k] + 1);
+              }
+      }
+    local_values.clear();
+    for (long i = first; i < end; ++i)
+      for (long k = row_start[i]; k < row_start[i + 1]; ++k)
+        if (!symmetric || column_index[k] >= i)
+          local_values.push_back(values[k]);
+
+    auto &id   = mumps->id;
+    id.n       = n;
+    id.nnz_loc = row_of_entry.size();
+    id.irn_loc = row_of_entry.data();
+    id.jcn_loc = column_of_entry.data();
+    id.a_loc   = local_values.data();
+
+    const auto start = std::chrono::steady_clock::now();
+    if (new_pattern || !analysed)
+      {
+        n_last = kept_out.size();
+        schur_list.assign(kept_out.begin(), kept_out.end());
+        for (int &i : schur_list)
+          ++i;
+        id.ICNTL(19)     = n_last > 0 ? 1 : 0;
+        id.size_schur    = n_last;
+        id.listvar_schur = n_last > 0 ? schur_list.data() : nullptr;
+        schur.assign(rank == 0 ? std::size_t(n_last) * n_last : 0, 0.);
+        id.schur = rank == 0 && n_last > 0 ? schur.data() : nullptr;
+        call(1, "analysis");
+        position.assign(n, -1);
+        for (long k = 0; k < n_last; ++k)
+          position[kept_out[k]] = k;
+        analysed = true;
+        analysis_seconds += seconds_since(start);
+      }
+    const auto numeric_start = std::chrono::steady_clock::now();
+    call(2, "factorisation");
+    factorize_schur_complement();
+    factorization_seconds += seconds_since(numeric_start);
+    forget_inverse_columns();
+    cholesky_received = false;
+  }
+
+
+
+  void
+  MumpsFactorization::factorize_schur_complement()
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    int positive = 0;
+    if (rank == 0 && n_last > 0)
+      {
+        // MUMPS returns one triangle of a symmetric S (by rows: the lower
+        // one, that is the upper one column major): mirror it.
+        const long m = n_last;
+        for (long j = 0; j < m; ++j)
+          for (long i = j + 1; i < m; ++i)
+            schur[i + j * m] = schur[j + i * m];
+        const int size = m;
+        int       info = 0;
+        schur_lu       = schur;
+        schur_pivots.resize(m);
+        dgetrf_(
+          &size, &size, schur_lu.data(), &size, schur_pivots.data(), &info);
+        if (info != 0)
+          throw std::runtime_error(
+            "the Schur complement on the contact dofs is singular (LAPACK "
+            "dgetrf info " +
+            std::to_string(info) + ")");
+        schur_cholesky = schur;
+        dpotrf_("L", &size, schur_cholesky.data(), &size, &info);
+        positive = info == 0;
+      }
+    MPI_Bcast(&positive, 1, MPI_INT, 0, communicator);
+    schur_is_positive = positive != 0;
+  }
+
+
+
+  void
+  MumpsFactorization::trailing_factor(std::vector<double> &factor) const
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    if (rank == 0)
+      {
+        factor = schur_cholesky;
+        if (!cholesky_received)
+          MPI_Bcast(factor.data(), factor.size(), MPI_DOUBLE, 0, communicator);
+        cholesky_received = true;
+        return;
+      }
+    if (!cholesky_received)
+      {
+        received_cholesky.resize(std::size_t(n_last) * n_last);
+        MPI_Bcast(received_cholesky.data(),
+                  received_cholesky.size(),
+                  MPI_DOUBLE,
+                  0,
+                  communicator);
+        cholesky_received = true;
+      }
+    factor = received_cholesky;
+  }
+
+
+
+  void
+  MumpsFactorization::solve(dealii::Vector<double> &x) const
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    auto &id = mumps->id;
+    rhs.assign(x.begin(), x.end());
+    id.rhs  = rank == 0 ? rhs.data() : nullptr;
+    id.nrhs = 1;
+    id.lrhs = x.size();
+    if (n_last > 0)
+      {
+        // Condensed on the contact dofs, S solved here, then expanded.
+        reduced_rhs.assign(n_last, 0.);
+        id.redrhs    = rank == 0 ? reduced_rhs.data() : nullptr;
+        id.lredrhs   = n_last;
+        id.ICNTL(26) = 1;
+        call(3, "solve (condensation)");
+        if (rank == 0)
+          {
+            const int size = n_last, one = 1;
+            int       info = 0;
+            dgetrs_("N",
+                    &size,
+                    &one,
+                    schur_lu.data(),
+                    &size,
+                    schur_pivots.data(),
+                    reduced_rhs.data(),
+                    &size,
+                    &info);
+          }
+        id.ICNTL(26) = 2;
+        call(3, "solve (expansion)");
+        id.ICNTL(26) = 0;
+      }
+    else
+      call(3, "solve");
+    MPI_Bcast(rhs.data(), rhs.size(), MPI_DOUBLE, 0, communicator);
+    std::copy(rhs.begin(), rhs.end(), x.begin());
+  }
+} // namespace glissade
