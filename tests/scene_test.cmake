@@ -16,6 +16,11 @@
 #   HELD        a run in an output directory another run holds is refused.
 #   CHANGED_MESH  a restart after the mesh file changed is refused (MESH).
 #   PARAMETERS  `glissade --print-parameters` equals the file INPUT.
+#   PROCESSES   run on one process and under mpirun on PROCESSES: the same
+#               figures (tests/compare_processes.py; with STATUSES, the
+#               stick/slip statuses too). With STOP, the run on PROCESSES
+#               stops after increment STOP and is continued by --restart on
+#               PROCESSES + 1 processes.
 #
 # Lists (ARGS, COMPARES, OUTPUT_MATCHES) come with "@@" between items. A
 # COMPARE is three items: the output file (relative to the work folder),
@@ -285,6 +290,47 @@ elseif(MODE STREQUAL "PARAMETERS")
   if(NOT status EQUAL 0 OR NOT printed STREQUAL reference)
     message(FATAL_ERROR "${INPUT} is out of date: regenerate it with "
                         "`glissade --print-parameters > doc/parameters.prm`")
+  endif()
+
+elseif(MODE STREQUAL "PROCESSES")
+  file(REMOVE_RECURSE ${WORKDIR}/one ${WORKDIR}/many)
+  file(MAKE_DIRECTORY ${WORKDIR})
+  run_program(${WORKDIR} 0 --set "Output/Directory=${WORKDIR}/one")
+  # (as root in CI's container: Open MPI asks to be told; more processes
+  # than cores: allowed, they wait for each other; in a container the
+  # kernel may refuse the cross-memory copy Open MPI tries first)
+  set(ENV{OMPI_MCA_btl_vader_single_copy_mechanism} none)
+  function(run_on_processes n)
+    execute_process(
+      COMMAND ${MPIEXEC} --allow-run-as-root --oversubscribe -np ${n}
+              ${PROGRAM} ${INPUT} ${args}
+              --set "Output/Directory=${WORKDIR}/many" ${ARGN}
+      RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err
+      WORKING_DIRECTORY ${WORKDIR})
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "mpirun -np ${n} glissade ${ARGN}: exit ${status}"
+                          "\n${out}\n${err}")
+    endif()
+  endfunction()
+  if(STOP)
+    run_on_processes(${PROCESSES}
+      --set "Checkpoint/Stop after increment=${STOP}")
+    math(EXPR more "${PROCESSES} + 1")
+    run_on_processes(${more} --restart)
+  else()
+    run_on_processes(${PROCESSES})
+  endif()
+  set(statuses "")
+  if(STATUSES)
+    set(statuses --statuses)
+  endif()
+  execute_process(
+    COMMAND ${PYTHON} ${SOURCE_DIR}/tests/compare_processes.py
+            ${WORKDIR}/one ${WORKDIR}/many ${statuses}
+    RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "1 and ${PROCESSES} processes disagree")
   endif()
 
 else()
