@@ -7,8 +7,9 @@ Every CSV file of the one-process folder (history.csv, the contact tables)
 must be in the other folder with the same rows and columns, and:
 - numbers agree to 1e-10 relative to the largest magnitude of their kind in
   the file (lengths: coordinates, gaps, slips, displacements; forces: every
-  contact force and reaction; tractions: pressure and shear; any other
-  column: itself), so that
+  contact force and reaction; tractions: pressure and shear; momenta;
+  energies: kinetic, strain, work, dissipations and their balance; any
+  other column: itself), so that
   a quantity that is zero but for round-off (a gap in contact, a
   frictionless tangential force) is judged against the scale of its kind
   (sums in another order round otherwise: no bit-for-bit claim),
@@ -41,12 +42,18 @@ def number(text):
 FORCE_WORDS = ("r_n", "r_t", "_f_", "Fx", "Fy", "fx", "fy", "reaction",
                "force")
 TRACTION_WORDS = ("pressure", "shear")
+ENERGY_WORDS = ("energy", "work_of", "dissipation")
+MOMENTUM_WORDS = ("_px", "_py")
 LENGTH_WORDS = ("gap", "slip", "tributary", "_ux_", "_uy_")
 
 
 def kind(column):
     if any(w in column for w in TRACTION_WORDS):
         return "traction"
+    if any(w in column for w in ENERGY_WORDS):
+        return "energy"
+    if any(column.endswith(w) for w in MOMENTUM_WORDS):
+        return "momentum"
     if any(w in column for w in FORCE_WORDS) or column == "f":
         return "force"
     if column in ("X", "Y", "x", "y") or any(w in column

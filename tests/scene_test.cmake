@@ -300,6 +300,9 @@ elseif(MODE STREQUAL "PROCESSES")
   # than cores: allowed, they wait for each other; in a container the
   # kernel may refuse the cross-memory copy Open MPI tries first)
   set(ENV{OMPI_MCA_btl_vader_single_copy_mechanism} none)
+  # (a process waiting for the others gives up its core rather than spin:
+  # 3 processes share 2 cores here)
+  set(ENV{OMPI_MCA_mpi_yield_when_idle} 1)
   function(run_on_processes n)
     execute_process(
       COMMAND ${MPIEXEC} --allow-run-as-root --oversubscribe -np ${n}
