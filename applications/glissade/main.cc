@@ -241,6 +241,10 @@ main(int argc, char **argv)
       else
         std::cerr << "glissade (process " << processes::rank()
                   << "): error: " << text::essential_message(e) << std::endl;
+      // (the other processes may be waiting for this one in a collective
+      // call: stop them all rather than hang)
+      if (processes::count() > 1)
+        MPI_Abort(MPI_COMM_WORLD, 4);
       return 4;
     }
   return 0;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -65,6 +66,12 @@ namespace glissade
 
   MumpsFactorization::~MumpsFactorization()
   {
+    // Ending MUMPS is collective: skipped while an exception unwinds the
+    // stack, which one process alone may be doing (the others would never
+    // join); the program then ends, and MPI_Abort stops the others
+    // (applications/glissade/main.cc).
+    if (std::uncaught_exceptions() > 0)
+      return;
     if (mumps)
       {
         mumps->id.job = -2;
@@ -207,7 +214,9 @@ namespace glissade
   {
     int rank = 0;
     MPI_Comm_rank(communicator, &rank);
-    int positive = 0;
+    // (process 0's verdicts sent to all, so that every process throws or
+    // none does)
+    int positive = 0, singular = 0;
     if (rank == 0 && n_last > 0)
       {
         // MUMPS returns one triangle of a symmetric S (by rows: the lower
@@ -222,17 +231,20 @@ namespace glissade
         schur_pivots.resize(m);
         dgetrf_(
           &size, &size, schur_lu.data(), &size, schur_pivots.data(), &info);
-        if (info != 0)
-          throw std::runtime_error(
-            "the Schur complement on the contact dofs is singular (LAPACK "
-            "dgetrf info " +
-            std::to_string(info) + ")");
+        singular       = info;
         schur_cholesky = schur;
         dpotrf_("L", &size, schur_cholesky.data(), &size, &info);
         positive = info == 0;
       }
-    MPI_Bcast(&positive, 1, MPI_INT, 0, communicator);
-    schur_is_positive = positive != 0;
+    int verdicts[2] = {positive, singular};
+    MPI_Bcast(verdicts, 2, MPI_INT, 0, communicator);
+    if (verdicts[1] != 0)
+      throw std::runtime_error(
+        "the Schur complement on the contact dofs is singular (LAPACK "
+        "dgetrf info " +
+        std::to_string(verdicts[1]) +
+        "): is every body held against rigid-body motion by its supports?");
+    schur_is_positive = verdicts[0] != 0;
   }
 
 

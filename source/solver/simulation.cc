@@ -473,11 +473,23 @@ namespace glissade
   {
     Timer wall;
     // One run per output directory at a time (held until run() returns).
-    // (held by the process that writes the files)
+    // (held by the process that writes the files; its refusal is every
+    // process's, or the others would wait for it forever)
     std::optional<DirectoryLock> output_lock;
+    std::string                  refused;
     if (writes_files)
-      output_lock.emplace(scene.output.directory,
-                          scene.source + ": Output/Directory");
+      try
+        {
+          output_lock.emplace(scene.output.directory,
+                              scene.source + ": Output/Directory");
+        }
+      catch (const InputError &e)
+        {
+          refused = e.what();
+        }
+    refused = processes::first_message(refused);
+    if (!refused.empty())
+      throw InputError("", refused);
 
     const LoadProgram &program = scene.load_program;
     unsigned int       n_total = 0;
