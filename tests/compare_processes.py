@@ -39,7 +39,7 @@ def number(text):
         return None
 
 
-FORCE_WORDS = ("r_n", "r_t", "_f_", "Fx", "Fy", "fx", "fy", "reaction",
+FORCE_WORDS = ("r_n", "r_t", "_f_", "Fx", "Fy", "fx", "fy", "_Rx_", "_Ry_",
                "force")
 TRACTION_WORDS = ("pressure", "shear")
 ENERGY_WORDS = ("energy", "work_of", "dissipation")
