@@ -1,19 +1,9 @@
 #include <glissade/body/rigid_motion.h>
+#include <glissade/lac/lapack.h>
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-
-extern "C" void
-dsyev_(const char *jobz,
-       const char *uplo,
-       const int  *n,
-       double     *a,
-       const int  *lda,
-       double     *w,
-       double     *work,
-       const int  *lwork,
-       int        *info);
 
 namespace glissade
 {

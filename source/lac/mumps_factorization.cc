@@ -1,6 +1,7 @@
 // A body's matrix factorised by all the processes of a run together
 // (include/glissade/lac/mumps_factorization.h).
 
+#include <glissade/lac/lapack.h>
 #include <glissade/lac/mumps_factorization.h>
 
 #include <dmumps_c.h>
@@ -11,25 +12,6 @@
 #include <stdexcept>
 #include <string>
 
-extern "C" void
-dgetrf_(const int *m,
-        const int *n,
-        double    *a,
-        const int *lda,
-        int       *ipiv,
-        int       *info);
-extern "C" void
-dgetrs_(const char   *trans,
-        const int    *n,
-        const int    *nrhs,
-        const double *a,
-        const int    *lda,
-        const int    *ipiv,
-        double       *b,
-        const int    *ldb,
-        int          *info);
-extern "C" void
-dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
 
 // MUMPS's controls and results, numbered as in its user's guide.
 #define ICNTL(I) icntl[(I)-1]

@@ -1,24 +1,13 @@
 // The block of A^-1 on the unknowns eliminated last
 // (include/glissade/lac/trailing_block_inverse.h).
 
+#include <glissade/lac/lapack.h>
 #include <glissade/lac/trailing_block_inverse.h>
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
-
-extern "C" void
-dpotri_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-extern "C" void
-dpotrs_(const char   *uplo,
-        const int    *n,
-        const int    *nrhs,
-        const double *a,
-        const int    *lda,
-        double       *b,
-        const int    *ldb,
-        int          *info);
 
 namespace glissade
 {

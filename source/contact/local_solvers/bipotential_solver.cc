@@ -1,18 +1,9 @@
 #include <glissade/contact/local_solvers/bipotential_solver.h>
+#include <glissade/lac/lapack.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
-extern "C" void
-dgesv_(const int *n,
-       const int *nrhs,
-       double    *a,
-       const int *lda,
-       int       *ipiv,
-       double    *b,
-       const int *ldb,
-       int       *info);
 
 namespace glissade
 {

@@ -1,60 +1,10 @@
 #include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/step/condensed_problem.h>
+#include <glissade/lac/lapack.h>
 
 #include <algorithm>
 #include <map>
-
-extern "C" void
-dgetrf_(const int *m,
-        const int *n,
-        double    *a,
-        const int *lda,
-        int       *ipiv,
-        int       *info);
-extern "C" void
-dgemm_(const char   *transa,
-       const char   *transb,
-       const int    *m,
-       const int    *n,
-       const int    *k,
-       const double *alpha,
-       const double *a,
-       const int    *lda,
-       const double *b,
-       const int    *ldb,
-       const double *beta,
-       double       *c,
-       const int    *ldc);
-extern "C" double
-dlange_(const char   *norm,
-        const int    *m,
-        const int    *n,
-        const double *a,
-        const int    *lda,
-        double       *work);
-extern "C" void
-dgecon_(const char   *norm,
-        const int    *n,
-        const double *a,
-        const int    *lda,
-        const double *anorm,
-        double       *rcond,
-        double       *work,
-        int          *iwork,
-        int          *info);
-extern "C" void
-dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info);
-extern "C" void
-dgetrs_(const char   *trans,
-        const int    *n,
-        const int    *nrhs,
-        const double *a,
-        const int    *lda,
-        const int    *ipiv,
-        double       *b,
-        const int    *ldb,
-        int          *info);
 
 namespace glissade
 {
