@@ -8,6 +8,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
@@ -70,6 +71,46 @@ namespace glissade
                        communicator());
           MPI_Bcast(values + start, size, MPI_DOUBLE, 0, communicator());
         }
+    }
+
+
+
+    std::pair<std::size_t, std::size_t>
+    share(const std::size_t n)
+    {
+      const std::size_t p = rank(), P = count();
+      return {n * p / P, n * (p + 1) / P};
+    }
+
+
+
+    void
+    gather_columns(double           *matrix,
+                   const std::size_t rows,
+                   const std::size_t columns)
+    {
+      if (count() == 1 || rows == 0 || columns == 0)
+        return;
+      // Counted in columns (an MPI type of one column): a count of doubles
+      // would overflow MPI's int at some 2^31 entries.
+      MPI_Datatype column;
+      MPI_Type_contiguous(int(rows), MPI_DOUBLE, &column);
+      MPI_Type_commit(&column);
+      std::vector<int> counts(count()), offsets(count());
+      for (unsigned int p = 0; p < count(); ++p)
+        {
+          offsets[p] = columns * p / count();
+          counts[p]  = columns * (p + 1) / count() - offsets[p];
+        }
+      MPI_Allgatherv(MPI_IN_PLACE,
+                     0,
+                     MPI_DATATYPE_NULL,
+                     matrix,
+                     counts.data(),
+                     offsets.data(),
+                     column,
+                     communicator());
+      MPI_Type_free(&column);
     }
 
 

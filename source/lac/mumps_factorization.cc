@@ -207,16 +207,24 @@ namespace glissade
         for (long j = 0; j < m; ++j)
           for (long i = j + 1; i < m; ++i)
             schur[i + j * m] = schur[j + i * m];
+        // Cholesky first: a positive S needs nothing else (its factor gives
+        // the inverse block and the solves); an LU only for an indefinite
+        // one (a tangent that is not positive definite).
         const int size = m;
         int       info = 0;
-        schur_lu       = schur;
-        schur_pivots.resize(m);
-        dgetrf_(
-          &size, &size, schur_lu.data(), &size, schur_pivots.data(), &info);
-        singular       = info;
         schur_cholesky = schur;
         dpotrf_("L", &size, schur_cholesky.data(), &size, &info);
         positive = info == 0;
+        if (positive)
+          std::vector<double>().swap(schur_lu);
+        else
+          {
+            schur_lu = schur;
+            schur_pivots.resize(m);
+            dgetrf_(
+              &size, &size, schur_lu.data(), &size, schur_pivots.data(), &info);
+            singular = info;
+          }
       }
     int verdicts[2] = {positive, singular};
     MPI_Bcast(verdicts, 2, MPI_INT, 0, communicator);
@@ -232,7 +240,8 @@ namespace glissade
 
 
   void
-  MumpsFactorization::trailing_factor(std::vector<double> &factor) const
+  MumpsFactorization::trailing_factor(std::vector<double> &factor,
+                                      const bool           last_use) const
   {
     int rank = 0;
     MPI_Comm_rank(communicator, &rank);
@@ -254,7 +263,15 @@ namespace glissade
                   communicator);
         cholesky_received = true;
       }
-    factor = received_cholesky;
+    else if (received_cholesky.empty())
+      throw std::logic_error("MumpsFactorization: the factor of the Schur "
+                             "complement was asked for after its last use");
+    // (its last use: handed over, not copied; process 0 keeps its own for
+    // the solves)
+    if (last_use)
+      factor.swap(received_cholesky);
+    else
+      factor = received_cholesky;
   }
 
 
@@ -281,15 +298,25 @@ namespace glissade
           {
             const int size = n_last, one = 1;
             int       info = 0;
-            dgetrs_("N",
-                    &size,
-                    &one,
-                    schur_lu.data(),
-                    &size,
-                    schur_pivots.data(),
-                    reduced_rhs.data(),
-                    &size,
-                    &info);
+            if (schur_lu.empty())
+              dpotrs_("L",
+                      &size,
+                      &one,
+                      schur_cholesky.data(),
+                      &size,
+                      reduced_rhs.data(),
+                      &size,
+                      &info);
+            else
+              dgetrs_("N",
+                      &size,
+                      &one,
+                      schur_lu.data(),
+                      &size,
+                      schur_pivots.data(),
+                      reduced_rhs.data(),
+                      &size,
+                      &info);
           }
         id.ICNTL(26) = 2;
         call(3, "solve (expansion)");

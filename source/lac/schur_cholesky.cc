@@ -191,7 +191,8 @@ namespace glissade
 
 
   void
-  SchurCholesky::trailing_factor(std::vector<double> &trailing) const
+  SchurCholesky::trailing_factor(std::vector<double> &trailing,
+                                 const bool) const
   {
     const cholmod_factor &L     = *cholmod->factor;
     const long            n     = L.n;

@@ -44,7 +44,7 @@ namespace glissade
 
     const auto          start = std::chrono::steady_clock::now();
     std::vector<double> factor;
-    trailing_factor(factor);
+    trailing_factor(factor, whole_block);
     const int m    = n_last;
     int       info = 0;
     if (whole_block)

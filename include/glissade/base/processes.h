@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glissade
@@ -53,6 +54,25 @@ namespace glissade
     {
       sum(values.data(), values.size());
     }
+
+    /**
+     * This process's share of n items numbered 0 to n - 1: the contiguous
+     * range [first, second), the ranges in rank order (all of them on one
+     * process).
+     */
+    std::pair<std::size_t, std::size_t>
+    share(const std::size_t n);
+
+    /**
+     * A column-major matrix of `rows` rows and `columns` columns of which
+     * each process has computed its share(columns) of the columns: every
+     * process's columns sent to all, in place. Each entry is then the bits
+     * of the one process that computed it, on every process.
+     */
+    void
+    gather_columns(double           *matrix,
+                   const std::size_t rows,
+                   const std::size_t columns);
 
     /** The first non-empty message of the processes (by rank), or "". */
     std::string

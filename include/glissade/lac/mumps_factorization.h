@@ -82,13 +82,17 @@ namespace glissade
 
   private:
     void
-    trailing_factor(std::vector<double> &factor) const override;
+    trailing_factor(std::vector<double> &factor,
+                    const bool           last_use) const override;
 
     /** Calls MUMPS for `job`; throws with its error, on every process. */
     void
     call(const int job, const char *phase) const;
 
-    /** Process 0: S from MUMPS, its LU and (if positive) Cholesky factors. */
+    /**
+     * Process 0: S from MUMPS, its Cholesky factor, and its LU only if S
+     * is not positive definite.
+     */
     void
     factorize_schur_complement();
 
@@ -105,7 +109,10 @@ namespace glissade
     std::vector<double> local_values;
     /** The last unknowns, 1-based, as MUMPS reads them. */
     std::vector<int> schur_list;
-    /** Process 0: S (column major, m x m), its LU and pivots, L_S. */
+    /**
+     * Process 0: S (column major, m x m), L_S, and S's LU and pivots if S
+     * is not positive definite (empty otherwise).
+     */
     std::vector<double> schur, schur_lu, schur_cholesky;
     std::vector<int>    schur_pivots;
     /** L_S on the other processes, received once per factorisation. */

@@ -67,7 +67,8 @@ namespace glissade
   private:
     /** L_cc, copied out of the supernodes that hold it. */
     void
-    trailing_factor(std::vector<double> &factor) const override;
+    trailing_factor(std::vector<double> &factor,
+                    const bool           last_use) const override;
 
     struct Cholmod;
     std::unique_ptr<Cholmod> cholmod;

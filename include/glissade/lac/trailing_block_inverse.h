@@ -57,10 +57,12 @@ namespace glissade
   protected:
     /**
      * L_S, lower triangle, column major, m x m (the strict upper triangle
-     * is not read).
+     * is not read). `last_use`: no other column will be asked for this
+     * factorisation (the whole block is formed), so that a copy kept only
+     * for them may be handed over instead of copied.
      */
     virtual void
-    trailing_factor(std::vector<double> &factor) const = 0;
+    trailing_factor(std::vector<double> &factor, const bool last_use) const = 0;
 
     /** A new factorisation: the columns formed are stale. */
     void

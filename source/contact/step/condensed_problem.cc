@@ -115,7 +115,13 @@ namespace glissade
       return dense_flops < 30. * sparse_flops;
     }
 
-    /** products += rows C loads on one body, by two BLAS products. */
+    /**
+     * products += rows C loads on one body, by two BLAS products per block
+     * of loads: T = C L, then R T by blocks of rows. (In blocks of 512
+     * loads and 1,024 rows, so that L, T, R and R T are not whole-size
+     * arrays: at 1,600 active nodes these were 800 MB at the peak of the
+     * run, for nothing the products' speed needs.)
+     */
     void
     add_dense_products(const BodyProducts        &body,
                        const std::vector<double> &C,
@@ -124,48 +130,68 @@ namespace glissade
     {
       const std::size_t m         = body.row_dofs.size(),
                         m_columns = body.column_dofs.size();
-      const std::size_t   n_here = body.rows.size(), l_here = body.loads.size();
-      std::vector<double> L(m_columns * l_here, 0.), R(n_here * m, 0.);
-      for (std::size_t k = 0; k < l_here; ++k)
-        for (const auto &e : body.loads[k].second)
-          L[e.index + k * m_columns] += e.value;
-      for (std::size_t k = 0; k < n_here; ++k)
-        for (const auto &e : body.rows[k].second)
-          R[k + std::size_t(e.index) * n_here] += e.value;
-      std::vector<double> T(m * l_here), RT(n_here * l_here);
-      const int           im = m, ic = m_columns, il = l_here, ir = n_here;
-      const double        one = 1., zero = 0.;
-      dgemm_("N",
-             "N",
-             &im,
-             &il,
-             &ic,
-             &one,
-             C.data(),
-             &im,
-             L.data(),
-             &ic,
-             &zero,
-             T.data(),
-             &im);
-      dgemm_("N",
-             "N",
-             &ir,
-             &il,
-             &im,
-             &one,
-             R.data(),
-             &ir,
-             T.data(),
-             &im,
-             &zero,
-             RT.data(),
-             &ir);
-      for (std::size_t k = 0; k < l_here; ++k)
-        for (std::size_t r = 0; r < n_here; ++r)
-          products[body.rows[r].first + body.loads[k].first * n_rows] +=
-            RT[r + k * n_here];
+      const std::size_t n_here = body.rows.size(), l_here = body.loads.size();
+      constexpr std::size_t load_block = 512, row_block = 1024;
+      const std::size_t     width = std::min(load_block, l_here),
+                        height    = std::min(row_block, n_here);
+      std::vector<double> L(m_columns * width), T(m * width), R(height * m, 0.),
+        RT(height * width);
+      const double one = 1., zero = 0.;
+      for (std::size_t k0 = 0; k0 < l_here; k0 += load_block)
+        {
+          const std::size_t loads_here = std::min(load_block, l_here - k0);
+          std::fill(L.begin(), L.end(), 0.);
+          for (std::size_t k = 0; k < loads_here; ++k)
+            for (const auto &e : body.loads[k0 + k].second)
+              L[e.index + k * m_columns] += e.value;
+          const int im = m, ic = m_columns, il = loads_here;
+          dgemm_("N",
+                 "N",
+                 &im,
+                 &il,
+                 &ic,
+                 &one,
+                 C.data(),
+                 &im,
+                 L.data(),
+                 &ic,
+                 &zero,
+                 T.data(),
+                 &im);
+          for (std::size_t r0 = 0; r0 < n_here; r0 += row_block)
+            {
+              const std::size_t rows_here = std::min(row_block, n_here - r0);
+              for (std::size_t r = 0; r < rows_here; ++r)
+                for (const auto &e : body.rows[r0 + r].second)
+                  R[r + std::size_t(e.index) * rows_here] += e.value;
+              const int ir = rows_here;
+              dgemm_("N",
+                     "N",
+                     &ir,
+                     &il,
+                     &im,
+                     &one,
+                     R.data(),
+                     &ir,
+                     T.data(),
+                     &im,
+                     &zero,
+                     RT.data(),
+                     &ir);
+              for (std::size_t k = 0; k < loads_here; ++k)
+                for (std::size_t r = 0; r < rows_here; ++r)
+                  products[body.rows[r0 + r].first +
+                           body.loads[k0 + k].first * n_rows] +=
+                    RT[r + k * rows_here];
+              // (R back to zeros, entry by entry: the rows are sparse)
+              for (std::size_t r = 0; r < rows_here; ++r)
+                for (const auto &e : body.rows[r0 + r].second)
+                  R[r + std::size_t(e.index) * rows_here] = 0.;
+            }
+        }
     }
+
+
 
     /**
      * products += rows C loads on one body, by loops over the entries. T =
@@ -366,8 +392,20 @@ namespace glissade
         "1", &t, S.data(), &t, &norm, &rcond, work.data(), iwork.data(), &info);
     if (!(info == 0 && rcond > 1e-13))
       return false;
-    const int one = 1;
-    dgetrs_("N", &t, &size, S.data(), &t, pivots.data(), X.data(), &t, &info);
+    // X's columns shared out over the processes (S's LU is replicated).
+    const auto [first, end] = processes::share(size);
+    const int one = 1, columns = end - first;
+    if (columns > 0)
+      dgetrs_("N",
+              &t,
+              &columns,
+              S.data(),
+              &t,
+              pivots.data(),
+              &X[first * t],
+              &t,
+              &info);
+    processes::gather_columns(X.data(), t, size);
     dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
     return true;
   }
@@ -386,24 +424,28 @@ namespace glissade
       std::copy(&P[std::size_t(j) * n_rows],
                 &P[std::size_t(j) * n_rows] + size,
                 &W_dense[std::size_t(j) * size]);
-    if (t > 0)
+    // (W's columns shared out over the processes)
+    const auto [first, end] = processes::share(size);
+    const int columns       = end - first;
+    if (t > 0 && columns > 0)
       {
         const double one = 1.;
         const int    ld  = n_rows;
         dgemm_("N",
                "N",
                &size,
-               &size,
+               &columns,
                &t,
                &one,
                &P[std::size_t(size) * n_rows],
                &ld,
-               X.data(),
+               &X[first * t],
                &t,
                &one,
-               W_dense.data(),
+               &W_dense[first * size],
                &size);
       }
+    processes::gather_columns(W_dense.data(), size, size);
     W.reinit(n);
     for (unsigned int l = 0; l < n; ++l)
       for (unsigned int k = 0; k < n; ++k)
@@ -472,6 +514,10 @@ namespace glissade
     const std::vector<PairVector> &all_loads,
     std::vector<double>           &products) const
   {
+    // Each entry is formed by one process, with the arithmetic one process
+    // alone does, and the columns are then sent to all: the same bits on
+    // every process, and only the products' own size in memory.
+    const auto process_columns = processes::share(all_loads.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         BodyProducts body;
@@ -484,37 +530,26 @@ namespace glissade
                                              body.column_dofs,
                                              C);
         const bool dense = dense_is_cheaper(body);
-        const auto add   = [&](const BodyProducts  &part,
-                             std::vector<double> &sums) {
-          if (dense)
-            add_dense_products(part, C, all_rows.size(), sums);
-          else
-            add_sparse_products(part, C, all_rows.size(), sums);
-        };
-        if (processes::count() == 1)
-          {
-            add(body, products);
-            continue;
-          }
-        // On several processes, each forms the products of its share of
-        // the loads (a slice of the columns, the others left zero) and the
-        // slices are summed: an entry is one process's value plus zeros, the
-        // same bits on every process, and the same arithmetic per entry as
-        // one process does.
-        const std::size_t n_loads = body.loads.size(), rank = processes::rank(),
-                          count = processes::count();
-        BodyProducts share;
-        share.row_dofs    = body.row_dofs;
-        share.column_dofs = body.column_dofs;
-        share.rows        = body.rows;
-        share.loads.assign(body.loads.begin() + n_loads * rank / count,
-                           body.loads.begin() + n_loads * (rank + 1) / count);
-        std::vector<double> slice(products.size(), 0.);
-        add(share, slice);
-        processes::sum(slice);
-        for (std::size_t i = 0; i < products.size(); ++i)
-          products[i] += slice[i];
+        // On several processes, each forms the columns of its share of the
+        // loads (process_columns), the others gathered below.
+        if (processes::count() > 1)
+          body.loads.erase(std::remove_if(body.loads.begin(),
+                                          body.loads.end(),
+                                          [&](const auto &load) {
+                                            return load.first <
+                                                     process_columns.first ||
+                                                   load.first >=
+                                                     process_columns.second;
+                                          }),
+                           body.loads.end());
+        if (dense)
+          add_dense_products(body, C, all_rows.size(), products);
+        else
+          add_sparse_products(body, C, all_rows.size(), products);
       }
+    processes::gather_columns(products.data(),
+                              all_rows.size(),
+                              all_loads.size());
   }
 
 
