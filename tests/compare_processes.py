@@ -17,10 +17,15 @@ must be in the other folder with the same rows and columns, and:
 - the active sets (`active`, `*_active_nodes`) are the same, and with
   --statuses the stick/slip statuses too (a frictionless scene's status is
   decided by round-off on a zero tangential force: not compared there).
+Each body's VTU output, listed by its PVD index, must cover the same cells
+at the same times: on N processes each entry is a .pvtu record whose pieces
+exist and whose cell and point counts add up to the one-process file's (each
+cell written once, by one process).
 Prints each disagreement and exits 1 if there is any.
 """
 import csv
 import os
+import re
 import sys
 
 RELATIVE = 1e-10
@@ -107,6 +112,54 @@ def compare(name, one, many, statuses):
     return problems
 
 
+def pvd_entries(path):
+    """(time, file) of each data set of a PVD index."""
+    with open(path) as f:
+        return re.findall(r'timestep="([^"]*)"[^>]*file="([^"]*)"', f.read())
+
+
+def piece_counts(path):
+    """(points, cells) written in one .vtu file."""
+    with open(path, errors="replace") as f:
+        head = f.read(4096)
+    found = re.search(r'NumberOfPoints="(\d+)" NumberOfCells="(\d+)"', head)
+    return (int(found.group(1)), int(found.group(2))) if found else None
+
+
+def compare_vtu(one, many):
+    """The bodies' VTU of the N-process run against the one-process run."""
+    problems = []
+    indices = sorted(f for f in os.listdir(one)
+                     if f.endswith(".pvd") and not f.startswith("contact-"))
+    for index in indices:
+        if not os.path.exists(os.path.join(many, index)):
+            problems.append(f"{index}: not written by the run on N processes")
+            continue
+        entries_one = pvd_entries(os.path.join(one, index))
+        entries_many = pvd_entries(os.path.join(many, index))
+        if [t for t, _ in entries_one] != [t for t, _ in entries_many]:
+            problems.append(f"{index}: other times than the one-process run")
+            continue
+        for (t, file_one), (_, file_many) in zip(entries_one, entries_many):
+            counts_one = piece_counts(os.path.join(one, file_one))
+            if file_many.endswith(".pvtu"):
+                with open(os.path.join(many, file_many)) as f:
+                    pieces = re.findall(r'Piece Source="([^"]*)"', f.read())
+            else:
+                pieces = [file_many]
+            counts = [piece_counts(os.path.join(many, p))
+                      if os.path.exists(os.path.join(many, p)) else None
+                      for p in pieces]
+            if None in counts or not pieces:
+                problems.append(f"{file_many}: a piece is missing")
+                continue
+            total = tuple(map(sum, zip(*counts)))
+            if total != counts_one:
+                problems.append(f"{file_many}: {total} points and cells in "
+                                f"its pieces, {counts_one} in {file_one}")
+    return problems, len(indices)
+
+
 def main():
     arguments = [a for a in sys.argv[1:] if not a.startswith("--")]
     statuses = "--statuses" in sys.argv
@@ -124,9 +177,12 @@ def main():
             continue
         problems += compare(name, read(os.path.join(one, name)), read(path),
                             statuses)
+    vtu_problems, n_indices = compare_vtu(one, many)
+    problems += vtu_problems
     for p in problems[:40]:
         print(p)
-    print(f"{len(names)} files compared, {len(problems)} disagreements")
+    print(f"{len(names)} files and {n_indices} VTU indices compared, "
+          f"{len(problems)} disagreements")
     sys.exit(1 if problems else 0)
 
 

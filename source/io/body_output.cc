@@ -1,6 +1,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/body_output.h>
@@ -122,15 +123,53 @@ namespace glissade
                                       DataOutBase::VtkFlags::no_compression :
                                       DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
+    // On several processes, this process's share of the cells (the range
+    // by active cell index that it integrates, Body::own_cells).
+    const unsigned int n_processes = processes::count();
+    const auto [first, end] =
+      processes::share(body.dof_handler().get_triangulation().n_active_cells());
+    if (n_processes > 1)
+      data_out.set_cell_selection(
+        [first = first,
+         end   = end](const Triangulation<2>::cell_iterator &cell) {
+          return cell->is_active() && cell->active_cell_index() >= first &&
+                 cell->active_cell_index() < end;
+        });
     data_out.build_patches(element_space.mapping(),
                            degree,
                            DataOut<2>::curved_inner_cells);
 
-    std::ostringstream name;
-    name << body.name() << "-" << std::setw(5) << std::setfill('0') << index
-         << ".vtu";
-    AtomicFile file(directory + "/" + name.str());
+    std::ostringstream stem;
+    stem << body.name() << "-" << std::setw(5) << std::setfill('0') << index;
+    const auto piece = [&](const unsigned int process) {
+      std::ostringstream name;
+      name << stem.str() << "." << std::setw(4) << std::setfill('0') << process
+           << ".vtu";
+      return name.str();
+    };
+    const std::string name =
+      n_processes == 1 ? stem.str() + ".vtu" : piece(processes::rank());
+    AtomicFile file(directory + "/" + name);
     file.write_and_commit([&](std::ostream &out) { data_out.write_vtu(out); });
-    return name.str();
+    if (n_processes == 1)
+      return name;
+    std::vector<std::string> pieces;
+    for (unsigned int p = 0; p < n_processes; ++p)
+      pieces.push_back(piece(p));
+    if (processes::writes_files())
+      {
+        // (deal.II 9.4 stamps the record with the date whatever the flags
+        // say: taken out, so that a scene gives the same bytes every time)
+        std::ostringstream text;
+        data_out.write_pvtu_record(text, pieces);
+        std::string       record_text = text.str();
+        const std::size_t comment     = record_text.find("<!--");
+        const std::size_t comment_end = record_text.find("-->\n", comment);
+        if (comment != std::string::npos && comment_end != std::string::npos)
+          record_text.erase(comment, comment_end + 4 - comment);
+        AtomicFile record(directory + "/" + stem.str() + ".pvtu");
+        record.write_and_commit([&](std::ostream &out) { out << record_text; });
+      }
+    return stem.str() + ".pvtu";
   }
 } // namespace glissade

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <glissade/base/processes.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/io/atomic_file.h>
@@ -59,7 +60,8 @@ namespace glissade
                                const bool         last)
   {
     const unsigned int table_interval = settings.contact_table_interval;
-    if (table_interval > 0 && (last || increment % table_interval == 0))
+    if (table_interval > 0 && (last || increment % table_interval == 0) &&
+        processes::writes_files())
       write_contact_tables(increment, t);
     if (vtu_due(increment, last))
       write_vtu(increment, t);
@@ -76,7 +78,8 @@ namespace glissade
     const unsigned int table_interval = settings.contact_table_interval;
     if (!vtu_due(increment, false))
       write_vtu(increment, t);
-    else if (table_interval > 0 && increment % table_interval != 0)
+    else if (table_interval > 0 && increment % table_interval != 0 &&
+             processes::writes_files())
       write_contact_tables(increment, t);
   }
 
@@ -99,13 +102,15 @@ namespace glissade
     TimerOutput::Scope scope(timer, timing::output);
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
+        // (every process writes its piece of a body; process 0 the rest)
         const std::string vtu =
           write_body_vtu(*bodies[b], settings.directory, increment, settings);
         pvd_records[b].emplace_back(t, vtu);
-        write_pvd_index(settings.directory + "/" + bodies[b]->name() + ".pvd",
-                        pvd_records[b]);
+        if (processes::writes_files())
+          write_pvd_index(settings.directory + "/" + bodies[b]->name() + ".pvd",
+                          pvd_records[b]);
       }
-    if (settings.contact_table_interval == 0)
+    if (settings.contact_table_interval == 0 && processes::writes_files())
       write_contact_tables(increment, t);
   }
 

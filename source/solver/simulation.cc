@@ -436,11 +436,12 @@ namespace glissade
   void
   Simulation::write_last_converged_state(const unsigned int increment)
   {
-    if (!writes_files)
-      return;
     try
       {
+        // (every process: each writes its piece of the bodies' VTU)
         output->write_last_converged_state(increment, current_time);
+        if (!writes_files)
+          return;
         std::cerr << "glissade: the last converged state (increment "
                   << increment << ", t = " << current_time << ") is in "
                   << scene.output.directory << std::endl;
@@ -540,8 +541,7 @@ namespace glissade
             if (on_increment)
               on_increment(increment, t);
             const bool last = (increment == n_total);
-            if (writes_files)
-              output->write_increment(increment, t, last);
+            output->write_increment(increment, t, last);
 
             const bool stop = (increment == scene.checkpoint.stop_after);
             if (stop || checkpoint_due(increment))
@@ -593,8 +593,7 @@ namespace glissade
       {
         integrator->initialize();
         history->record(0, 0., 0);
-        if (writes_files)
-          output->write_initial_state();
+        output->write_initial_state();
         return 0;
       }
     const unsigned int restart_increment = read_checkpoint();
@@ -648,8 +647,7 @@ namespace glissade
     // or one written now)
     if (!checkpoint_due(increment))
       write_checkpoint(increment);
-    if (writes_files)
-      output->write_interrupted_state(increment, t, last);
+    output->write_interrupted_state(increment, t, last);
     write_summary_file("stopped by " + interruption::signal_name(signal) +
                        " after increment " + std::to_string(increment) +
                        " of " + std::to_string(n_total) +

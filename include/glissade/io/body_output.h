@@ -13,6 +13,11 @@ namespace glissade
    * Output/VTU fields asks for (displacement, stress; a dynamic body's
    * velocity and acceleration beside the displacement), on patches that
    * follow its mapping. Returns the file's name.
+   *
+   * On several processes every process calls it: each writes the cells of
+   * its share (<name>-<index>.<process>.vtu, process in four digits) and
+   * process 0 the record over the pieces, <name>-<index>.pvtu, whose name
+   * is returned (as deal.II's parallel programs write their output).
    */
   std::string
   write_body_vtu(const Body           &body,

@@ -25,7 +25,9 @@ namespace glissade
    * PNGs (`Plots`). The Simulation says when an increment has converged
    * or when the run stops; this class decides what is due and writes it.
    * The PVD indices are part of a checkpoint (serialize()), so that a
-   * restarted run appends to them.
+   * restarted run appends to them. On several processes every process
+   * calls it: each writes its piece of the bodies' VTU (write_body_vtu()),
+   * and process 0 everything else.
    */
   class SceneOutput
   {
