@@ -119,8 +119,8 @@ namespace glissade
      * products += rows C loads on one body, by two BLAS products per block
      * of loads: T = C L, then R T by blocks of rows. (In blocks of 512
      * loads and 1,024 rows, so that L, T, R and R T are not whole-size
-     * arrays: at 1,600 active nodes these were 800 MB at the peak of the
-     * run, for nothing the products' speed needs.)
+     * arrays: the peers' rings at 1,600 active nodes peaked at 3.99 GB
+     * with them, 3.34 GB without, in the same time.)
      */
     void
     add_dense_products(const BodyProducts        &body,
