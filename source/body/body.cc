@@ -348,10 +348,8 @@ namespace glissade
     // n p / P to n (p + 1) / P.
     if (own_cell_list.empty())
       {
-        const std::size_t n     = dofs.get_triangulation().n_active_cells(),
-                          first = n * processes::rank() / processes::count(),
-                          end =
-                            n * (processes::rank() + 1) / processes::count();
+        const auto [first, end] =
+          processes::share(dofs.get_triangulation().n_active_cells());
         for (const auto &cell : dofs.active_cell_iterators())
           if (cell->active_cell_index() >= first &&
               cell->active_cell_index() < end)

@@ -530,18 +530,17 @@ namespace glissade
                                              body.column_dofs,
                                              C);
         const bool dense = dense_is_cheaper(body);
-        // On several processes, each forms the columns of its share of the
-        // loads (process_columns), the others gathered below.
-        if (processes::count() > 1)
-          body.loads.erase(std::remove_if(body.loads.begin(),
-                                          body.loads.end(),
-                                          [&](const auto &load) {
-                                            return load.first <
-                                                     process_columns.first ||
-                                                   load.first >=
-                                                     process_columns.second;
-                                          }),
-                           body.loads.end());
+        // Only this process's share of the loads (process_columns: all of
+        // them on one process); the other columns are gathered below.
+        body.loads.erase(std::remove_if(body.loads.begin(),
+                                        body.loads.end(),
+                                        [&](const auto &load) {
+                                          return load.first <
+                                                   process_columns.first ||
+                                                 load.first >=
+                                                   process_columns.second;
+                                        }),
+                         body.loads.end());
         if (dense)
           add_dense_products(body, C, all_rows.size(), products);
         else
