@@ -230,7 +230,8 @@ namespace glissade
                                                   axisymmetric),
                          source,
                          description.name,
-                         reference_size));
+                         reference_size),
+      processes::count() > 1 ? &own_cells() : nullptr);
   }
 
 

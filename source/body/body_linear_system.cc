@@ -8,6 +8,8 @@
 #include <glissade/base/processes.h>
 #include <glissade/body/body_linear_system.h>
 
+#include <cmath>
+
 namespace glissade
 {
   using namespace dealii;
@@ -16,7 +18,8 @@ namespace glissade
                                      const ElementSpace         &space,
                                      AffineConstraints<double> &&constraints,
                                      const bool                  symmetric,
-                                     RigidMotionSprings        &&springs)
+                                     RigidMotionSprings        &&springs,
+                                     const CellList             *cells_here)
     : dofs(dofs)
     , space(space)
     , symmetric(symmetric)
@@ -26,7 +29,24 @@ namespace glissade
     , port(dofs.n_dofs())
   {
     DynamicSparsityPattern dsp(dofs.n_dofs());
-    DoFTools::make_sparsity_pattern(dofs, dsp, iteration_constraints, false);
+    if (cells_here == nullptr)
+      DoFTools::make_sparsity_pattern(dofs, dsp, iteration_constraints, false);
+    else
+      {
+        // On several processes the tangent holds the integrals of this
+        // process's cells alone, and MUMPS sums the processes' entries:
+        // the couplings of those cells, as make_sparsity_pattern makes
+        // them for all.
+        std::vector<types::global_dof_index> local_dofs;
+        for (const auto &cell : *cells_here)
+          {
+            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(local_dofs);
+            iteration_constraints.add_entries_local_to_global(local_dofs,
+                                                              dsp,
+                                                              false);
+          }
+      }
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     // (a body in contact sets its contact dofs to eliminate last later,
@@ -60,18 +80,21 @@ namespace glissade
   void
   BodyLinearSystem::sum_over_processes()
   {
-    if (processes::count() == 1)
-      return;
-    std::vector<double> values;
-    values.reserve(tangent.n_nonzero_elements() + system_rhs.size());
-    for (const auto &entry : tangent)
-      values.push_back(entry.value());
-    values.insert(values.end(), system_rhs.begin(), system_rhs.end());
-    processes::sum(values);
-    auto value = values.begin();
-    for (auto &entry : tangent)
-      entry.value() = *value++;
-    std::copy(value, values.end(), system_rhs.begin());
+    // (the tangent stays each process's share: MUMPS sums it)
+    processes::sum(system_rhs.begin(), system_rhs.size());
+  }
+
+
+
+  std::vector<double>
+  BodyLinearSystem::tangent_diagonal() const
+  {
+    std::vector<double> diagonal(tangent.m());
+    for (types::global_dof_index i = 0; i < tangent.m(); ++i)
+      diagonal[i] = tangent.diag_element(i);
+    if (processes::count() > 1)
+      processes::sum(diagonal);
+    return diagonal;
   }
 
 
@@ -97,8 +120,18 @@ namespace glissade
   void
   BodyLinearSystem::factorize()
   {
-    const std::vector<double> assembled  = springs.add_to(tangent);
-    const bool                refactored = factorization.factorize(tangent);
+    // The springs as stiff as an average dof of the whole tangent (on
+    // several processes, added to process 0's share alone).
+    double k = 0.;
+    if (!springs.springs().empty())
+      {
+        for (const double d : tangent_diagonal())
+          k += std::abs(d);
+        k /= tangent.m();
+      }
+    const std::vector<double> assembled =
+      springs.add_to(tangent, k, processes::rank() == 0);
+    const bool refactored = factorization.factorize(tangent);
     springs.take_from(tangent, assembled);
     if (refactored)
       port.forget_compliance();

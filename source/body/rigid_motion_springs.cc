@@ -103,21 +103,18 @@ namespace glissade
 
 
   std::vector<double>
-  RigidMotionSprings::add_to(SparseMatrix<double> &tangent)
+  RigidMotionSprings::add_to(SparseMatrix<double> &tangent,
+                             const double          k,
+                             const bool            add)
   {
     std::vector<double> assembled(dofs_and_stiffness.size());
-    if (dofs_and_stiffness.empty())
-      return assembled;
-    double sum = 0.;
-    for (types::global_dof_index i = 0; i < tangent.m(); ++i)
-      sum += std::abs(tangent.diag_element(i));
-    const double k = sum / tangent.m();
     for (unsigned int s = 0; s < dofs_and_stiffness.size(); ++s)
       {
         double &diagonal = tangent.diag_element(dofs_and_stiffness[s].first);
         assembled[s]     = diagonal;
         dofs_and_stiffness[s].second = k;
-        diagonal += k;
+        if (add)
+          diagonal += k;
       }
     return assembled;
   }

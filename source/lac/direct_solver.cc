@@ -53,6 +53,8 @@ namespace glissade
   bool
   DirectSolver::factorize(const SparseMatrix<double> &matrix)
   {
+    if (processes::count() > 1)
+      return factorize_on_processes(matrix);
     // deal.II stores rows (diagonal first); UMFPACK wants sorted columns.
     // We hand it the rows as the columns of A^T and solve with A^T later.
     const SparsityPattern &sp = matrix.get_sparsity_pattern();
@@ -99,25 +101,6 @@ namespace glissade
     if (!same_pattern && symbolic != nullptr)
       umfpack_dl_free_symbolic(&symbolic);
 
-    if (processes::count() > 1)
-      {
-        if (distributed == nullptr)
-          distributed =
-            std::make_unique<MumpsFactorization>(processes::communicator());
-        const bool symmetric_matrix = symmetric && !unsymmetric_ordering;
-        distributed->set_last_unknowns(symmetric_matrix ? last_unknowns_sorted :
-                                                          std::vector<long>());
-        const double before =
-          distributed->analysis_seconds + distributed->factorization_seconds;
-        distributed->factorize(
-          n, row_start, column_index, values, symmetric_matrix, !same_pattern);
-        numeric_seconds += distributed->analysis_seconds +
-                           distributed->factorization_seconds - before;
-        ++(symmetric_matrix ? n_cholesky : n_lu);
-        factorization_current = true;
-        return true;
-      }
-
     // The pattern is symmetric (it comes from a DoFHandler), so the rows are
     // also the columns of A: Cholesky reads the arrays as they are.
     cholesky_used = false;
@@ -139,6 +122,48 @@ namespace glissade
           }
       }
     factorize_lu();
+    factorization_current = true;
+    return true;
+  }
+
+
+
+  bool
+  DirectSolver::factorize_on_processes(const SparseMatrix<double> &matrix)
+  {
+    // Each process's matrix is its share (the integrals of its cells):
+    // MUMPS takes the entries straight from it and sums them over the
+    // processes, and no process copies or holds the whole matrix.
+    if (distributed == nullptr)
+      distributed =
+        std::make_unique<MumpsFactorization>(processes::communicator());
+    const SparsityPattern &sp = matrix.get_sparsity_pattern();
+    // (a new pattern on any process is one for all: the analysis is
+    // collective)
+    const bool new_pattern =
+      processes::maximum(&sp != pattern ||
+                             matrix.n_nonzero_elements() != n_entries_seen ?
+                           1 :
+                           0) != 0;
+    pattern                     = &sp;
+    n_entries_seen              = matrix.n_nonzero_elements();
+    const bool symmetric_matrix = symmetric && !unsymmetric_ordering;
+    const bool unchanged =
+      distributed->take_entries(matrix, symmetric_matrix, new_pattern);
+    if (unchanged && factorization_current)
+      {
+        ++n_reused;
+        return false;
+      }
+    factorization_current = false;
+    distributed->set_last_unknowns(symmetric_matrix ? last_unknowns_sorted :
+                                                      std::vector<long>());
+    const double before =
+      distributed->analysis_seconds + distributed->factorization_seconds;
+    distributed->factorize(new_pattern);
+    numeric_seconds += distributed->analysis_seconds +
+                       distributed->factorization_seconds - before;
+    ++(symmetric_matrix ? n_cholesky : n_lu);
     factorization_current = true;
     return true;
   }

@@ -98,17 +98,55 @@ namespace glissade
 
 
 
-  void
-  MumpsFactorization::factorize(const long                 n,
-                                const std::vector<long>   &row_start,
-                                const std::vector<long>   &column_index,
-                                const std::vector<double> &values,
-                                const bool                 symmetric,
-                                const bool                 new_pattern)
+  bool
+  MumpsFactorization::take_entries(const dealii::SparseMatrix<double> &matrix,
+                                   const bool symmetric,
+                                   const bool new_pattern)
   {
-    int rank = 0, size = 1;
+    // (every entry of this process's matrix, the zeros of its pattern too:
+    // the entries' positions stay those of the analysis)
+    const bool same_entries =
+      !new_pattern && symmetric == symmetric_entries && n == long(matrix.m());
+    n                 = matrix.m();
+    symmetric_entries = symmetric;
+    if (!same_entries)
+      {
+        row_of_entry.clear();
+        column_of_entry.clear();
+        local_values.clear();
+        for (long i = 0; i < n; ++i)
+          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+            if (!symmetric || long(entry->column()) >= i)
+              {
+                row_of_entry.push_back(i + 1);
+                column_of_entry.push_back(entry->column() + 1);
+                local_values.push_back(entry->value());
+              }
+      }
+    int unchanged = same_entries ? 1 : 0;
+    if (same_entries)
+      {
+        std::size_t k = 0;
+        for (long i = 0; i < n; ++i)
+          for (auto entry = matrix.begin(i); entry != matrix.end(i); ++entry)
+            if (!symmetric || long(entry->column()) >= i)
+              {
+                unchanged = unchanged && local_values[k] == entry->value();
+                local_values[k++] = entry->value();
+              }
+      }
+    MPI_Allreduce(MPI_IN_PLACE, &unchanged, 1, MPI_INT, MPI_MIN, communicator);
+    return unchanged != 0;
+  }
+
+
+
+  void
+  MumpsFactorization::factorize(const bool new_pattern)
+  {
+    const bool symmetric = symmetric_entries;
+    int        rank      = 0;
     MPI_Comm_rank(communicator, &rank);
-    MPI_Comm_size(communicator, &size);
     if (!mumps || symmetric != symmetric_instance)
       {
         if (mumps)
@@ -134,26 +172,6 @@ namespace glissade
       }
     const std::vector<long> &kept_out =
       symmetric ? last_unknowns : std::vector<long>();
-
-    // This process's rows (of the upper triangle if symmetric).
-    const long first = n * rank / size, end = n * (rank + 1) / size;
-    if (new_pattern || !analysed)
-      {
-        row_of_entry.clear();
-        column_of_entry.clear();
-        for (long i = first; i < end; ++i)
-          for (long k = row_start[i]; k < row_start[i + 1]; ++k)
-            if (!symmetric || column_index[k] >= i)
-              {
-                row_of_entry.push_back(i + 1);
-                column_of_entry.push_back(column_index[k] + 1);
-              }
-      }
-    local_values.clear();
-    for (long i = first; i < end; ++i)
-      for (long k = row_start[i]; k < row_start[i + 1]; ++k)
-        if (!symmetric || column_index[k] >= i)
-          local_values.push_back(values[k]);
 
     auto &id   = mumps->id;
     id.n       = n;
@@ -212,14 +230,24 @@ namespace glissade
         // one (a tangent that is not positive definite).
         const int size = m;
         int       info = 0;
-        schur_cholesky = schur;
-        dpotrf_("L", &size, schur_cholesky.data(), &size, &info);
+        // (in place; S's diagonal kept, so that S can be made again from
+        // it and the strict upper triangle, which dpotrf leaves alone)
+        std::vector<double> diagonal(m);
+        for (long i = 0; i < m; ++i)
+          diagonal[i] = schur[i + i * m];
+        dpotrf_("L", &size, schur.data(), &size, &info);
         positive = info == 0;
         if (positive)
           std::vector<double>().swap(schur_lu);
         else
           {
             schur_lu = schur;
+            for (long j = 0; j < m; ++j)
+              {
+                schur_lu[j + j * m] = diagonal[j];
+                for (long i = j + 1; i < m; ++i)
+                  schur_lu[i + j * m] = schur_lu[j + i * m];
+              }
             schur_pivots.resize(m);
             dgetrf_(
               &size, &size, schur_lu.data(), &size, schur_pivots.data(), &info);
@@ -247,7 +275,7 @@ namespace glissade
     MPI_Comm_rank(communicator, &rank);
     if (rank == 0)
       {
-        factor = schur_cholesky;
+        factor = schur;
         if (!cholesky_received)
           MPI_Bcast(factor.data(), factor.size(), MPI_DOUBLE, 0, communicator);
         cholesky_received = true;
@@ -302,7 +330,7 @@ namespace glissade
               dpotrs_("L",
                       &size,
                       &one,
-                      schur_cholesky.data(),
+                      schur.data(),
                       &size,
                       reduced_rhs.data(),
                       &size,

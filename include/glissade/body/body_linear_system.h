@@ -33,17 +33,23 @@ namespace glissade
   class BodyLinearSystem
   {
   public:
+    using CellList = std::vector<dealii::DoFHandler<2>::active_cell_iterator>;
+
     /**
      * The system on `dofs` under `constraints`: which dofs they constrain
      * never changes during a run (only the prescribed values do), so the
      * sparsity pattern is built once. Cholesky where `symmetric` (no
-     * follower pressure), LU otherwise.
+     * follower pressure), LU otherwise. On several processes, `cells_here` are
+     * the cells whose integrals this process adds (Body::own_cells): its
+     * tangent is then its share, their couplings alone, and MUMPS sums the
+     * shares; nullptr on one process, where the tangent is whole.
      */
     BodyLinearSystem(const dealii::DoFHandler<2>        &dofs,
                      const ElementSpace                 &space,
                      dealii::AffineConstraints<double> &&constraints,
                      const bool                          symmetric,
-                     RigidMotionSprings                &&springs);
+                     RigidMotionSprings                &&springs,
+                     const CellList                     *cells_here);
 
     /**
      * The constraints of the current iteration (the element's own and the
@@ -69,17 +75,29 @@ namespace glissade
 
     /**
      * In a run on several processes, where each assembled its share of the
-     * cells: the tangent and right-hand side summed over the processes, so
-     * that every process holds the whole system.
+     * cells: the right-hand side summed over the processes, so that every
+     * process holds it whole. The tangent stays each process's share (the
+     * integrals of its cells), which MUMPS sums as it reads them: no
+     * process holds the whole matrix.
      */
     void
     sum_over_processes();
+
+    /**
+     * The diagonal of the whole tangent (on several processes, the shares'
+     * diagonals summed: collective).
+     */
+    std::vector<double>
+    tangent_diagonal() const;
 
     /** Adds nodal forces to the right-hand side, through the constraints. */
     void
     add_nodal_forces(const dealii::Vector<double> &forces);
 
-    /** The tangent of the last assembly (benchmarks factorise it again). */
+    /**
+     * The tangent of the last assembly (benchmarks factorise it again); on
+     * several processes, this process's share of it (sum_over_processes).
+     */
     const dealii::SparseMatrix<double> &
     tangent_matrix() const;
 

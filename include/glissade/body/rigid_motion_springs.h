@@ -79,13 +79,18 @@ namespace glissade
     }
 
     /**
-     * Adds the springs to the diagonal of `tangent`, each as stiff as an
-     * average dof of it, so that they neither dominate nor vanish in the
-     * factorisation; returns the diagonal entries as they were, for
-     * take_from().
+     * Adds the springs, each of stiffness `k`, to the diagonal of `tangent`
+     * (the caller makes k as stiff as an average dof of the whole tangent,
+     * so that they neither dominate nor vanish in the factorisation);
+     * returns the diagonal entries as they were, for take_from(). On
+     * several processes, where each holds a share of the tangent, one
+     * process adds them and the others call with `add = false`, which sets
+     * k alone.
      */
     std::vector<double>
-    add_to(dealii::SparseMatrix<double> &tangent);
+    add_to(dealii::SparseMatrix<double> &tangent,
+           const double                  k,
+           const bool                    add);
 
     /** Restores the diagonal entries that add_to() changed. */
     void

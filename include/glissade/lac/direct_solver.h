@@ -30,7 +30,8 @@ namespace glissade
    * In a run on several processes (mpirun), the matrix is factorised by
    * all of them together with MUMPS instead (MumpsFactorization): LDL^T
    * with the contact dofs' Schur complement where it is symmetric, LU
-   * otherwise; the interface is the same.
+   * otherwise; the interface is the same, but each process's matrix is its
+   * share of the whole one, which MUMPS sums (BodyLinearSystem).
    */
   class DirectSolver
   {
@@ -125,7 +126,12 @@ namespace glissade
     void
     factorize_lu();
 
-    const dealii::SparsityPattern *pattern = nullptr;
+    /** factorize() on several processes: MUMPS, from this process's share. */
+    bool
+    factorize_on_processes(const dealii::SparseMatrix<double> &matrix);
+
+    const dealii::SparsityPattern *pattern        = nullptr;
+    std::size_t                    n_entries_seen = 0;
     std::vector<long>              row_start, column_index;
     std::vector<double>            values;
     void                          *symbolic = nullptr;

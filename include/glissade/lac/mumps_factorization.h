@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <glissade/lac/trailing_block_inverse.h>
@@ -17,9 +18,11 @@ namespace glissade
    * factorisation of a run on several processes, where one process uses
    * CHOLMOD or UMFPACK (DirectSolver chooses).
    *
-   * Every process holds the same matrix (the scene is replicated) and
-   * hands MUMPS its own slice of rows, so the factor, the largest object
-   * of a solve, is shared out. A symmetric matrix is factorised as LDL^T
+   * Each process hands MUMPS the entries of its own matrix, which holds
+   * the integrals of its share of the cells (BodyLinearSystem): MUMPS sums
+   * the entries that several processes hand it, so no process holds the
+   * whole matrix, and the factor, the largest object of a solve, is
+   * shared out too. A symmetric matrix is factorised as LDL^T
    * with the contact dofs kept out of the factor: MUMPS returns their
    * Schur complement S, whose dense Cholesky factor gives the block of
    * A^-1 on them (TrailingBlockInverse) as the trailing block of CHOLMOD's
@@ -49,19 +52,24 @@ namespace glissade
     set_last_unknowns(const std::vector<long> &unknowns);
 
     /**
+     * Takes this process's entries of `matrix` (its share; those with
+     * column >= row where `symmetric`). Returns true where every process's
+     * entries are, bit for bit, those of the last factorisation, which
+     * then need not be done again.
+     */
+    bool
+    take_entries(const dealii::SparseMatrix<double> &matrix,
+                 const bool                          symmetric,
+                 const bool                          new_pattern);
+
+    /**
      * Analysis (first call, a new pattern, other last unknowns, or the
-     * other symmetry) and numeric factorisation of the n x n matrix in
-     * compressed-row form, columns sorted in each row. Symmetric: LDL^T
-     * with the Schur complement on the last unknowns (the upper triangle
-     * is read); otherwise LU, with no last unknowns.
+     * other symmetry) and numeric factorisation of the entries taken.
+     * Symmetric: LDL^T with the Schur complement on the last unknowns;
+     * otherwise LU, with no last unknowns.
      */
     void
-    factorize(const long                 n,
-              const std::vector<long>   &row_start,
-              const std::vector<long>   &column_index,
-              const std::vector<double> &values,
-              const bool                 symmetric,
-              const bool                 new_pattern);
+    factorize(const bool new_pattern);
 
     /** x <- A^-1 x. */
     void
@@ -104,16 +112,20 @@ namespace glissade
     std::vector<long>         last_unknowns;
     bool                      schur_is_positive = false;
 
-    /** This process's rows, 1-based indices, and the values. */
+    /** This process's entries: 1-based indices, and the values. */
+    long                n                 = 0;
+    bool                symmetric_entries = false;
     std::vector<int>    row_of_entry, column_of_entry;
     std::vector<double> local_values;
     /** The last unknowns, 1-based, as MUMPS reads them. */
     std::vector<int> schur_list;
     /**
-     * Process 0: S (column major, m x m), L_S, and S's LU and pivots if S
-     * is not positive definite (empty otherwise).
+     * Process 0: S (column major, m x m), where MUMPS writes it, its
+     * Cholesky factor L_S then in the lower triangle (in place: a second
+     * m x m array per body is 82 MB at 3,200 contact dofs); S's LU and
+     * pivots if S is not positive definite (empty otherwise).
      */
-    std::vector<double> schur, schur_lu, schur_cholesky;
+    std::vector<double> schur, schur_lu;
     std::vector<int>    schur_pivots;
     /** L_S on the other processes, received once per factorisation. */
     mutable std::vector<double> received_cholesky;

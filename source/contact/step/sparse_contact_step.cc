@@ -2,6 +2,7 @@
 
 #include <glissade/base/debug_log.h>
 #include <glissade/base/input_error.h>
+#include <glissade/base/processes.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/step/contact_problem.h>
@@ -232,6 +233,11 @@ namespace glissade
   {
     matrix = 0.;
     rhs    = 0.;
+    // On several processes each body's tangent is the process's share, and
+    // MUMPS sums the processes' entries: the contact's own entries are
+    // added by process 0 alone. (The right-hand side is MUMPS's on process
+    // 0; every process forms it.)
+    const double contact_share = processes::rank() == 0 ? 1. : 0.;
     for (const unsigned int b : in_contact)
       {
         const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
@@ -254,7 +260,9 @@ namespace glissade
         for (const Share &i : a)
           {
             for (const Share &j : c)
-              matrix.add(i.column, j.column, -i.weight * j.weight);
+              matrix.add(i.column,
+                         j.column,
+                         -contact_share * i.weight * j.weight);
             rhs(i.column) += i.weight * row_constant;
           }
       }
@@ -271,7 +279,7 @@ namespace glissade
             for (const Share &i : a)
               matrix.add(i.column,
                          n_body_unknowns + 2 * k + d,
-                         -alpha * i.weight);
+                         -contact_share * alpha * i.weight);
           }
         const bool   closed = status[k] != NodeStatus::open;
         const double mu     = nodes.friction[k];
@@ -280,28 +288,30 @@ namespace glissade
           {
             expand(nodes.rows[2 * k + normal], c, row_constant);
             for (const Share &j : c)
-              matrix.add(n_unknown, j.column, alpha * j.weight);
+              matrix.add(n_unknown, j.column, contact_share * alpha * j.weight);
             rhs(n_unknown) = -alpha * (nodes.initial[k][normal] + row_constant);
           }
         else
-          matrix.add(n_unknown, n_unknown, alpha);
+          matrix.add(n_unknown, n_unknown, contact_share * alpha);
         // The tangential row: the linearised slip held (stick), friction at
         // Coulomb's bound against the slip (slip), or r_t = 0.
         if (closed && mu > 0. && status[k] == NodeStatus::stick)
           {
             expand(nodes.rows[2 * k + tangential], c, row_constant);
             for (const Share &j : c)
-              matrix.add(t_unknown, j.column, alpha * j.weight);
+              matrix.add(t_unknown, j.column, contact_share * alpha * j.weight);
             rhs(t_unknown) =
               -alpha * (nodes.initial[k][tangential] + row_constant);
           }
         else if (closed && mu > 0.)
           {
-            matrix.add(t_unknown, t_unknown, alpha);
-            matrix.add(t_unknown, n_unknown, -alpha * slip_sign[k] * mu);
+            matrix.add(t_unknown, t_unknown, contact_share * alpha);
+            matrix.add(t_unknown,
+                       n_unknown,
+                       -contact_share * alpha * slip_sign[k] * mu);
           }
         else
-          matrix.add(t_unknown, t_unknown, alpha);
+          matrix.add(t_unknown, t_unknown, contact_share * alpha);
       }
   }
 
@@ -361,10 +371,12 @@ namespace glissade
     double              sum = 0.;
     for (const unsigned int b : in_contact)
       {
-        const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();
-        for (unsigned int i = 0; i < K.m(); ++i)
+        // (the whole tangent's: on several processes, the shares' summed)
+        const std::vector<double> K_diagonal =
+          bodies[b]->system().tangent_diagonal();
+        for (unsigned int i = 0; i < K_diagonal.size(); ++i)
           {
-            diagonal[offset[b] + i] = std::abs(K.diag_element(i));
+            diagonal[offset[b] + i] = std::abs(K_diagonal[i]);
             sum += diagonal[offset[b] + i];
           }
       }
