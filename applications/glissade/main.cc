@@ -90,13 +90,14 @@ namespace
 
   /**
    * Several processes on one machine share its cores: deal.II's threads
-   * (assembly, the contact products), OpenBLAS's (CHOLMOD, LAPACK) and
+   * (assembly), OpenBLAS's (CHOLMOD, LAPACK) and
    * OpenMP's (MUMPS) would otherwise start a thread per core in each
    * process. Each process takes its share of the cores (at least one),
    * unless OPENBLAS_NUM_THREADS, OMP_NUM_THREADS or DEAL_II_NUM_THREADS
-   * say otherwise. (The
-   * million-dof rings on 2 processes of this 2-core machine: 63.7 s with
-   * deal.II's threads unlimited, 55.5 s with one per process.)
+   * say otherwise. (On this 2-core machine it changes little: the rings
+   * at 800 x 80 on 2 processes, 7 alternating runs against 2 deal.II and
+   * OpenMP threads per process, wall time ratio 1.00; the million-dof
+   * rings 58-61 s against 64 s, single runs.)
    */
   void
   share_cores_among_processes()
@@ -109,7 +110,8 @@ namespace
     MPI_Comm_free(&node);
     const int threads =
       std::max(1, int(dealii::MultithreadInfo::n_cores()) / processes_here);
-    dealii::MultithreadInfo::set_thread_limit(threads);
+    if (std::getenv("DEAL_II_NUM_THREADS") == nullptr)
+      dealii::MultithreadInfo::set_thread_limit(threads);
     using SetThreads = void (*)(int);
     if (std::getenv("OPENBLAS_NUM_THREADS") == nullptr)
       if (auto set = reinterpret_cast<SetThreads>(
