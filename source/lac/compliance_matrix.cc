@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace glissade
 {
@@ -35,6 +37,22 @@ namespace glissade
         column_blocks.resize(n_nodes);
       }
   }
+
+  void
+  ComplianceMatrix::reinit(const unsigned int    n_nodes,
+                           std::vector<double> &&column_major)
+  {
+    if (column_major.size() != 4 * std::size_t(n_nodes) * n_nodes)
+      throw std::logic_error("ComplianceMatrix::reinit: a dense array of " +
+                             std::to_string(column_major.size()) +
+                             " entries for " + std::to_string(n_nodes) +
+                             " nodes");
+    reinit(0, Storage::dense);
+    n_contact_nodes = n_nodes;
+    dense_values    = std::move(column_major);
+  }
+
+
 
   unsigned int
   ComplianceMatrix::n_nodes() const

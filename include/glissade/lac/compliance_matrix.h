@@ -69,6 +69,14 @@ namespace glissade
     void
     reinit(unsigned int n_nodes, Storage storage = Storage::dense);
 
+    /**
+     * Dense storage for n_nodes nodes, taking over `column_major` (the
+     * 2n x 2n matrix in the layout of the dense storage) rather than
+     * copying it: 82 MB fewer at 1,600 contact nodes.
+     */
+    void
+    reinit(unsigned int n_nodes, std::vector<double> &&column_major);
+
     unsigned int
     n_nodes() const;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
 
 namespace glissade
 {
@@ -446,17 +447,9 @@ namespace glissade
                &size);
       }
     processes::gather_columns(W_dense.data(), size, size);
-    W.reinit(n);
-    for (unsigned int l = 0; l < n; ++l)
-      for (unsigned int k = 0; k < n; ++k)
-        {
-          ComplianceMatrix::Block block;
-          for (unsigned int a = 0; a < 2; ++a)
-            for (unsigned int c = 0; c < 2; ++c)
-              block[a][c] =
-                W_dense[(2 * k + a) + std::size_t(2 * l + c) * size];
-          W.set_block(k, l, block);
-        }
+    // (W_dense is in the layout of W's dense storage: taken over, not
+    // copied)
+    W.reinit(n, std::move(W_dense));
   }
 
 
