@@ -306,7 +306,7 @@ namespace glissade
                         add,
                         Scratch(*element_space, n_local),
                         Contribution(n_local));
-        linear_system->sum_over_processes();
+        linear_system->sum_right_hand_side_over_processes();
         processes::sum(internal_forces.begin(), internal_forces.size());
         processes::sum(viscous_forces.begin(), viscous_forces.size());
         processes::sum(unconstrained_residual.begin(),

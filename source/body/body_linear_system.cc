@@ -78,7 +78,7 @@ namespace glissade
 
 
   void
-  BodyLinearSystem::sum_over_processes()
+  BodyLinearSystem::sum_right_hand_side_over_processes()
   {
     // (the tangent stays each process's share: MUMPS sums it)
     processes::sum(system_rhs.begin(), system_rhs.size());

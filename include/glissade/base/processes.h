@@ -11,11 +11,13 @@ namespace glissade
   /**
    * The processes of a run: one (plain `glissade`), or those `mpirun -np N`
    * started. A scene is then solved by all of them together: each holds
-   * the whole scene (meshes, state, contact), and the bodies' linear
-   * systems are factorised by all of them at once (MumpsFactorization), so
-   * every decision the program takes from its numbers is taken the same
-   * way everywhere. Files and the progress lines are written by process 0
-   * alone.
+   * the whole scene (meshes, state, contact) but the bodies' tangents, of
+   * which it holds its own cells' share, and the bodies' linear systems
+   * are factorised by all of them at once (MumpsFactorization, which sums
+   * the shares), so every decision the program takes from its numbers is
+   * taken the same way everywhere. Each process writes its piece of the
+   * bodies' VTU; the other files and the progress lines are written by
+   * process 0 alone (doc/parallel.md).
    *
    * Without MPI initialised (the test programs), there is one process.
    */

@@ -81,7 +81,7 @@ namespace glissade
      * process holds the whole matrix.
      */
     void
-    sum_over_processes();
+    sum_right_hand_side_over_processes();
 
     /**
      * The diagonal of the whole tangent (on several processes, the shares'
@@ -96,7 +96,8 @@ namespace glissade
 
     /**
      * The tangent of the last assembly (benchmarks factorise it again); on
-     * several processes, this process's share of it (sum_over_processes).
+     * several processes, this process's share of it
+     * (sum_right_hand_side_over_processes).
      */
     const dealii::SparseMatrix<double> &
     tangent_matrix() const;
