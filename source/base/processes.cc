@@ -146,6 +146,35 @@ namespace glissade
 
 
 
+    std::vector<unsigned long>
+    union_of(const std::vector<unsigned long> &items)
+    {
+      std::vector<unsigned long> all = items;
+      if (count() > 1)
+        {
+          std::vector<int> counts(count()), offsets(count(), 0);
+          const int        here = items.size();
+          MPI_Allgather(
+            &here, 1, MPI_INT, counts.data(), 1, MPI_INT, communicator());
+          for (unsigned int p = 1; p < count(); ++p)
+            offsets[p] = offsets[p - 1] + counts[p - 1];
+          all.resize(offsets.back() + counts.back());
+          MPI_Allgatherv(items.data(),
+                         here,
+                         MPI_UNSIGNED_LONG,
+                         all.data(),
+                         counts.data(),
+                         offsets.data(),
+                         MPI_UNSIGNED_LONG,
+                         communicator());
+        }
+      std::sort(all.begin(), all.end());
+      all.erase(std::unique(all.begin(), all.end()), all.end());
+      return all;
+    }
+
+
+
     void
     check_identical(const double value, const char *what)
     {

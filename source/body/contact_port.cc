@@ -1,6 +1,7 @@
 // Where contact reads a body's linear system: its contact dofs and the
 // compliance between them (include/glissade/body/contact_port.h).
 
+#include <glissade/base/processes.h>
 #include <glissade/body/contact_port.h>
 
 namespace glissade
@@ -60,26 +61,33 @@ namespace glissade
       from_factor = from_factor && contact_position[dof] >= 0;
     for (const auto dof : columns)
       from_factor = from_factor && contact_position[dof] >= 0;
+    // (on several processes each may ask for other columns, and both ways
+    // are collective there: the way is the same on all of them)
+    from_factor = processes::maximum(from_factor ? 0 : 1) == 0;
     if (from_factor)
       {
         block_from_factor(rows, columns, factorization.inverse_block(), block);
         return;
       }
 
-    // One back-substitution per column, kept for this factorisation.
+    // One back-substitution per column, kept for this factorisation. (A
+    // solve is collective on several processes: each makes those of the
+    // columns that any of them lacks, in the same order.)
+    std::vector<unsigned long> lacking;
+    for (const auto dof : columns)
+      if (compliance_columns.find(dof) == compliance_columns.end())
+        lacking.push_back(dof);
+    for (const auto dof : processes::union_of(lacking))
+      {
+        Vector<double> unit(n_dofs);
+        unit(dof) = 1.;
+        solve(unit, compliance_columns[dof]);
+      }
     for (std::size_t c = 0; c < columns.size(); ++c)
       {
-        auto found = compliance_columns.find(columns[c]);
-        if (found == compliance_columns.end())
-          {
-            Vector<double> unit(n_dofs);
-            unit(columns[c]) = 1.;
-            found =
-              compliance_columns.emplace(columns[c], Vector<double>()).first;
-            solve(unit, found->second);
-          }
+        const Vector<double> &column = compliance_columns.at(columns[c]);
         for (std::size_t r = 0; r < n_rows; ++r)
-          block[r + c * n_rows] = found->second(rows[r]);
+          block[r + c * n_rows] = column(rows[r]);
       }
   }
 

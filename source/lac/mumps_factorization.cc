@@ -39,9 +39,21 @@ namespace glissade
 
   MumpsFactorization::MumpsFactorization(MPI_Comm comm)
   {
-    // (a communicator of its own: MUMPS's messages never meet another
-    // factorisation's or the program's)
-    MPI_Comm_dup(comm, &communicator);
+    // A communicator of its own (MUMPS's messages never meet another
+    // factorisation's or the program's), whose process 0, MUMPS's host,
+    // holds S, its factor and the right-hand sides: the factorisations take
+    // the processes as host in turn (made in the same order on every
+    // process), so that two bodies' S do not both sit on one process (82 MB
+    // each at 3,200 contact dofs).
+    static unsigned int factorizations_made = 0;
+    int                 rank = 0, size = 1;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+    const int host = factorizations_made++ % size;
+    MPI_Comm_split(comm, 0, (rank - host + size) % size, &communicator);
+    // (each process forms its share of the columns of C: the whole block
+    // on every process would be 82 MB per body at 3,200 contact dofs)
+    keep_only_asked_columns = true;
   }
 
 
@@ -156,7 +168,7 @@ namespace glissade
           }
         mumps                  = std::make_unique<Instance>();
         mumps->id.comm_fortran = MPI_Comm_c2f(communicator);
-        mumps->id.par          = 1; // process 0 works too
+        mumps->id.par          = 1; // the host works too
         mumps->id.sym          = symmetric ? 2 : 0;
         call(-1, "initialisation");
         symmetric_instance = symmetric;
@@ -167,8 +179,8 @@ namespace glissade
         id.ICNTL(3)        = -1;
         id.ICNTL(4)        = 0;
         id.ICNTL(18)       = 3; // distributed assembled matrix
-        id.ICNTL(20)       = 0; // dense right-hand side, on process 0
-        id.ICNTL(21)       = 0; // solution on process 0
+        id.ICNTL(20)       = 0; // dense right-hand side, on the host
+        id.ICNTL(21)       = 0; // solution on the host
       }
     const std::vector<long> &kept_out =
       symmetric ? last_unknowns : std::vector<long>();
@@ -204,7 +216,7 @@ namespace glissade
     factorize_schur_complement();
     factorization_seconds += seconds_since(numeric_start);
     forget_inverse_columns();
-    cholesky_received = false;
+    received_cholesky.clear();
   }
 
 
@@ -214,7 +226,7 @@ namespace glissade
   {
     int rank = 0;
     MPI_Comm_rank(communicator, &rank);
-    // (process 0's verdicts sent to all, so that every process throws or
+    // (the host's verdicts sent to all, so that every process throws or
     // none does)
     int positive = 0, singular = 0;
     if (rank == 0 && n_last > 0)
@@ -267,6 +279,38 @@ namespace glissade
 
 
 
+  bool
+  MumpsFactorization::on_any_process(const bool value) const
+  {
+    int any = value ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &any, 1, MPI_INT, MPI_MAX, communicator);
+    return any != 0;
+  }
+
+
+
+  void
+  MumpsFactorization::share_trailing_factor() const
+  {
+    int rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    int lacking = rank != 0 && received_cholesky.empty() ? 1 : 0;
+    MPI_Allreduce(MPI_IN_PLACE, &lacking, 1, MPI_INT, MPI_MAX, communicator);
+    if (lacking == 0)
+      return;
+    // (those that hold it already receive the same bits again)
+    if (rank != 0)
+      received_cholesky.resize(std::size_t(n_last) * n_last);
+    MPI_Bcast(rank == 0 ? const_cast<double *>(schur.data()) :
+                          received_cholesky.data(),
+              std::size_t(n_last) * n_last,
+              MPI_DOUBLE,
+              0,
+              communicator);
+  }
+
+
+
   void
   MumpsFactorization::trailing_factor(std::vector<double> &factor,
                                       const bool           last_use) const
@@ -276,26 +320,13 @@ namespace glissade
     if (rank == 0)
       {
         factor = schur;
-        if (!cholesky_received)
-          MPI_Bcast(factor.data(), factor.size(), MPI_DOUBLE, 0, communicator);
-        cholesky_received = true;
         return;
       }
-    if (!cholesky_received)
-      {
-        received_cholesky.resize(std::size_t(n_last) * n_last);
-        MPI_Bcast(received_cholesky.data(),
-                  received_cholesky.size(),
-                  MPI_DOUBLE,
-                  0,
-                  communicator);
-        cholesky_received = true;
-      }
-    else if (received_cholesky.empty())
+    if (received_cholesky.empty())
       throw std::logic_error("MumpsFactorization: the factor of the Schur "
-                             "complement was asked for after its last use");
-    // (its last use: handed over, not copied; process 0 keeps its own for
-    // the solves)
+                             "complement was asked for before it was shared");
+    // (at the whole block: handed over, not copied; the host keeps its
+    // own for the solves)
     if (last_use)
       factor.swap(received_cholesky);
     else

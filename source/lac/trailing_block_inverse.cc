@@ -31,10 +31,15 @@ namespace glissade
           column_of[j] = -2; // marked, so that a repeated j is added once
           wanted.push_back(j);
         }
-    if (wanted.size() == formed)
+    const bool needed = wanted.size() != formed;
+    if (!on_any_process(needed))
       return; // every column is there already
+    share_trailing_factor();
+    if (!needed)
+      return;
     std::sort(wanted.begin(), wanted.end());
-    const bool whole_block = 3 * long(wanted.size()) >= n_last;
+    const bool              whole_block = 3 * long(wanted.size()) >= n_last;
+    const std::vector<long> asked       = wanted;
     if (whole_block)
       {
         wanted.resize(n_last);
@@ -55,6 +60,18 @@ namespace glissade
           for (long i = j + 1; i < n_last; ++i)
             factor[j + i * n_last] = factor[i + j * n_last];
         inverse_block.swap(factor);
+        if (keep_only_asked_columns && info == 0 &&
+            asked.size() < std::size_t(n_last))
+          {
+            // (the columns asked for, copied out of the whole block)
+            std::vector<double> kept(std::size_t(n_last) * asked.size());
+            for (std::size_t c = 0; c < asked.size(); ++c)
+              std::copy_n(&inverse_block[std::size_t(asked[c]) * n_last],
+                          n_last,
+                          &kept[c * n_last]);
+            inverse_block.swap(kept);
+            wanted = asked;
+          }
       }
     else
       {

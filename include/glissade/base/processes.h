@@ -84,6 +84,10 @@ namespace glissade
     int
     maximum(const int value);
 
+    /** The items of every process's `items`, sorted, each once. */
+    std::vector<unsigned long>
+    union_of(const std::vector<unsigned long> &items);
+
     /**
      * Throws, with the same message on every process, unless `value` is
      * the same bits on all of them: the check that the processes still

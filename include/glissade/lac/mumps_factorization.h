@@ -28,11 +28,13 @@ namespace glissade
    * A^-1 on them (TrailingBlockInverse) as the trailing block of CHOLMOD's
    * factor does on one process. A solve then goes through S: MUMPS
    * condenses the right-hand side on the contact dofs, S is solved on
-   * process 0, and MUMPS expands the solution. An unsymmetric matrix is
+   * MUMPS's host, and MUMPS expands the solution. (The host is process 0
+   * of the factorisation's own communicator: the factorisations take the
+   * processes of the run as host in turn.) An unsymmetric matrix is
    * factorised LU, with no Schur complement.
    *
    * Right-hand sides and solutions are whole vectors, the same on every
-   * process (process 0's are broadcast). Every member is collective:
+   * process (the host's are broadcast). Every member is collective:
    * every process calls it, in the same order.
    */
   class MumpsFactorization : public TrailingBlockInverse
@@ -93,12 +95,18 @@ namespace glissade
     trailing_factor(std::vector<double> &factor,
                     const bool           last_use) const override;
 
+    bool
+    on_any_process(const bool value) const override;
+
+    void
+    share_trailing_factor() const override;
+
     /** Calls MUMPS for `job`; throws with its error, on every process. */
     void
     call(const int job, const char *phase) const;
 
     /**
-     * Process 0: S from MUMPS, its Cholesky factor, and its LU only if S
+     * The host: S from MUMPS, its Cholesky factor, and its LU only if S
      * is not positive definite.
      */
     void
@@ -120,16 +128,19 @@ namespace glissade
     /** The last unknowns, 1-based, as MUMPS reads them. */
     std::vector<int> schur_list;
     /**
-     * Process 0: S (column major, m x m), where MUMPS writes it, its
+     * The host: S (column major, m x m), where MUMPS writes it, its
      * Cholesky factor L_S then in the lower triangle (in place: a second
      * m x m array per body is 82 MB at 3,200 contact dofs); S's LU and
      * pivots if S is not positive definite (empty otherwise).
      */
     std::vector<double> schur, schur_lu;
     std::vector<int>    schur_pivots;
-    /** L_S on the other processes, received once per factorisation. */
+    /**
+     * L_S on the other processes, received from the host when a column of
+     * C is first asked for, and handed over when the whole block is formed
+     * (then sent again if more columns are asked for).
+     */
     mutable std::vector<double> received_cholesky;
-    mutable bool                cholesky_received = false;
     mutable std::vector<double> rhs, reduced_rhs;
   };
 } // namespace glissade

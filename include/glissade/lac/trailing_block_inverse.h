@@ -16,7 +16,10 @@ namespace glissade
    * Columns are formed on demand: each costs two triangular solves (LAPACK
    * dpotrs, 2 m^2 flops); from a third of the m columns on, the whole
    * block by dpotri ((2/3) m^3) is cheaper and is formed instead. Columns
-   * already formed for the current factorisation are kept.
+   * already formed for the current factorisation are kept: all of the
+   * whole block, or only those asked for where `keep_only_asked_columns`
+   * (on several processes each asks for its share of the columns, and
+   * keeping the whole block would hold it on every process).
    */
   class TrailingBlockInverse
   {
@@ -57,12 +60,32 @@ namespace glissade
   protected:
     /**
      * L_S, lower triangle, column major, m x m (the strict upper triangle
-     * is not read). `last_use`: no other column will be asked for this
-     * factorisation (the whole block is formed), so that a copy kept only
-     * for them may be handed over instead of copied.
+     * is not read). `last_use`: the whole block is being formed, so that a
+     * copy kept only for the columns may be handed over instead of copied
+     * (a later call must then make it again).
      */
     virtual void
     trailing_factor(std::vector<double> &factor, const bool last_use) const = 0;
+
+    /**
+     * Whether `value` holds on any of the processes that share the
+     * factorisation (collective there; one process: `value`).
+     */
+    virtual bool
+    on_any_process(const bool value) const
+    {
+      return value;
+    }
+
+    /**
+     * Collective where several processes share the factorisation, before
+     * trailing_factor() on any of them: each is made to hold L_S. (Each
+     * asks for its own columns of C, so not every process that takes part
+     * forms any.)
+     */
+    virtual void
+    share_trailing_factor() const
+    {}
 
     /** A new factorisation: the columns formed are stale. */
     void
@@ -75,6 +98,9 @@ namespace glissade
     /** Per unknown of A, its position among the m last ones, or -1. */
     std::vector<long> position;
     long              n_last = 0;
+
+    /** Keep only the columns asked for when the whole block is formed. */
+    bool keep_only_asked_columns = false;
 
   private:
     /** Formed columns of C, column major, n_last rows. */

@@ -4,7 +4,9 @@
 #include <glissade/lac/lapack.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
+#include <tuple>
 #include <utility>
 
 namespace glissade
@@ -60,33 +62,40 @@ namespace glissade
 
     /**
      * The part of `vectors` on body b: its dofs there, sorted, into
-     * `dofs`, and the vectors numbered by their position in `dofs`.
+     * `dofs`, and the vectors numbered by their position in `dofs`; only
+     * the vectors `kept` says.
      */
     void
-    restrict_to_body(const std::vector<PairVector>        &vectors,
-                     const unsigned int                    b,
-                     std::vector<types::global_dof_index> &dofs,
-                     LocalVectors                         &local)
+    restrict_to_body(
+      const std::vector<PairVector>          &vectors,
+      const unsigned int                      b,
+      std::vector<types::global_dof_index>   &dofs,
+      LocalVectors                           &local,
+      const std::function<bool(std::size_t)> &kept = [](std::size_t) {
+        return true;
+      })
     {
       std::map<types::global_dof_index, unsigned int> index;
-      for (const auto &v : vectors)
-        for (const auto &e : *v.coefficients)
-          if (v.bodies[e.body] == b)
-            index.emplace(e.dof, 0);
+      for (std::size_t i = 0; i < vectors.size(); ++i)
+        if (kept(i))
+          for (const auto &e : *vectors[i].coefficients)
+            if (vectors[i].bodies[e.body] == b)
+              index.emplace(e.dof, 0);
       for (auto &[dof, i] : index)
         {
           i = dofs.size();
           dofs.push_back(dof);
         }
       for (std::size_t i = 0; i < vectors.size(); ++i)
-        {
-          std::vector<LocalEntry> entries;
-          for (const auto &e : *vectors[i].coefficients)
-            if (vectors[i].bodies[e.body] == b)
-              entries.push_back({index[e.dof], e.value});
-          if (!entries.empty())
-            local.emplace_back(i, std::move(entries));
-        }
+        if (kept(i))
+          {
+            std::vector<LocalEntry> entries;
+            for (const auto &e : *vectors[i].coefficients)
+              if (vectors[i].bodies[e.body] == b)
+                entries.push_back({index[e.dof], e.value});
+            if (!entries.empty())
+              local.emplace_back(i, std::move(entries));
+          }
     }
 
     // Rows C loads, one of two ways. Dense: the rows and loads as dense
@@ -126,8 +135,7 @@ namespace glissade
     void
     add_dense_products(const BodyProducts        &body,
                        const std::vector<double> &C,
-                       const std::size_t          n_rows,
-                       std::vector<double>       &products)
+                       ComplianceProducts        &products)
     {
       const std::size_t m         = body.row_dofs.size(),
                         m_columns = body.column_dofs.size();
@@ -180,10 +188,11 @@ namespace glissade
                      RT.data(),
                      &ir);
               for (std::size_t k = 0; k < loads_here; ++k)
-                for (std::size_t r = 0; r < rows_here; ++r)
-                  products[body.rows[r0 + r].first +
-                           body.loads[k0 + k].first * n_rows] +=
-                    RT[r + k * rows_here];
+                {
+                  double *column = products.column(body.loads[k0 + k].first);
+                  for (std::size_t r = 0; r < rows_here; ++r)
+                    column[body.rows[r0 + r].first] += RT[r + k * rows_here];
+                }
               // (R back to zeros, entry by entry: the rows are sparse)
               for (std::size_t r = 0; r < rows_here; ++r)
                 for (const auto &e : body.rows[r0 + r].second)
@@ -207,16 +216,18 @@ namespace glissade
     void
     add_sparse_products(const BodyProducts        &body,
                         const std::vector<double> &C,
-                        const std::size_t          n_rows,
-                        std::vector<double>       &products)
+                        ComplianceProducts        &products)
     {
       const std::size_t m = body.row_dofs.size(), l_here = body.loads.size();
       constexpr std::size_t block = 256;
       std::vector<double>   T(m * block), T_rows(m * block), row_product(block);
+      std::vector<double *> columns(block);
       for (std::size_t k0 = 0; k0 < l_here; k0 += block)
         {
           const std::size_t width = std::min(block, l_here - k0);
           std::fill(T.begin(), T.end(), 0.);
+          for (std::size_t k = 0; k < width; ++k)
+            columns[k] = products.column(body.loads[k0 + k].first);
           for (std::size_t k = 0; k < width; ++k)
             {
               double *t = &T[k * m];
@@ -243,12 +254,26 @@ namespace glissade
                     row_product[k] += e.value * t[k];
                 }
               for (std::size_t k = 0; k < width; ++k)
-                products[i + body.loads[k0 + k].first * n_rows] +=
-                  row_product[k];
+                columns[k][i] += row_product[k];
             }
         }
     }
   } // namespace
+
+
+
+  ComplianceProducts::ComplianceProducts(const std::size_t n_rows,
+                                         const std::size_t n_forces,
+                                         const std::size_t n_terms)
+    : n_rows(n_rows)
+    , n_forces(n_forces)
+    , n_terms(n_terms)
+  {
+    std::tie(first_force, end_force) = processes::share(n_forces);
+    std::tie(first_term, end_term)   = processes::share(n_terms);
+    force_columns.assign(n_rows * (end_force - first_force), 0.);
+    term_columns.assign(n_rows * n_terms, 0.);
+  }
 
 
 
@@ -272,22 +297,22 @@ namespace glissade
         all_loads.push_back(term.load);
       }
     add_augmented_terms(augmentation, all_rows, all_loads);
-    const std::size_t   n_rows = all_rows.size(), n_loads = all_loads.size();
-    std::vector<double> P(n_rows * n_loads, 0.);
+    const std::size_t  n_rows = all_rows.size();
+    ComplianceProducts P(n_rows, 2 * n, all_loads.size() - 2 * n);
     add_compliance_products(all_rows, all_loads, P);
     const std::vector<double> rows_of_a =
-      scale_augmented_loads(augmentation.factor, n_rows, P);
+      scale_augmented_loads(augmentation.factor, P);
 
     // Every row applied to d = du_lib + K^-1 a.
     std::vector<double> row_of_d(n_rows);
     for (std::size_t i = 0; i < n_rows; ++i)
       row_of_d[i] = dot(all_rows[i], predictor) + rows_of_a[i];
 
-    is_regular = solve_woodbury_system(P, n_rows, row_of_d);
+    is_regular = solve_woodbury_system(P, row_of_d);
     if (!is_regular)
       return;
-    form_compliance(P, n_rows);
-    form_free_displacement(P, n_rows, row_of_d);
+    form_compliance(P);
+    form_free_displacement(P, row_of_d);
   }
 
 
@@ -314,37 +339,37 @@ namespace glissade
 
 
   std::vector<double>
-  CondensedProblem::scale_augmented_loads(const double         factor,
-                                          const std::size_t    n_rows,
-                                          std::vector<double> &P)
+  CondensedProblem::scale_augmented_loads(const double        factor,
+                                          ComplianceProducts &P)
   {
-    const auto product = [&](const std::size_t i,
-                             const std::size_t j) -> double & {
-      return P[i + j * n_rows];
-    };
     const std::size_t size = 2 * n;
 
     // E_k = factor / (node k's normal compliance through its bodies alone),
-    // a scale at which S stays well conditioned.
+    // a scale at which S stays well conditioned: R C F's diagonal, each
+    // entry from the process that holds its column.
+    std::vector<double> diagonal(size, 0.);
+    for (std::size_t j = P.first_force; j < P.end_force; ++j)
+      diagonal[j] = P.column(j)[j];
+    processes::gather_columns(diagonal.data(), 1, size);
     std::vector<double> stiffness(n, 0.);
     double              largest = 0.;
     for (unsigned int k = 0; k < n; ++k)
       {
-        const double w = product(2 * k + 1, 2 * k + 1);
+        const double w = diagonal[2 * k + 1];
         stiffness[k]   = w > 0. ? factor / w : 0.;
         largest        = std::max(largest, stiffness[k]);
       }
-    std::vector<double> rows_of_a(n_rows, 0.);
+    std::vector<double> rows_of_a(P.n_rows, 0.);
     for (unsigned int j = 0; j < augmented_row.size(); ++j)
       {
         const unsigned int k = augmented_row[j] / 2;
         augmented_scale.push_back(
           -(stiffness[k] > 0. ? stiffness[k] : largest));
-        for (std::size_t i = 0; i < n_rows; ++i)
+        double *column = P.column(size + n_given + j);
+        for (std::size_t i = 0; i < P.n_rows; ++i)
           {
-            double &value = product(i, size + n_given + j);
-            value *= augmented_scale[j];
-            rows_of_a[i] += value * augmented_gap[j];
+            column[i] *= augmented_scale[j];
+            rows_of_a[i] += column[i] * augmented_gap[j];
           }
       }
     return rows_of_a;
@@ -353,97 +378,83 @@ namespace glissade
 
 
   bool
-  CondensedProblem::solve_woodbury_system(const std::vector<double> &P,
-                                          const std::size_t          n_rows,
+  CondensedProblem::solve_woodbury_system(ComplianceProducts        &P,
                                           const std::vector<double> &row_of_d)
   {
-    const auto product = [&](const std::size_t i, const std::size_t j) {
-      return P[i + j * n_rows];
-    };
-    const int size = 2 * n, t = n_given + augmented_row.size();
+    const int size = 2 * n, t = n_given + augmented_row.size(), ld = P.n_rows;
+    first_force       = P.first_force;
+    end_force         = P.end_force;
+    const int columns = end_force - first_force;
 
-    // S = I - V C U, X = S^-1 V C F, y = S^-1 V d.
-    S.assign(std::size_t(t) * t, 0.);
-    X.assign(std::size_t(t) * size, 0.);
-    y.assign(t, 0.);
-    for (int j = 0; j < t; ++j)
-      for (int i = 0; i < t; ++i)
-        S[i + std::size_t(j) * t] =
-          (i == j ? 1. : 0.) - product(size + i, size + j);
-    for (int j = 0; j < size; ++j)
-      for (int i = 0; i < t; ++i)
-        X[i + std::size_t(j) * t] = product(size + i, j);
-    for (int i = 0; i < t; ++i)
-      y[i] = row_of_d[size + i];
+    // S = I - V C U, in place of V C U (the rows of V in U's columns); X =
+    // S^-1 V C F on this process's columns of F; y = S^-1 V d.
+    y.assign(row_of_d.begin() + size, row_of_d.end());
+    X.assign(std::size_t(t) * columns, 0.);
     if (t == 0)
       return true;
+    double *S = &P.term_columns[size];
+    for (int j = 0; j < t; ++j)
+      for (int i = 0; i < t; ++i)
+        S[i + std::size_t(j) * ld] =
+          (i == j ? 1. : 0.) - S[i + std::size_t(j) * ld];
 
-    pivots.resize(t);
+    std::vector<int>    pivots(t);
     int                 info = 0;
     std::vector<double> work(4 * t);
     std::vector<int>    iwork(t);
-    const double        norm = dlange_("1", &t, &t, S.data(), &t, work.data());
-    dgetrf_(&t, &t, S.data(), &t, pivots.data(), &info);
+    const double        norm = dlange_("1", &t, &t, S, &ld, work.data());
+    dgetrf_(&t, &t, S, &ld, pivots.data(), &info);
     // Singular in floating point too: a body that relies on contact with
     // its springs taken out and the contact not holding it leaves S
     // singular up to round-off, not exactly.
     double rcond = 0.;
     if (info == 0)
-      dgecon_(
-        "1", &t, S.data(), &t, &norm, &rcond, work.data(), iwork.data(), &info);
+      dgecon_("1", &t, S, &ld, &norm, &rcond, work.data(), iwork.data(), &info);
     if (!(info == 0 && rcond > 1e-13))
       return false;
-    // X's columns shared out over the processes (S's LU is replicated).
-    const auto [first, end] = processes::share(size);
-    const int one = 1, columns = end - first;
+    // (S's LU is replicated; X's columns stay with the process that formed
+    // them)
+    for (int c = 0; c < columns; ++c)
+      std::copy_n(&P.force_columns[std::size_t(c) * ld + size],
+                  t,
+                  &X[std::size_t(c) * t]);
+    const int one = 1;
     if (columns > 0)
-      dgetrs_("N",
-              &t,
-              &columns,
-              S.data(),
-              &t,
-              pivots.data(),
-              &X[first * t],
-              &t,
-              &info);
-    processes::gather_columns(X.data(), t, size);
-    dgetrs_("N", &t, &one, S.data(), &t, pivots.data(), y.data(), &t, &info);
+      dgetrs_("N", &t, &columns, S, &ld, pivots.data(), X.data(), &t, &info);
+    dgetrs_("N", &t, &one, S, &ld, pivots.data(), y.data(), &t, &info);
     return true;
   }
 
 
 
   void
-  CondensedProblem::form_compliance(const std::vector<double> &P,
-                                    const std::size_t          n_rows)
+  CondensedProblem::form_compliance(const ComplianceProducts &P)
   {
     // W = R C F + (R C U) X; BLAS: the product is the dense part of the
-    // contact tangent's cost.
-    const int           size = 2 * n, t = n_given + augmented_row.size();
+    // contact tangent's cost. Each process forms the columns of its share
+    // of F, from its own columns of R C F and X.
+    const int size = 2 * n, t = n_given + augmented_row.size(), ld = P.n_rows,
+              columns = end_force - first_force;
     std::vector<double> W_dense(std::size_t(size) * size);
-    for (int j = 0; j < size; ++j)
-      std::copy(&P[std::size_t(j) * n_rows],
-                &P[std::size_t(j) * n_rows] + size,
-                &W_dense[std::size_t(j) * size]);
-    // (W's columns shared out over the processes)
-    const auto [first, end] = processes::share(size);
-    const int columns       = end - first;
+    for (int c = 0; c < columns; ++c)
+      std::copy_n(&P.force_columns[std::size_t(c) * ld],
+                  size,
+                  &W_dense[(first_force + c) * size]);
     if (t > 0 && columns > 0)
       {
         const double one = 1.;
-        const int    ld  = n_rows;
         dgemm_("N",
                "N",
                &size,
                &columns,
                &t,
                &one,
-               &P[std::size_t(size) * n_rows],
+               P.term_columns.data(),
                &ld,
-               &X[first * t],
+               X.data(),
                &t,
                &one,
-               &W_dense[first * size],
+               &W_dense[first_force * size],
                &size);
       }
     processes::gather_columns(W_dense.data(), size, size);
@@ -455,8 +466,7 @@ namespace glissade
 
 
   void
-  CondensedProblem::form_free_displacement(const std::vector<double> &P,
-                                           const std::size_t          n_rows,
+  CondensedProblem::form_free_displacement(const ComplianceProducts  &P,
                                            const std::vector<double> &row_of_d)
   {
     // u_free = u_0 + R d + (R C U) y.
@@ -466,7 +476,7 @@ namespace glissade
       {
         double value = row_of_d[i];
         for (int k = 0; k < t; ++k)
-          value += P[i + std::size_t(size + k) * n_rows] * y[k];
+          value += P.term_columns[i + std::size_t(k) * P.n_rows] * y[k];
         u_free[i / 2][i % 2] += value;
       }
   }
@@ -505,12 +515,15 @@ namespace glissade
   CondensedProblem::add_compliance_products(
     const std::vector<PairVector> &all_rows,
     const std::vector<PairVector> &all_loads,
-    std::vector<double>           &products) const
+    ComplianceProducts            &products) const
   {
     // Each entry is formed by one process, with the arithmetic one process
-    // alone does, and the columns are then sent to all: the same bits on
-    // every process, and only the products' own size in memory.
-    const auto process_columns = processes::share(all_loads.size());
+    // alone does; the columns of U are then sent to all, those of F stay
+    // where they were formed. A process asks its bodies only for the
+    // columns of C its loads reach (on several processes, its share).
+    const auto formed_here = [&](const std::size_t j) {
+      return products.formed_here(j);
+    };
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         BodyProducts body;
@@ -518,30 +531,32 @@ namespace glissade
         restrict_to_body(all_loads, b, body.column_dofs, body.loads);
         if (body.row_dofs.empty() || body.column_dofs.empty())
           continue;
+        // (the way is chosen from all the loads: every process chooses
+        // alike)
+        const bool dense = dense_is_cheaper(body);
+        if (processes::count() > 1)
+          {
+            body.column_dofs.clear();
+            body.loads.clear();
+            restrict_to_body(
+              all_loads, b, body.column_dofs, body.loads, formed_here);
+          }
+        // (collective on several processes: called by each, even one whose
+        // loads do not reach this body)
         std::vector<double> C;
         bodies[b]->system().compliance_block(body.row_dofs,
                                              body.column_dofs,
                                              C);
-        const bool dense = dense_is_cheaper(body);
-        // Only this process's share of the loads (process_columns: all of
-        // them on one process); the other columns are gathered below.
-        body.loads.erase(std::remove_if(body.loads.begin(),
-                                        body.loads.end(),
-                                        [&](const auto &load) {
-                                          return load.first <
-                                                   process_columns.first ||
-                                                 load.first >=
-                                                   process_columns.second;
-                                        }),
-                         body.loads.end());
+        if (body.loads.empty())
+          continue;
         if (dense)
-          add_dense_products(body, C, all_rows.size(), products);
+          add_dense_products(body, C, products);
         else
-          add_sparse_products(body, C, all_rows.size(), products);
+          add_sparse_products(body, C, products);
       }
-    processes::gather_columns(products.data(),
-                              all_rows.size(),
-                              all_loads.size());
+    processes::gather_columns(products.term_columns.data(),
+                              products.n_rows,
+                              products.n_terms);
   }
 
 
@@ -551,14 +566,17 @@ namespace glissade
                             std::vector<Vector<double>> &increments,
                             std::vector<Vector<double>> &contact_forces) const
   {
-    // z = y + X r.
+    // z = y + X r, each process's columns of X on its share of r, summed
+    // over the processes.
     const int           t = n_given + augmented_row.size();
-    std::vector<double> z(y);
-    for (unsigned int l = 0; l < n; ++l)
-      for (unsigned int c = 0; c < 2; ++c)
-        if (r[l][c] != 0.)
-          for (int i = 0; i < t; ++i)
-            z[i] += X[i + std::size_t(2 * l + c) * t] * r[l][c];
+    std::vector<double> z(t, 0.);
+    if (processes::rank() == 0)
+      z = y;
+    for (std::size_t j = first_force; j < end_force; ++j)
+      if (const double r_j = r[j / 2][j % 2]; r_j != 0.)
+        for (int i = 0; i < t; ++i)
+          z[i] += X[i + (j - first_force) * t] * r_j;
+    processes::sum(z);
 
     // The loads F r + U z (+ the augmentation's right-hand side) on each
     // body, and one solve per body.

@@ -6,6 +6,7 @@
 #include <glissade/lac/compliance_matrix.h>
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <vector>
 
@@ -79,6 +80,45 @@ namespace glissade
         n += d[0] + d[1];
       return n;
     }
+  };
+
+  /**
+   * The compliance products rows C loads (CondensedProblem) that this
+   * process holds, column major with one row per row: its share of the
+   * columns of F, the forces of unit reactions (processes::share of the 2n:
+   * all of them on one process), and every column of U, the rank-one
+   * terms' loads (each process forms its share and they are gathered).
+   * Where a process forms W's and X's columns from its own columns of F,
+   * it needs no other process's; every process needs all of R C U and
+   * V C U.
+   */
+  struct ComplianceProducts
+  {
+    ComplianceProducts(std::size_t n_rows,
+                       std::size_t n_forces,
+                       std::size_t n_terms);
+
+    /** Whether this process forms the column of load j. */
+    bool
+    formed_here(const std::size_t j) const
+    {
+      return j < n_forces ?
+               first_force <= j && j < end_force :
+               first_term <= j - n_forces && j - n_forces < end_term;
+    }
+
+    /** The column of load j (F's: this process's share only). */
+    double *
+    column(const std::size_t j)
+    {
+      return j < n_forces ? &force_columns[(j - first_force) * n_rows] :
+                            &term_columns[(j - n_forces) * n_rows];
+    }
+
+    const std::size_t n_rows, n_forces, n_terms;
+    /** This process's columns of F, [first_force, end_force), and of U. */
+    std::size_t         first_force, end_force, first_term, end_term;
+    std::vector<double> force_columns, term_columns;
   };
 
   /**
@@ -156,13 +196,13 @@ namespace glissade
 
   private:
     /**
-     * rows C loads, the products with each body's compliance, into
-     * `products` (rows x loads, column major).
+     * rows C loads, the products with each body's compliance: the columns
+     * `products` holds.
      */
     void
     add_compliance_products(const std::vector<PairVector> &all_rows,
                             const std::vector<PairVector> &all_loads,
-                            std::vector<double>           &products) const;
+                            ComplianceProducts            &products) const;
 
     /**
      * The augmented directions as rank-one terms: their rows appended to
@@ -177,32 +217,27 @@ namespace glissade
     /**
      * Scales the products of the augmented loads by -E_k (into
      * `augmented_scale`), E_k from the normal compliances in the products
-     * P (n_rows rows); returns each row applied to K^-1 a, a the
-     * augmentation's load.
+     * P; returns each row applied to K^-1 a, a the augmentation's load.
      */
     std::vector<double>
-    scale_augmented_loads(double               factor,
-                          std::size_t          n_rows,
-                          std::vector<double> &P);
+    scale_augmented_loads(double factor, ComplianceProducts &P);
 
     /**
-     * S = I - V C U (its LU), X = S^-1 V C F and y = S^-1 V d from the
-     * products P and the rows applied to d; false if S is singular to
-     * working precision.
+     * S = I - V C U (its LU, in place of V C U in P), this process's
+     * columns of X = S^-1 V C F and y = S^-1 V d from the products P and
+     * the rows applied to d; false if S is singular to working precision.
      */
     bool
-    solve_woodbury_system(const std::vector<double> &P,
-                          std::size_t                n_rows,
+    solve_woodbury_system(ComplianceProducts        &P,
                           const std::vector<double> &row_of_d);
 
-    /** W = R C F + (R C U) X. */
+    /** W = R C F + (R C U) X, its columns formed by shares and gathered. */
     void
-    form_compliance(const std::vector<double> &P, std::size_t n_rows);
+    form_compliance(const ComplianceProducts &P);
 
     /** u_free = u_0 + R d + (R C U) y. */
     void
-    form_free_displacement(const std::vector<double> &P,
-                           std::size_t                n_rows,
+    form_free_displacement(const ComplianceProducts  &P,
                            const std::vector<double> &row_of_d);
 
     const ActiveNodes                        &nodes;
@@ -219,10 +254,12 @@ namespace glissade
     std::vector<unsigned int> augmented_row;
     std::vector<double>       augmented_scale, augmented_gap;
 
-    /** LU of S and its pivots; X = S^-1 V C F; y = S^-1 V d. */
-    std::vector<double> S;
-    std::vector<int>    pivots;
+    /**
+     * X = S^-1 V C F, this process's columns of it (those of its share of
+     * F, from `first_force`), and y = S^-1 V d.
+     */
     std::vector<double> X;
+    std::size_t         first_force = 0, end_force = 0;
     std::vector<double> y;
     bool                is_regular = true;
 
