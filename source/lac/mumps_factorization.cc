@@ -216,7 +216,7 @@ namespace glissade
     factorize_schur_complement();
     factorization_seconds += seconds_since(numeric_start);
     forget_inverse_columns();
-    received_cholesky.clear();
+    std::vector<double>().swap(received_cholesky);
   }
 
 

@@ -91,7 +91,8 @@ namespace glissade
     void
     forget_inverse_columns()
     {
-      inverse_block.clear();
+      // (released, not only emptied: the next factorisation needs the room)
+      std::vector<double>().swap(inverse_block);
       column_of.clear();
     }
 

@@ -98,6 +98,10 @@ namespace glissade
                        std::size_t n_forces,
                        std::size_t n_terms);
 
+    /** The columns, zeros, made (not before they are needed). */
+    void
+    allocate();
+
     /** Whether this process forms the column of load j. */
     bool
     formed_here(const std::size_t j) const
@@ -231,9 +235,12 @@ namespace glissade
     solve_woodbury_system(ComplianceProducts        &P,
                           const std::vector<double> &row_of_d);
 
-    /** W = R C F + (R C U) X, its columns formed by shares and gathered. */
+    /**
+     * W = R C F + (R C U) X, its columns formed by shares and gathered; the
+     * products P are released on the way.
+     */
     void
-    form_compliance(const ComplianceProducts &P);
+    form_compliance(ComplianceProducts &P);
 
     /** u_free = u_0 + R d + (R C U) y. */
     void
