@@ -22,7 +22,6 @@
 #include <paper_studies/trade_study.h>
 
 #include <dlfcn.h>
-#include <malloc.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -35,30 +34,6 @@
 
 namespace
 {
-  /**
-   * glibc's handling of large blocks, as glibc itself has it. Debian's
-   * SuperLU_DIST, loaded with PETSc through deal.II, turns off at load time
-   * both the mapping of large blocks and the trimming of the heap
-   * (CombBLAS's mallopt(M_MMAP_MAX, 0), mallopt(M_TRIM_THRESHOLD, -1)):
-   * a freed block then never goes back to the system, and a run's peak
-   * memory holds every large temporary it ever freed (at the million-dof
-   * rings the contact algebra's arrays of one Newton iteration stayed in
-   * the next). Back to what glibc settles at by itself: blocks of 32 MB
-   * and more mapped, and unmapped when freed; the heap trimmed when its top
-   * holds 64 MB free.
-   */
-  void
-  return_large_blocks_to_the_system()
-  {
-#ifdef __GLIBC__
-    mallopt(M_MMAP_MAX, 65536);
-    mallopt(M_MMAP_THRESHOLD, 32 << 20);
-    mallopt(M_TRIM_THRESHOLD, 64 << 20);
-#endif
-  }
-
-
-
   /** A study driver, by the name its file's Study entry gives. */
   struct StudyDriver
   {
@@ -175,7 +150,6 @@ main(int argc, char **argv)
     mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv);
   if (processes::count() > 1)
     share_cores_among_processes();
-  return_large_blocks_to_the_system();
   // Messages from process 0 only: the others take the same decisions.
   std::ostream  silent(nullptr);
   std::ostream &err = processes::writes_files() ? std::cerr : silent;
