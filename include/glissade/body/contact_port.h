@@ -51,7 +51,9 @@ namespace glissade
      * factorisation (contact dofs last) and every dof among the declared
      * contact dofs, from the inverse of the factor's trailing block, whose
      * columns at `columns` only are formed; otherwise one solve per column,
-     * kept for the current factorisation.
+     * kept for the current factorisation. Collective on several
+     * processes: every process calls it, each with its own `columns` (its
+     * share of the loads), the same `rows`.
      */
     void
     compliance_block(
