@@ -3,15 +3,19 @@
 # prints, for each run, glissade's summary line, the wall time and the peak
 # memory of each process, then the speed-up and the memory ratio.
 #
-#   benchmarks/processes_rings.sh PROGRAM [CELLS_AROUND [CELLS_RADIAL [N]]]
+#   benchmarks/processes_rings.sh PROGRAM [CELLS_AROUND [CELLS_RADIAL [N
+#                                 [ARGUMENTS...]]]]
 #
 # Defaults: 800 x 80 cells per ring (259,200 dofs), N = 2. The issue's row
-# is 1600 160 (1,030,400 dofs: 1.5 minutes a run here).
+# is 1600 160 (1,030,400 dofs: 1.5 minutes a run here). ARGUMENTS go to
+# the run on N processes alone: --set "Linear solver/Factors out of
+# core=true" for MUMPS's factors in files.
 set -euo pipefail
 program=${1:?usage: processes_rings.sh PROGRAM [AROUND [RADIAL [N]]]}
 around=${2:-800}
 radial=${3:-80}
 n=${4:-2}
+shift $(($# < 4 ? $# : 4))
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -40,7 +44,8 @@ run one "$work/timed.sh" "$program" "${scene[@]}" \
   --set "Output/Directory=$work/one"
 read -r one_wall one_peak < "$work/time.one"
 run many mpirun --allow-run-as-root --oversubscribe -np "$n" \
-  "$work/timed.sh" "$program" "${scene[@]}" --set "Output/Directory=$work/many"
+  "$work/timed.sh" "$program" "${scene[@]}" --set "Output/Directory=$work/many" \
+  "$@"
 many_wall=0
 many_peak=0
 for f in "$work"/time.[0-9]*; do

@@ -21,6 +21,8 @@
 #               stick/slip statuses too). With STOP, the run on PROCESSES
 #               stops after increment STOP and is continued by --restart on
 #               PROCESSES + 1 processes.
+#   EMPTY_AFTER a directory that must exist and hold no file after the runs
+#               (the factors' out-of-core files, removed at a run's end).
 #
 # Lists (ARGS, COMPARES, OUTPUT_MATCHES) come with "@@" between items. A
 # COMPARE is three items: the output file (relative to the work folder),
@@ -293,7 +295,7 @@ elseif(MODE STREQUAL "PARAMETERS")
   endif()
 
 elseif(MODE STREQUAL "PROCESSES")
-  file(REMOVE_RECURSE ${WORKDIR}/one ${WORKDIR}/many)
+  file(REMOVE_RECURSE ${WORKDIR}/one ${WORKDIR}/many ${EMPTY_AFTER})
   file(MAKE_DIRECTORY ${WORKDIR})
   run_program(${WORKDIR} 0 --set "Output/Directory=${WORKDIR}/one")
   # (as root in CI's container: Open MPI asks to be told; more processes
@@ -322,6 +324,13 @@ elseif(MODE STREQUAL "PROCESSES")
     run_on_processes(${more} --restart)
   else()
     run_on_processes(${PROCESSES})
+  endif()
+  if(EMPTY_AFTER)
+    file(GLOB left_behind ${EMPTY_AFTER}/*)
+    if(NOT IS_DIRECTORY ${EMPTY_AFTER} OR left_behind)
+      message(FATAL_ERROR "${EMPTY_AFTER}: not made, or files left in it "
+                          "after the run: ${left_behind}")
+    endif()
   endif()
   set(statuses "")
   if(STATUSES)

@@ -1,14 +1,20 @@
 // A body's matrix factorised by all the processes of a run together
 // (include/glissade/lac/mumps_factorization.h).
 
+#include <glissade/base/input_error.h>
 #include <glissade/lac/lapack.h>
 #include <glissade/lac/mumps_factorization.h>
 
 #include <dmumps_c.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstdio>
+#include <cstring>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -28,7 +34,60 @@ namespace glissade
                                            start)
         .count();
     }
+
+    /** Where the factorisations made from now on write their factors
+     *  (keep_factors_out_of_core(); empty: in memory). */
+    std::string out_of_core_directory;
   } // namespace
+
+
+
+  void
+  MumpsFactorization::keep_factors_out_of_core(const std::string &directory,
+                                               const std::string &entry)
+  {
+    namespace fs = std::filesystem;
+    // (MUMPS's ooc_tmpdir holds 255 characters)
+    if (directory.empty() || directory.size() > 200)
+      throw InputError(entry,
+                       "'" + directory +
+                         "' is empty or longer than 200 characters, "
+                         "which MUMPS cannot take as its out-of-core "
+                         "directory");
+    std::error_code error;
+    fs::create_directories(directory, error);
+    if (!fs::is_directory(directory))
+      throw InputError(entry,
+                       "cannot make the out-of-core directory '" + directory +
+                         "'" + (error ? ": " + error.message() : ""));
+    // (written by this process: on a cluster each node has its own)
+    std::string probe = directory + "/glissade-probe-XXXXXX";
+    const int   file  = mkstemp(probe.data());
+    if (file < 0)
+      throw InputError(entry,
+                       "cannot write in the out-of-core directory '" +
+                         directory + "': " + std::strerror(errno));
+    close(file);
+    std::remove(probe.c_str());
+    out_of_core_directory = directory;
+  }
+
+
+
+  void
+  MumpsFactorization::remove_out_of_core_files() const
+  {
+    namespace fs = std::filesystem;
+    if (out_of_core_prefix.empty())
+      return;
+    const fs::path    file_prefix = fs::path(out_of_core_prefix);
+    const fs::path    directory   = file_prefix.parent_path();
+    const std::string name        = file_prefix.filename().string() + "_";
+    std::error_code   error;
+    for (const auto &file : fs::directory_iterator(directory, error))
+      if (file.path().filename().string().rfind(name, 0) == 0)
+        fs::remove(file.path(), error);
+  }
 
   struct MumpsFactorization::Instance
   {
@@ -49,6 +108,10 @@ namespace glissade
     int                 rank = 0, size = 1;
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &size);
+    if (!out_of_core_directory.empty())
+      out_of_core_prefix = out_of_core_directory + "/glissade-" +
+                           std::to_string(getpid()) + "-" +
+                           std::to_string(factorizations_made);
     const int host = factorizations_made++ % size;
     MPI_Comm_split(comm, 0, (rank - host + size) % size, &communicator);
     // (each process forms its share of the columns of C: the whole block
@@ -63,9 +126,13 @@ namespace glissade
     // Ending MUMPS is collective: skipped while an exception unwinds the
     // stack, which one process alone may be doing (the others would never
     // join); the program then ends, and MPI_Abort stops the others
-    // (applications/glissade/main.cc).
+    // (applications/glissade/main.cc). Its out-of-core files are this
+    // process's own: removed here.
     if (std::uncaught_exceptions() > 0)
-      return;
+      {
+        remove_out_of_core_files();
+        return;
+      }
     if (mumps)
       {
         mumps->id.job = -2;
@@ -93,6 +160,9 @@ namespace glissade
                  "rigid-body motion by its supports?)";
     if (error == -9 || error == -8 || error == -13)
       message += " (out of memory)";
+    if (error <= -90 && error >= -99)
+      message += " (writing or reading the out-of-core files in '" +
+                 out_of_core_directory + "': is the disk full?)";
     throw std::runtime_error(message);
   }
 
@@ -181,6 +251,19 @@ namespace glissade
         id.ICNTL(18)       = 3; // distributed assembled matrix
         id.ICNTL(20)       = 0; // dense right-hand side, on the host
         id.ICNTL(21)       = 0; // solution on the host
+        if (!out_of_core_prefix.empty())
+          {
+            // (each process's share of the factor in its own files; MUMPS
+            // removes them when the instance ends)
+            const std::filesystem::path prefix(out_of_core_prefix);
+            id.ICNTL(22) = 1;
+            std::strncpy(id.ooc_tmpdir,
+                         prefix.parent_path().c_str(),
+                         sizeof(id.ooc_tmpdir) - 1);
+            std::strncpy(id.ooc_prefix,
+                         prefix.filename().c_str(),
+                         sizeof(id.ooc_prefix) - 1);
+          }
       }
     const std::vector<long> &kept_out =
       symmetric ? last_unknowns : std::vector<long>();

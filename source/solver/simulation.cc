@@ -13,6 +13,7 @@
 #include <glissade/io/directory_lock.h>
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
+#include <glissade/lac/mumps_factorization.h>
 #include <glissade/solver/newton_criterion.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/solver/time_integrator.h>
@@ -469,6 +470,41 @@ namespace glissade
 
 
 
+  void
+  Simulation::keep_factors_where_asked() const
+  {
+    const LinearSolverSettings &settings = scene.linear_solver;
+    if (!settings.factors_out_of_core)
+      return;
+    if (processes::count() == 1)
+      {
+        std::cout << "note: " << scene.source
+                  << ": Linear solver/Factors out of core applies to runs on "
+                     "several processes (MUMPS); one process keeps its "
+                     "factors in memory (CHOLMOD, UMFPACK)"
+                  << std::endl;
+        return;
+      }
+    // (every process writes its own files: a refusal on any is every
+    // process's, or the others would wait for it)
+    std::string refused;
+    try
+      {
+        MumpsFactorization::keep_factors_out_of_core(
+          settings.out_of_core_directory,
+          scene.source + ": Linear solver/Out-of-core directory");
+      }
+    catch (const InputError &e)
+      {
+        refused = e.what();
+      }
+    refused = processes::first_message(refused);
+    if (!refused.empty())
+      throw InputError("", refused);
+  }
+
+
+
   bool
   Simulation::run(const bool restart)
   {
@@ -491,6 +527,7 @@ namespace glissade
     refused = processes::first_message(refused);
     if (!refused.empty())
       throw InputError("", refused);
+    keep_factors_where_asked();
 
     const LoadProgram &program = scene.load_program;
     unsigned int       n_total = 0;

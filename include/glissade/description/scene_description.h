@@ -344,6 +344,24 @@ namespace glissade
   };
 
   /**
+   * How the bodies' matrices are factorised where the user has a choice:
+   * on several processes, MUMPS may keep its factors in files rather than
+   * in memory (source/scene/linear_solver_section.cc).
+   */
+  struct LinearSolverSettings
+  {
+    bool factors_out_of_core = false;
+    /** Where; "" in the file: $TMPDIR, or /tmp. */
+    std::string out_of_core_directory;
+
+    /** The section Linear solver. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm);
+  };
+
+  /**
    * A contact pair: the slave nodes of one body's boundary against a master
    * surface, which is another body's boundary or a rigid analytic obstacle.
    */
@@ -412,6 +430,7 @@ namespace glissade
     ContactSolverSettings           contact_solver;
     OutputSettings                  output;
     CheckpointSettings              checkpoint;
+    LinearSolverSettings            linear_solver;
     /** Hash of every value but the Checkpoint section (see SceneReader). */
     std::string fingerprint;
   };

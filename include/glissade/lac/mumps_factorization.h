@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace glissade
@@ -36,6 +37,13 @@ namespace glissade
    * Right-hand sides and solutions are whole vectors, the same on every
    * process (the host's are broadcast). Every member is collective:
    * every process calls it, in the same order.
+   *
+   * Out of core (keep_factors_out_of_core()), each process writes its
+   * share of the factor to files as MUMPS makes it and reads it back at
+   * each solve, and holds in memory only MUMPS's working space: at the
+   * million-dof rings on two processes, a peak of 1.36 GB per process
+   * against 2.09 GB, in the same time while the machine's page cache holds
+   * the files.
    */
   class MumpsFactorization : public TrailingBlockInverse
   {
@@ -45,6 +53,17 @@ namespace glissade
     MumpsFactorization &
     operator=(const MumpsFactorization &) = delete;
     ~MumpsFactorization() override;
+
+    /**
+     * The factorisations made from now on keep their factors in files in
+     * `directory` (MUMPS's out-of-core mode) rather than in memory; the
+     * directory is made if it does not exist. Throws an InputError naming
+     * `entry` where this process cannot make or write it. The files are
+     * removed when the factorisation ends.
+     */
+    static void
+    keep_factors_out_of_core(const std::string &directory,
+                             const std::string &entry);
 
     /**
      * The unknowns to keep out of the factor (sorted, unique), whose Schur
@@ -101,6 +120,13 @@ namespace glissade
     void
     share_trailing_factor() const override;
 
+    /**
+     * Removes this process's out-of-core files of this factorisation (a
+     * run ending on an error, where MUMPS cannot end collectively).
+     */
+    void
+    remove_out_of_core_files() const;
+
     /** Calls MUMPS for `job`; throws with its error, on every process. */
     void
     call(const int job, const char *phase) const;
@@ -115,10 +141,13 @@ namespace glissade
     struct Instance;
     std::unique_ptr<Instance> mumps;
     MPI_Comm                  communicator;
-    bool                      symmetric_instance = false;
-    bool                      analysed           = false;
-    std::vector<long>         last_unknowns;
-    bool                      schur_is_positive = false;
+    /** MUMPS's out-of-core files: "<prefix>_<rank>_XXXXXX" (empty: in core).
+     */
+    std::string       out_of_core_prefix;
+    bool              symmetric_instance = false;
+    bool              analysed           = false;
+    std::vector<long> last_unknowns;
+    bool              schur_is_positive = false;
 
     /** This process's entries: 1-based indices, and the values. */
     long                n                 = 0;

@@ -169,6 +169,14 @@ namespace glissade
     write_last_converged_state(const unsigned int increment);
 
     /**
+     * Linear solver/Factors out of core: MUMPS's factors in files on
+     * several processes; a note on one process, whose factorisations keep
+     * them in memory.
+     */
+    void
+    keep_factors_where_asked() const;
+
+    /**
      * The state a run starts from: the initial state (recorded and
      * written), or with `restart` the checkpoint's; returns the increment
      * it is the state after.
