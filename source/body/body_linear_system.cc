@@ -209,4 +209,20 @@ namespace glissade
       },
       block);
   }
+
+
+
+  void
+  BodyLinearSystem::prepare_compliance(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns)
+  {
+    port.prepare_compliance(rows,
+                            columns,
+                            factorization,
+                            [this](const Vector<double> &force,
+                                   Vector<double>       &x) {
+                              solve_homogeneous(force, x);
+                            });
+  }
 } // namespace glissade

@@ -43,17 +43,11 @@ namespace glissade
 
 
 
-  void
-  ContactPort::compliance_block(
-    const std::vector<types::global_dof_index> &rows,
-    const std::vector<types::global_dof_index> &columns,
-    DirectSolver                               &factorization,
-    const HomogeneousSolve                     &solve,
-    std::vector<double>                        &block)
+  bool
+  ContactPort::reads_factor(const std::vector<types::global_dof_index> &rows,
+                            const std::vector<types::global_dof_index> &columns,
+                            const DirectSolver &factorization) const
   {
-    const std::size_t n_rows = rows.size();
-    block.assign(n_rows * columns.size(), 0.);
-
     // From the Cholesky factor: every dof must be a declared contact dof.
     bool from_factor =
       !contact_rows.empty() && factorization.has_inverse_block();
@@ -63,13 +57,24 @@ namespace glissade
       from_factor = from_factor && contact_position[dof] >= 0;
     // (on several processes each may ask for other columns, and both ways
     // are collective there: the way is the same on all of them)
-    from_factor = processes::maximum(from_factor ? 0 : 1) == 0;
-    if (from_factor)
+    return processes::maximum(from_factor ? 0 : 1) == 0;
+  }
+
+
+
+  void
+  ContactPort::prepare_compliance(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns,
+    DirectSolver                               &factorization,
+    const HomogeneousSolve                     &solve)
+  {
+    if (reads_factor(rows, columns, factorization))
       {
-        block_from_factor(rows, columns, factorization.inverse_block(), block);
+        factorization.inverse_block().compute_inverse_columns(
+          factor_positions(columns, factorization.inverse_block()));
         return;
       }
-
     // One back-substitution per column, kept for this factorisation. (A
     // solve is collective on several processes: each makes those of the
     // columns that any of them lacks, in the same order.)
@@ -83,6 +88,26 @@ namespace glissade
         unit(dof) = 1.;
         solve(unit, compliance_columns[dof]);
       }
+  }
+
+
+
+  void
+  ContactPort::compliance_block(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns,
+    DirectSolver                               &factorization,
+    const HomogeneousSolve                     &solve,
+    std::vector<double>                        &block)
+  {
+    prepare_compliance(rows, columns, factorization, solve);
+    const std::size_t n_rows = rows.size();
+    block.assign(n_rows * columns.size(), 0.);
+    if (reads_factor(rows, columns, factorization))
+      {
+        block_from_factor(rows, columns, factorization.inverse_block(), block);
+        return;
+      }
     for (std::size_t c = 0; c < columns.size(); ++c)
       {
         const Vector<double> &column = compliance_columns.at(columns[c]);
@@ -93,12 +118,10 @@ namespace glissade
 
 
 
-  void
-  ContactPort::block_from_factor(
-    const std::vector<types::global_dof_index> &rows,
+  std::vector<long>
+  ContactPort::factor_positions(
     const std::vector<types::global_dof_index> &columns,
-    TrailingBlockInverse                       &cholesky,
-    std::vector<double>                        &block)
+    const TrailingBlockInverse                 &cholesky)
   {
     if (contact_rows_resolved.empty())
       {
@@ -111,7 +134,19 @@ namespace glissade
     for (const auto dof : columns)
       for (const auto &[j, w] : contact_rows_resolved[contact_position[dof]])
         wanted.push_back(j);
-    cholesky.compute_inverse_columns(wanted);
+    return wanted;
+  }
+
+
+
+  void
+  ContactPort::block_from_factor(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns,
+    const TrailingBlockInverse                 &cholesky,
+    std::vector<double>                        &block)
+  {
+    // (the columns were formed by prepare_compliance())
     const std::size_t n_rows = rows.size();
     for (std::size_t c = 0; c < columns.size(); ++c)
       {

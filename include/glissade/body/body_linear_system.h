@@ -147,6 +147,15 @@ namespace glissade
     set_contact_dofs(
       const std::vector<dealii::types::global_dof_index> &contact_dofs);
 
+    /**
+     * What compliance_block() reads, formed and kept without reading it:
+     * ContactPort::prepare_compliance().
+     */
+    void
+    prepare_compliance(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns);
+
     /** The contact block of K^-1: ContactPort::compliance_block(). */
     void
     compliance_block(

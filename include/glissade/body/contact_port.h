@@ -63,6 +63,19 @@ namespace glissade
       const HomogeneousSolve                             &solve,
       std::vector<double>                                &block);
 
+    /**
+     * Forms and keeps what compliance_block() for these `rows` and
+     * `columns` reads (the factor's inverse columns, or the solves),
+     * without reading it: where every body's columns are formed before
+     * any is used (CondensedProblem). Collective as compliance_block().
+     */
+    void
+    prepare_compliance(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns,
+      DirectSolver                                       &factorization,
+      const HomogeneousSolve                             &solve);
+
     /** The factorisation changed: the compliance kept is stale. */
     void
     forget_compliance()
@@ -72,12 +85,30 @@ namespace glissade
     }
 
   private:
-    /** The block from the Cholesky factor's inverse (every dof declared). */
+    /**
+     * Whether the block comes from the Cholesky factor's inverse (every
+     * dof declared, an inverse block held) rather than from solves; the
+     * same on every process (collective).
+     */
+    bool
+    reads_factor(const std::vector<dealii::types::global_dof_index> &rows,
+                 const std::vector<dealii::types::global_dof_index> &columns,
+                 const DirectSolver &factorization) const;
+
+    /** The positions among the factor's last unknowns that `columns`
+     *  follow. */
+    std::vector<long>
+    factor_positions(
+      const std::vector<dealii::types::global_dof_index> &columns,
+      const TrailingBlockInverse                         &cholesky);
+
+    /** The block from the Cholesky factor's inverse (every dof declared),
+     *  its columns formed. */
     void
     block_from_factor(
       const std::vector<dealii::types::global_dof_index> &rows,
       const std::vector<dealii::types::global_dof_index> &columns,
-      TrailingBlockInverse                               &cholesky,
+      const TrailingBlockInverse                         &cholesky,
       std::vector<double>                                &block);
 
     const dealii::types::global_dof_index n_dofs;

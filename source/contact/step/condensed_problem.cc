@@ -558,32 +558,32 @@ namespace glissade
           }
       }
 
-    // C formed for every body first, and only then the products: forming
-    // C passes through copies of the Schur complement's factor and the
-    // whole inverse block, which then never sit beside the products (82 MB
-    // each at 3,200 contact dofs). The second call reads what the first
-    // kept. (Collective on several processes: called by each, even one
-    // whose loads do not reach the body.)
-    for (const bool kept : {false, true})
+    // C's columns formed for every body first, and only then read and the
+    // products made: forming them passes through copies of the Schur
+    // complement's factor and the whole inverse block, which then never
+    // sit beside the products (82 MB each at 3,200 contact dofs).
+    // (Collective on several processes: called by each, even one whose
+    // loads do not reach the body.)
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!per_body[b].row_dofs.empty())
+        bodies[b]->system().prepare_compliance(per_body[b].row_dofs,
+                                               per_body[b].column_dofs);
+    products.allocate();
+    for (unsigned int b = 0; b < bodies.size(); ++b)
       {
-        if (kept)
-          products.allocate();
-        for (unsigned int b = 0; b < bodies.size(); ++b)
-          {
-            const BodyProducts &body = per_body[b];
-            if (body.row_dofs.empty())
-              continue;
-            std::vector<double> C;
-            bodies[b]->system().compliance_block(body.row_dofs,
-                                                 body.column_dofs,
-                                                 C);
-            if (!kept || body.loads.empty())
-              continue;
-            if (dense[b])
-              add_dense_products(body, C, products);
-            else
-              add_sparse_products(body, C, products);
-          }
+        const BodyProducts &body = per_body[b];
+        if (body.row_dofs.empty())
+          continue;
+        std::vector<double> C;
+        bodies[b]->system().compliance_block(body.row_dofs,
+                                             body.column_dofs,
+                                             C);
+        if (body.loads.empty())
+          continue;
+        if (dense[b])
+          add_dense_products(body, C, products);
+        else
+          add_sparse_products(body, C, products);
       }
     processes::gather_columns(products.term_columns.data(),
                               products.n_rows,
