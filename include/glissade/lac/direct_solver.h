@@ -98,6 +98,14 @@ namespace glissade
       return schur;
     }
 
+    const TrailingBlockInverse &
+    inverse_block() const
+    {
+      if (distributed != nullptr)
+        return *distributed;
+      return schur;
+    }
+
     SchurCholesky &
     cholesky()
     {
