@@ -24,6 +24,12 @@ shift
 export OPENBLAS_NUM_THREADS=1
 export DEAL_II_NUM_THREADS=${SLURM_CPUS_PER_TASK:-1}
 
+# Where memory is short, the factors out of core: each process writes its
+# share of MUMPS's factors to the node's local scratch (Slurm's $TMPDIR,
+# the entry's default, when the cluster sets it) and reads it back at each
+# solve; the files are removed at the end. Uncomment to use:
+# set -- "$@" --set "Linear solver/Factors out of core=true"
+
 # srun starts the processes under Slurm's PMI; `mpirun -np $SLURM_NTASKS`
 # works as well where Open MPI was built with Slurm support.
 srun --mpi=pmix build/glissade "$scene" "$@"
