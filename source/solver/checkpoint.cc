@@ -136,8 +136,8 @@ namespace glissade
           throw InputError(checkpoint_file(),
                            "was written for another scene: " + scene.source +
                              " (with its --set overrides) or a mesh file it "
-                             "reads has changed since; only the Checkpoint "
-                             "section may differ");
+                             "reads has changed since; only the sections "
+                             "Checkpoint and Linear solver may differ");
         serialize_state(archive);
       }
     catch (const InputError &)
