@@ -2,24 +2,43 @@
 # SIGTERM (what a batch scheduler sends at its time limit) during a run:
 # the increment being solved is finished, a checkpoint of it is written,
 # and the run stops with exit code 5 and a message; --restart continues
-# from that increment. Usage: restart_after_signal.sh glissade scene.prm dir
+# from that increment. Usage:
+#   restart_after_signal.sh glissade scene.prm dir [processes]
+# With processes (> 1), both runs go under mpirun with the factors out of
+# core, and the signal goes to the glissade processes, as Slurm's srun
+# sends it at a time limit (mpirun's own SIGTERM kills its processes after
+# a second); every process stops after the same increment, and the
+# out-of-core directory is left empty.
 set -u
 program=$1
 scene=$2
 dir=$3
+processes=${4:-1}
 rm -rf "$dir"
 mkdir -p "$dir"
 # Many small increments: the run is still going when the signal comes.
 sets=(--set "Load program/Stage increments=100000"
       --set "Output/VTU interval=0" --set "Output/Progress=true"
       --set "Output/Directory=$dir/run")
-"$program" "$scene" "${sets[@]}" > "$dir/run.log" 2> "$dir/run.err" &
+launch=()
+if [ "$processes" -gt 1 ]; then
+  launch=(mpirun --allow-run-as-root --oversubscribe -np "$processes")
+  sets+=(--set "Linear solver/Factors out of core=true"
+         --set "Linear solver/Out-of-core directory=$dir/factors")
+  export OMPI_MCA_btl_vader_single_copy_mechanism=none
+  export OMPI_MCA_mpi_yield_when_idle=1
+fi
+"${launch[@]}" "$program" "$scene" "${sets[@]}" > "$dir/run.log" 2> "$dir/run.err" &
 pid=$!
 for i in $(seq 1 600); do
   grep -q "^increment *3/" "$dir/run.log" 2> /dev/null && break
   sleep 0.05
 done
-kill -TERM $pid
+if [ "$processes" -gt 1 ]; then
+  pkill -TERM -P $pid
+else
+  kill -TERM $pid
+fi
 wait $pid
 status=$?
 cat "$dir/run.err"
@@ -42,12 +61,16 @@ if [ "$rows" -ne $((stopped + 2)) ]; then
   exit 1
 fi
 # The restart continues after that increment (one more, then a planned stop).
-"$program" "$scene" "${sets[@]}" --restart \
+"${launch[@]}" "$program" "$scene" "${sets[@]}" --restart \
   --set "Checkpoint/Stop after increment=$((stopped + 1))" > "$dir/restart.log" 2>&1
 status=$?
 if [ $status -ne 0 ] || ! grep -q "restart after increment $stopped " "$dir/restart.log"; then
   echo "the restart failed (exit $status):"
   cat "$dir/restart.log"
+  exit 1
+fi
+if [ "$processes" -gt 1 ] && [ -n "$(ls -A "$dir/factors")" ]; then
+  echo "out-of-core files left in $dir/factors: $(ls "$dir/factors")"
   exit 1
 fi
 echo "stopped by SIGTERM after increment $stopped, exit 5, restarted from it"

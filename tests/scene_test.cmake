@@ -12,7 +12,8 @@
 #               the uninterrupted run's; with MISTAKES, a changed scene and
 #               a damaged checkpoint refused first.
 #   SIGNAL      SIGTERM during a run: checkpoint, exit 5, restart
-#               (restart_after_signal.sh: CMake cannot send a signal).
+#               (restart_after_signal.sh: CMake cannot send a signal); with
+#               PROCESSES, under mpirun, the factors out of core.
 #   HELD        a run in an output directory another run holds is refused.
 #   CHANGED_MESH  a restart after the mesh file changed is refused (MESH).
 #   PARAMETERS  `glissade --print-parameters` equals the file INPUT.
@@ -230,7 +231,7 @@ elseif(MODE STREQUAL "RESTART")
 
 elseif(MODE STREQUAL "SIGNAL")
   execute_process(COMMAND bash ${SOURCE_DIR}/tests/restart_after_signal.sh
-                          ${PROGRAM} ${INPUT} ${WORKDIR}
+                          ${PROGRAM} ${INPUT} ${WORKDIR} ${PROCESSES}
                   RESULT_VARIABLE status)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "restart after SIGTERM failed")
