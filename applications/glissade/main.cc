@@ -123,6 +123,36 @@ namespace
         set(threads);
   }
 
+  /**
+   * The command that continues a stopped run: the scene and its --set
+   * overrides (a restart refuses another scene), quoted for a shell, and
+   * under mpirun the launcher (any number of processes may continue).
+   * (The Simulation's summary.txt keeps its short form, "--restart".)
+   */
+  std::string
+  continuation_command(const std::string              &scene,
+                       const std::vector<std::string> &overrides)
+  {
+    const auto quoted = [](const std::string &word) {
+      std::string text = "'";
+      for (const char c : word)
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      return text + "'";
+    };
+    std::string command = glissade::processes::count() > 1 ?
+                            "mpirun -np " +
+                              std::to_string(glissade::processes::count()) +
+                              " glissade " :
+                            "glissade ";
+    command += scene;
+    // (the planned stop that ended the run is left out: the next one is
+    // the user's to choose)
+    for (const std::string &entry : overrides)
+      if (entry.rfind("Checkpoint/Stop after increment", 0) != 0)
+        command += " --set " + quoted(entry);
+    return command + " --restart";
+  }
+
   void
   print_usage(std::ostream &out)
   {
@@ -234,8 +264,8 @@ main(int argc, char **argv)
           << simulation.timing_table() << std::flush;
       if (!completed)
         out << "stopped at Checkpoint/Stop after increment; continue "
-               "with: glissade "
-            << argv[1] << " --restart" << std::endl;
+               "with: "
+            << continuation_command(argv[1], overrides) << std::endl;
     }
   catch (const InputError &e)
     {
@@ -249,8 +279,9 @@ main(int argc, char **argv)
     }
   catch (const RunInterrupted &e)
     {
-      err << "glissade: " << e.what() << "; continue with: glissade " << argv[1]
-          << " --restart" << std::endl;
+      err << "glissade: " << e.what()
+          << "; continue with: " << continuation_command(argv[1], overrides)
+          << std::endl;
       return 5;
     }
   catch (const std::exception &e)
