@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <exception>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -35,6 +36,32 @@ namespace glissade
 
   using progress_text::duration;
   using progress_text::time_left;
+
+  namespace
+  {
+    /**
+     * Runs `check`, which may refuse the scene (InputError) on some
+     * processes only (a directory only one can make or write): the first
+     * refusal is every process's, or the others would wait for the one
+     * that stopped.
+     */
+    void
+    refuse_on_every_process(const std::function<void()> &check)
+    {
+      std::string refused;
+      try
+        {
+          check();
+        }
+      catch (const InputError &e)
+        {
+          refused = e.what();
+        }
+      refused = processes::first_message(refused);
+      if (!refused.empty())
+        throw InputError("", refused);
+    }
+  } // namespace
 
 
 
@@ -485,22 +512,12 @@ namespace glissade
                   << std::endl;
         return;
       }
-    // (every process writes its own files: a refusal on any is every
-    // process's, or the others would wait for it)
-    std::string refused;
-    try
-      {
-        MumpsFactorization::keep_factors_out_of_core(
-          settings.out_of_core_directory,
-          scene.source + ": Linear solver/Out-of-core directory");
-      }
-    catch (const InputError &e)
-      {
-        refused = e.what();
-      }
-    refused = processes::first_message(refused);
-    if (!refused.empty())
-      throw InputError("", refused);
+    // (every process writes its own files)
+    refuse_on_every_process([&]() {
+      MumpsFactorization::keep_factors_out_of_core(
+        settings.out_of_core_directory,
+        scene.source + ": Linear solver/Out-of-core directory");
+    });
   }
 
 
@@ -509,24 +526,14 @@ namespace glissade
   Simulation::run(const bool restart)
   {
     Timer wall;
-    // One run per output directory at a time (held until run() returns).
-    // (held by the process that writes the files; its refusal is every
-    // process's, or the others would wait for it forever)
+    // One run per output directory at a time (held until run() returns),
+    // held by the process that writes the files.
     std::optional<DirectoryLock> output_lock;
-    std::string                  refused;
-    if (writes_files)
-      try
-        {
-          output_lock.emplace(scene.output.directory,
-                              scene.source + ": Output/Directory");
-        }
-      catch (const InputError &e)
-        {
-          refused = e.what();
-        }
-    refused = processes::first_message(refused);
-    if (!refused.empty())
-      throw InputError("", refused);
+    refuse_on_every_process([&]() {
+      if (writes_files)
+        output_lock.emplace(scene.output.directory,
+                            scene.source + ": Output/Directory");
+    });
     keep_factors_where_asked();
 
     const LoadProgram &program = scene.load_program;
