@@ -7,10 +7,13 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/processes.h>
+#include <glissade/base/text.h>
 #include <glissade/body/body.h>
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/mesh_diameter.h>
+#include <glissade/mesh/process_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -114,11 +117,10 @@ namespace glissade
     motions_free_of_supports(const BoundaryConditions &conditions,
                              const DoFHandler<2>      &dofs,
                              const ElementSpace       &space,
-                             const Triangulation<2>   &mesh,
+                             const BoundingBox<2>     &box,
                              const double              reference_size,
                              const bool                axisymmetric)
     {
-      const auto box = GridTools::compute_bounding_box(mesh);
       const auto basis =
         rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
       const std::vector<RigidMotion> all(basis.begin(), basis.end());
@@ -142,6 +144,71 @@ namespace glissade
 
 
 
+    /**
+     * The points that the body's supports and loads name (point(x, y)):
+     * a distributed mesh holds the cells around them on every process.
+     */
+    std::vector<Point<2>>
+    named_points(const BodyDescription &description)
+    {
+      std::vector<std::string> locations;
+      for (const auto &d : description.dirichlet)
+        locations.push_back(d.location);
+      for (const auto &n : description.neumann)
+        locations.push_back(n.location);
+      std::vector<Point<2>> points;
+      double                x, y;
+      for (const auto &location : locations)
+        if (text::parse_point_location(location, x, y))
+          points.emplace_back(x, y);
+      return points;
+    }
+
+
+
+    /** Every vertex and node of the whole mesh, with their value dofs. */
+    Body::WholeMeshNodes
+    nodes_of(const DoFHandler<2> &dofs, const ElementSpace &space)
+    {
+      // (the x and y values of a node: the shape functions of the first
+      // and second displacement components at the same support point)
+      const FiniteElement<2> &fe      = dofs.get_fe();
+      const unsigned int      per_dim = space.components_per_displacement();
+      std::vector<std::pair<unsigned int, unsigned int>> pairs;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        if (fe.system_to_component_index(i).first == 0)
+          for (unsigned int j = 0; j < fe.n_dofs_per_cell(); ++j)
+            if (fe.system_to_component_index(j) ==
+                std::make_pair(per_dim, fe.system_to_component_index(i).second))
+              pairs.emplace_back(i, j);
+      Body::WholeMeshNodes nodes;
+      const auto          &mesh = dofs.get_triangulation();
+      std::vector<bool>    vertex_seen(mesh.n_vertices(), false);
+      std::vector<bool>    node_seen(dofs.n_dofs(), false);
+      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        {
+          for (const unsigned int v : cell->vertex_indices())
+            if (!vertex_seen[cell->vertex_index(v)])
+              {
+                vertex_seen[cell->vertex_index(v)] = true;
+                nodes.vertices.push_back(cell->vertex(v));
+                nodes.vertex_dofs.push_back(
+                  BoundaryConditions::cell_vertex_dofs(cell, v, space));
+              }
+          cell->get_dof_indices(local);
+          for (const auto &[i, j] : pairs)
+            if (!node_seen[local[i]])
+              {
+                node_seen[local[i]] = true;
+                nodes.node_dofs.push_back({{local[i], local[j]}});
+              }
+        }
+      return nodes;
+    }
+
+
+
     /** False where follower pressure makes the tangent unsymmetric. */
     bool
     without_follower_pressure(const BoundaryConditions &conditions)
@@ -155,15 +222,19 @@ namespace glissade
 
 
 
-  Body::Body(const BodyDescription &description, const std::string &source)
+  Body::Body(const BodyDescription &description,
+             const std::string     &source,
+             const bool             may_distribute_mesh)
     : description(description)
     , source(source)
   {
-    const std::string where = source + ": Body " + description.name;
+    const std::string where  = source + ": Body " + description.name;
+    auto              serial = std::make_unique<Triangulation<2>>();
     const MeshLabels  labels =
-      MeshFactory::create(description.mesh, mesh, where);
+      MeshFactory::create(description.mesh, *serial, where);
     named_boundaries   = labels.boundaries;
-    reference_size     = mesh_diameter(mesh);
+    reference_size     = mesh_diameter(*serial);
+    n_mesh_cells       = serial->n_active_cells();
     materials_of_cells = std::make_unique<BodyMaterials>(
       description.material,
       labels.regions,
@@ -176,7 +247,7 @@ namespace glissade
     const bool axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
     if (axisymmetric)
-      check_axisymmetric_body(description, mesh, reference_size, where);
+      check_axisymmetric_body(description, *serial, reference_size, where);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
     // the chords instead.
@@ -189,28 +260,69 @@ namespace glissade
                          description.element_space +
                          "' body cannot follow: choose q2, q8, q3 or q12, "
                          "or save the mesh first-order (gmsh -order 1)");
-    dofs.reinit(mesh);
-    dofs.distribute_dofs(element_space->finite_element());
-    element_space->setup(dofs, element_constraints);
+    const auto box = GridTools::compute_bounding_box(*serial);
 
-    boundary_conditions =
-      std::make_unique<BoundaryConditions>(description, named_boundaries, mesh);
-    loads = std::make_unique<DistributedLoads>(description,
+    // On several processes a quasi-static body of a Lagrange space holds
+    // its share of the mesh (distribute_mesh), its dofs numbered as one
+    // process numbers them; the serial mesh and its dofs are let go once
+    // what needs the whole mesh is known.
+    // (a mesh whose boundary ids include the one of the cut faces stays
+    // whole)
+    const std::set<std::string> lagrange_spaces = {"q1", "q2", "q3"};
+    const auto                  boundary_ids    = serial->get_boundary_ids();
+    const bool                  distribute =
+      may_distribute_mesh && processes::count() > 1 &&
+      lagrange_spaces.count(description.element_space) > 0 &&
+      std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
+        boundary_ids.end();
+    const FiniteElement<2>              &fe = element_space->finite_element();
+    std::vector<types::global_dof_index> axis_dofs;
+    if (!distribute)
+      {
+        mesh = std::move(serial);
+        dofs.reinit(*mesh);
+        dofs.distribute_dofs(fe);
+        element_space->setup(dofs, element_constraints);
+        if (axisymmetric)
+          axis_dofs = radial_dofs_on_axis(dofs, *element_space, reference_size);
+      }
+    else
+      {
+        DoFHandler<2> serial_dofs(*serial);
+        serial_dofs.distribute_dofs(fe);
+        if (axisymmetric)
+          axis_dofs =
+            radial_dofs_on_axis(serial_dofs, *element_space, reference_size);
+        nodes_of_whole_mesh = nodes_of(serial_dofs, *element_space);
+        mesh                = distribute_mesh(*serial,
+                               named_points(description),
+                               processes::communicator());
+        dofs.reinit(*mesh);
+        dofs.distribute_dofs(fe);
+        number_dofs_as_serial(dofs, serial_dofs);
+        element_space->setup(dofs, element_constraints);
+      }
+    serial.reset();
+
+    boundary_conditions = std::make_unique<BoundaryConditions>(description,
+                                                               named_boundaries,
+                                                               *mesh);
+    loads               = std::make_unique<DistributedLoads>(description,
                                                *boundary_conditions,
                                                *materials_of_cells,
                                                where);
     if (axisymmetric)
-      boundary_conditions->hold_on_axis(
-        radial_dofs_on_axis(dofs, *element_space, reference_size));
+      boundary_conditions->hold_on_axis(axis_dofs);
 
     solution.reinit(dofs.n_dofs());
     stored_solution.reinit(dofs.n_dofs());
     unconstrained_residual.reinit(dofs.n_dofs());
     contact_forces.reinit(dofs.n_dofs());
-    cell_integration = std::make_unique<CellIntegration>(*element_space,
-                                                         *materials_of_cells,
-                                                         description.material,
-                                                         mesh.n_active_cells());
+    cell_integration =
+      std::make_unique<CellIntegration>(*element_space,
+                                        *materials_of_cells,
+                                        description.material,
+                                        mesh->n_active_cells());
 
     // The constraints at t = 0 say which dofs are constrained, which never
     // changes during a run: the system's sparsity pattern is built on them.
@@ -225,7 +337,7 @@ namespace glissade
       RigidMotionSprings(motions_free_of_supports(*boundary_conditions,
                                                   dofs,
                                                   *element_space,
-                                                  mesh,
+                                                  box,
                                                   reference_size,
                                                   axisymmetric),
                          source,
@@ -344,19 +456,30 @@ namespace glissade
   const std::vector<BodyCell> &
   Body::own_cells()
   {
-    // A contiguous range of the active cells (their order is the mesh's,
-    // which the mesh types number row by row): process p of P takes cells
-    // n p / P to n (p + 1) / P.
     if (own_cell_list.empty())
-      {
-        const auto [first, end] =
-          processes::share(dofs.get_triangulation().n_active_cells());
-        for (const auto &cell : dofs.active_cell_iterators())
-          if (cell->active_cell_index() >= first &&
-              cell->active_cell_index() < end)
-            own_cell_list.push_back(cell);
-      }
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (is_own_cell(cell))
+          own_cell_list.push_back(cell);
     return own_cell_list;
+  }
+
+
+
+  bool
+  Body::is_own_cell(const Triangulation<2>::cell_iterator &cell) const
+  {
+    // A distributed mesh: the cells this process owns. A whole mesh on
+    // several processes: a contiguous range of the active cells (their
+    // order is the mesh's, which the mesh types number row by row),
+    // process p of P taking cells n p / P to n (p + 1) / P; the same cells
+    // as distribute_mesh gives it.
+    if (mesh_is_distributed())
+      return cell->is_active() && cell->is_locally_owned();
+    if (processes::count() == 1)
+      return cell->is_active();
+    const auto [first, end] = processes::share(n_mesh_cells);
+    return cell->is_active() && cell->active_cell_index() >= first &&
+           cell->active_cell_index() < end;
   }
 
 
@@ -375,7 +498,7 @@ namespace glissade
         if (admissible)
           {
             std::ostringstream message;
-            message << "cell " << cell->active_cell_index() << " of body '"
+            message << "cell " << serial_cell_index(cell) << " of body '"
                     << name() << "' at (" << cell->center()[0] << ", "
                     << cell->center()[1] << ") " << data.rejection;
             problem = message.str();
@@ -448,7 +571,7 @@ namespace glissade
   Body::boundary_id(const std::string &boundary, const std::string &entry) const
   {
     const Location where = BoundaryConditions::resolve(
-      boundary, named_boundaries, mesh, description.name, entry);
+      boundary, named_boundaries, *mesh, description.name, entry);
     if (where.is_vertex)
       throw InputError(entry, "expected a boundary name, not a point");
     return where.boundary;

@@ -1,9 +1,12 @@
 // Measures of a body's state (include/glissade/body/body_measures.h).
 
+#include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
 #include <glissade/body/body_measures.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace glissade
@@ -23,6 +26,30 @@ namespace glissade
   std::array<types::global_dof_index, 2>
   vertex_value_dofs(const Body &body, const Point<2> &point)
   {
+    // A distributed mesh may not hold the vertex here: the whole mesh's
+    // vertices are kept for it.
+    if (body.mesh_is_distributed())
+      {
+        const auto  &nodes   = body.whole_mesh_nodes();
+        double       best    = std::numeric_limits<double>::max();
+        unsigned int nearest = 0;
+        for (unsigned int v = 0; v < nodes.vertices.size(); ++v)
+          if (nodes.vertices[v].distance(point) < best)
+            {
+              best    = nodes.vertices[v].distance(point);
+              nearest = v;
+            }
+        if (best > 1e-8 * body.size())
+          {
+            std::ostringstream message;
+            message << "point(" << point[0] << ", " << point[1]
+                    << ") is not a vertex of the mesh of body '" << body.name()
+                    << "' (the nearest vertex is at " << nodes.vertices[nearest]
+                    << ")";
+            throw InputError("", message.str());
+          }
+        return nodes.vertex_dofs[nearest];
+      }
     std::ostringstream location;
     location.precision(17);
     location << "point(" << point[0] << ", " << point[1] << ")";
@@ -78,6 +105,13 @@ namespace glissade
     const Vector<double>                &u = body.displacement();
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
     double                               largest = 0.;
+    // (a distributed mesh may not hold the node where it is largest)
+    if (body.mesh_is_distributed())
+      {
+        for (const auto &[x, y] : body.whole_mesh_nodes().node_dofs)
+          largest = std::max(largest, std::hypot(u(x), u(y)));
+        return largest;
+      }
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
         cell->get_dof_indices(local_dofs);
@@ -139,6 +173,9 @@ namespace glissade
   double
   strain_energy(const Body &body)
   {
+    // (the bodies of a dynamic scheme, which alone asks for it, hold the
+    // whole mesh: Simulation)
+    AssertThrow(!body.mesh_is_distributed(), ExcNotImplemented());
     const bool axisymmetric =
       body.hypothesis() == PlaneHypothesis::axisymmetric;
     const Vector<double> &u         = body.displacement();

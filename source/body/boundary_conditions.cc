@@ -7,6 +7,7 @@
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/mesh/boundary_normals.h>
 #include <glissade/mesh/mesh_diameter.h>
+#include <glissade/mesh/process_mesh.h>
 
 #include <cmath>
 #include <set>
@@ -96,7 +97,8 @@ namespace glissade
         if (best > 1e-8 * size && allow_face_point)
           for (const auto &cell : triangulation.active_cell_iterators())
             for (const unsigned int f : cell->face_indices())
-              if (cell->face(f)->at_boundary())
+              if (cell->face(f)->at_boundary() &&
+                  cell->face(f)->boundary_id() != cut_boundary_id)
                 {
                   const Point<2>     a = cell->face(f)->vertex(0);
                   const Tensor<1, 2> d = cell->face(f)->vertex(1) - a;

@@ -123,17 +123,13 @@ namespace glissade
                                       DataOutBase::VtkFlags::no_compression :
                                       DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    // On several processes, this process's share of the cells (the range
-    // by active cell index that it integrates, Body::own_cells).
+    // On several processes, this process's share of the cells (those it
+    // integrates, Body::is_own_cell).
     const unsigned int n_processes = processes::count();
-    const auto [first, end] =
-      processes::share(body.dof_handler().get_triangulation().n_active_cells());
     if (n_processes > 1)
       data_out.set_cell_selection(
-        [first = first,
-         end   = end](const Triangulation<2>::cell_iterator &cell) {
-          return cell->is_active() && cell->active_cell_index() >= first &&
-                 cell->active_cell_index() < end;
+        [&body](const Triangulation<2>::cell_iterator &cell) {
+          return body.is_own_cell(cell);
         });
     data_out.build_patches(element_space.mapping(),
                            degree,

@@ -76,13 +76,26 @@ namespace glissade
     Timer          setup;
     for (const auto &description : scene.bodies)
       mistakes.collect([&]() {
-        all_bodies.push_back(std::make_unique<Body>(description, scene.source));
+        // (a dynamic scheme's inertia and energies are integrated over
+        // the whole mesh: its bodies keep it whole on every process)
+        all_bodies.push_back(std::make_unique<Body>(
+          description, scene.source, !scene.time_integration.dynamic()));
         // A large mesh takes a while to set up: say what is happening.
+        // (on several processes, whether its mesh is shared out: process
+        // 0's count of the cells it holds)
+        const Body &body = *all_bodies.back();
         if (shows_progress())
-          std::cout << "body '" << description.name << "': "
-                    << all_bodies.back()->triangulation().n_active_cells()
-                    << " cells, " << all_bodies.back()->n_dofs()
-                    << " dofs (set up, elapsed " << duration(setup.wall_time())
+          std::cout << "body '" << description.name << "': " << body.n_cells()
+                    << " cells, " << body.n_dofs() << " dofs"
+                    << (processes::count() == 1 ?
+                          "" :
+                        body.mesh_is_distributed() ?
+                          ", mesh shared out (" +
+                            std::to_string(
+                              body.triangulation().n_active_cells()) +
+                            " cells held here)" :
+                          ", whole mesh on every process")
+                    << " (set up, elapsed " << duration(setup.wall_time())
                     << ")" << std::endl;
       });
     mistakes.throw_if_any();

@@ -15,8 +15,10 @@
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
 
+#include <array>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
@@ -41,7 +43,15 @@ namespace glissade
   class Body
   {
   public:
-    Body(const BodyDescription &description, const std::string &source);
+    /**
+     * With `may_distribute_mesh` (a quasi-static scene) and several
+     * processes, a body of a Lagrange space holds its mesh shared out over
+     * the processes (distribute_mesh); other bodies, and every body on one
+     * process, hold the whole mesh.
+     */
+    Body(const BodyDescription &description,
+         const std::string     &source,
+         const bool             may_distribute_mesh = false);
 
     // What the body is, as set up from its description.
     const std::string &
@@ -52,8 +62,37 @@ namespace glissade
     /** The .prm file the body comes from, for messages. */
     const std::string &
     source_name() const;
+    /**
+     * The mesh this process holds: the whole mesh, or on a distributed mesh
+     * its share, the cells around it and every cell that touches the
+     * boundary (distribute_mesh).
+     */
     const dealii::Triangulation<2> &
     triangulation() const;
+    /** True where the mesh is shared out over the processes. */
+    bool
+    mesh_is_distributed() const;
+    /** The number of cells of the whole mesh. */
+    unsigned int
+    n_cells() const;
+    /** True for the cells whose integrals this process adds (all of them
+     *  on one process). */
+    bool
+    is_own_cell(const dealii::Triangulation<2>::cell_iterator &cell) const;
+    /**
+     * On a distributed mesh, every vertex of the whole mesh, with its value
+     * dofs, and the value dofs of every node (history points and the
+     * largest displacement, which the mesh held here may lack); empty
+     * otherwise.
+     */
+    struct WholeMeshNodes
+    {
+      std::vector<dealii::Point<2>>                               vertices;
+      std::vector<std::array<dealii::types::global_dof_index, 2>> vertex_dofs;
+      std::vector<std::array<dealii::types::global_dof_index, 2>> node_dofs;
+    };
+    const WholeMeshNodes &
+    whole_mesh_nodes() const;
     /** The named boundaries of the mesh. */
     const BoundaryNames &
     boundary_names() const;
@@ -170,20 +209,22 @@ namespace glissade
              dealii::Vector<double>                  &viscous_forces,
              bool                                    &admissible);
 
-    const BodyDescription               description;
-    const std::string                   source;
-    dealii::Triangulation<2>            mesh;
-    BoundaryNames                       named_boundaries;
-    double                              reference_size = 1.;
-    std::unique_ptr<ElementSpace>       element_space;
-    dealii::DoFHandler<2>               dofs;
-    dealii::AffineConstraints<double>   element_constraints;
-    std::unique_ptr<BodyMaterials>      materials_of_cells;
-    std::unique_ptr<BoundaryConditions> boundary_conditions;
-    std::unique_ptr<DistributedLoads>   loads;
-    std::unique_ptr<CellIntegration>    cell_integration;
-    std::unique_ptr<BodyLinearSystem>   linear_system;
-    std::unique_ptr<BodyInertia>        inertia_terms;
+    const BodyDescription                     description;
+    const std::string                         source;
+    std::unique_ptr<dealii::Triangulation<2>> mesh;
+    unsigned int                              n_mesh_cells = 0;
+    WholeMeshNodes                            nodes_of_whole_mesh;
+    BoundaryNames                             named_boundaries;
+    double                                    reference_size = 1.;
+    std::unique_ptr<ElementSpace>             element_space;
+    dealii::DoFHandler<2>                     dofs;
+    dealii::AffineConstraints<double>         element_constraints;
+    std::unique_ptr<BodyMaterials>            materials_of_cells;
+    std::unique_ptr<BoundaryConditions>       boundary_conditions;
+    std::unique_ptr<DistributedLoads>         loads;
+    std::unique_ptr<CellIntegration>          cell_integration;
+    std::unique_ptr<BodyLinearSystem>         linear_system;
+    std::unique_ptr<BodyInertia>              inertia_terms;
 
     double                 time = 0.;
     std::string            problem;
@@ -224,7 +265,31 @@ namespace glissade
   inline const dealii::Triangulation<2> &
   Body::triangulation() const
   {
-    return mesh;
+    return *mesh;
+  }
+
+
+
+  inline bool
+  Body::mesh_is_distributed() const
+  {
+    return !nodes_of_whole_mesh.vertices.empty();
+  }
+
+
+
+  inline unsigned int
+  Body::n_cells() const
+  {
+    return n_mesh_cells;
+  }
+
+
+
+  inline const Body::WholeMeshNodes &
+  Body::whole_mesh_nodes() const
+  {
+    return nodes_of_whole_mesh;
   }
 
 
