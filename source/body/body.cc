@@ -262,17 +262,15 @@ namespace glissade
                          "or save the mesh first-order (gmsh -order 1)");
     const auto box = GridTools::compute_bounding_box(*serial);
 
-    // On several processes a quasi-static body of a Lagrange space holds
-    // its share of the mesh (distribute_mesh), its dofs numbered as one
-    // process numbers them; the serial mesh and its dofs are let go once
-    // what needs the whole mesh is known.
+    // On several processes a quasi-static body holds its share of the
+    // mesh (distribute_mesh), its dofs numbered as one process numbers
+    // them; the serial mesh and its dofs are let go once what needs the
+    // whole mesh is known (the element constraints, the axis, the nodes).
     // (a mesh whose boundary ids include the one of the cut faces stays
     // whole)
-    const std::set<std::string> lagrange_spaces = {"q1", "q2", "q3"};
-    const auto                  boundary_ids    = serial->get_boundary_ids();
-    const bool                  distribute =
+    const auto boundary_ids = serial->get_boundary_ids();
+    const bool distribute =
       may_distribute_mesh && processes::count() > 1 &&
-      lagrange_spaces.count(description.element_space) > 0 &&
       std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
         boundary_ids.end();
     const FiniteElement<2>              &fe = element_space->finite_element();
@@ -290,6 +288,7 @@ namespace glissade
       {
         DoFHandler<2> serial_dofs(*serial);
         serial_dofs.distribute_dofs(fe);
+        element_space->setup(serial_dofs, element_constraints);
         if (axisymmetric)
           axis_dofs =
             radial_dofs_on_axis(serial_dofs, *element_space, reference_size);
@@ -300,7 +299,7 @@ namespace glissade
         dofs.reinit(*mesh);
         dofs.distribute_dofs(fe);
         number_dofs_as_serial(dofs, serial_dofs);
-        element_space->setup(dofs, element_constraints);
+        element_space->attach(dofs);
       }
     serial.reset();
 

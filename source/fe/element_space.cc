@@ -14,6 +14,12 @@ namespace glissade
 
 
   void
+  ElementSpace::attach(const DoFHandler<2> &)
+  {}
+
+
+
+  void
   ElementSpace::boundary_relations(const DoFHandler<2>       &dof_handler,
                                    const types::boundary_id   boundary,
                                    const Function<2>         &g,

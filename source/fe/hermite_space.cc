@@ -212,6 +212,15 @@ namespace glissade
 
 
 
+  void
+  HermiteSpace::attach(const DoFHandler<2> &distributed)
+  {
+    AffineConstraints<double> none;
+    setup(distributed, none);
+  }
+
+
+
   std::unique_ptr<CellEvaluator>
   HermiteSpace::create_evaluator(const unsigned int points_per_direction) const
   {

@@ -163,6 +163,16 @@ namespace glissade
 
 
 
+  void
+  SerendipitySpace::attach(const DoFHandler<2> &distributed)
+  {
+    geometry =
+      std::make_unique<MappingFEField<2, 2, Vector<double>>>(distributed,
+                                                             euler_vector);
+  }
+
+
+
   const Mapping<2> &
   SerendipitySpace::mapping() const
   {

@@ -45,9 +45,9 @@ namespace glissade
   public:
     /**
      * With `may_distribute_mesh` (a quasi-static scene) and several
-     * processes, a body of a Lagrange space holds its mesh shared out over
-     * the processes (distribute_mesh); other bodies, and every body on one
-     * process, hold the whole mesh.
+     * processes, the body holds its mesh shared out over the processes
+     * (distribute_mesh); a body of a dynamic scheme, and every body on one
+     * process, holds the whole mesh.
      */
     Body(const BodyDescription &description,
          const std::string     &source,

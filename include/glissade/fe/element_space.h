@@ -60,6 +60,16 @@ namespace glissade
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints);
 
+    /**
+     * A mesh shared out over the processes (Body): setup() has run on the
+     * whole mesh's dofs, which `distributed` numbers alike, so that the
+     * element constraints hold for every dof; what the space keeps of a
+     * mesh (a geometry field, per-cell data) is then made again for the
+     * cells `distributed` holds. The default does nothing.
+     */
+    virtual void
+    attach(const dealii::DoFHandler<2> &distributed);
+
     /** The geometry, for output and boundary interpolation. */
     virtual const dealii::Mapping<2> &
     mapping() const = 0;

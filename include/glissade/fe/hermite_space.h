@@ -55,6 +55,12 @@ namespace glissade
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints) override;
 
+    /** The cells' geometry for the cells `distributed` holds, by their
+     *  index there. */
+    void
+    attach(const dealii::DoFHandler<2> &distributed) override;
+
+
     /** Straight-sided Q1 geometry: for output only. */
     const dealii::Mapping<2> &
     mapping() const override

@@ -47,6 +47,11 @@ namespace glissade
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints) override;
 
+    /** The geometry field on the distributed mesh's dofs (the same
+     *  numbers, the same node positions). */
+    void
+    attach(const dealii::DoFHandler<2> &distributed) override;
+
     const dealii::Mapping<2> &
     mapping() const override;
 
