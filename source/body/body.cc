@@ -299,6 +299,19 @@ namespace glissade
         dofs.reinit(*mesh);
         dofs.distribute_dofs(fe);
         number_dofs_as_serial(dofs, serial_dofs);
+        // (deal.II's distributed vectors, which DataOut makes, want each
+        // process's dofs a contiguous range of numbers, which shares by
+        // ranges of cells give (distribute_mesh); should a mesh not, every
+        // process keeps the whole mesh rather than wait for ever)
+        if (processes::maximum(
+              dofs.locally_owned_dofs().is_contiguous() ? 0 : 1) > 0)
+          {
+            dofs.clear();
+            mesh = std::move(serial);
+            dofs.reinit(*mesh);
+            dofs.distribute_dofs(fe);
+            nodes_of_whole_mesh = WholeMeshNodes();
+          }
         element_space->attach(dofs);
       }
     serial.reset();

@@ -4,7 +4,6 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/grid/tria_description.h>
 
-#include <glissade/base/processes.h>
 #include <glissade/mesh/process_mesh.h>
 
 #include <algorithm>
@@ -25,19 +24,24 @@ namespace glissade
     int rank = 0, size = 1;
     MPI_Comm_rank(communicator, &rank);
     MPI_Comm_size(communicator, &size);
-    const std::size_t n     = serial.n_active_cells();
-    const auto        owner = [n, size](const std::size_t cell) {
-      return types::subdomain_id(cell * size / n);
-    };
-    const auto [first, end] = processes::share(n);
+    const std::size_t n = serial.n_active_cells();
+    // The processes' shares: ranges of the serial mesh's cells, in its
+    // order, as on a replicated mesh. (Its dofs are numbered cell after
+    // cell, and a dof between two shares belongs to the lower rank: each
+    // process then owns a contiguous range of the serial numbers, which
+    // deal.II's distributed vectors (DataOut's) need. A METIS partition,
+    // tried, owns scattered numbers, and DataOut's index-owner search never
+    // ended in deal.II 9.4.)
+    std::vector<unsigned int> owner(n);
+    for (std::size_t cell = 0; cell < n; ++cell)
+      owner[cell] = cell * size / n;
 
     // The vertices whose cells this process holds: those of its own
     // cells, of the boundary, and the vertex nearest to each kept point.
     std::vector<bool> marked(serial.n_vertices(), false);
     for (const auto &cell : serial.active_cell_iterators())
       {
-        const bool own =
-          cell->active_cell_index() >= first && cell->active_cell_index() < end;
+        const bool own = owner[cell->active_cell_index()] == unsigned(rank);
         for (const unsigned int f : cell->face_indices())
           if (own || cell->face(f)->at_boundary())
             for (const unsigned int v : cell->face(f)->vertex_indices())
@@ -74,7 +78,9 @@ namespace glissade
         for (const unsigned int v : cell->vertex_indices())
           local_vertex[cell->vertex_index(v)] = 0;
     TriangulationDescription::Description<2, 2> description;
-    description.comm = communicator;
+    description.comm      = communicator;
+    description.settings  = TriangulationDescription::default_setting;
+    description.smoothing = Triangulation<2>::none;
     for (unsigned int v = 0; v < vertices.size(); ++v)
       if (local_vertex[v] == 0)
         {
@@ -97,7 +103,7 @@ namespace glissade
 
         TriangulationDescription::CellData<2> info;
         info.id                 = CellId(index, {}).to_binary<2>();
-        info.subdomain_id       = owner(index);
+        info.subdomain_id       = owner[index];
         info.level_subdomain_id = numbers::artificial_subdomain_id;
         info.manifold_id        = cell->manifold_id();
         for (const unsigned int l : cell->line_indices())
