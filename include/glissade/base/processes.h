@@ -11,8 +11,8 @@ namespace glissade
   /**
    * The processes of a run: one (plain `glissade`), or those `mpirun -np N`
    * started. A scene is then solved by all of them together: each holds
-   * the whole scene (meshes, state, contact) but the bodies' tangents, of
-   * which it holds its own cells' share, and the bodies' linear systems
+   * the whole state and contact, its share of the bodies' meshes
+   * (distribute_mesh) and of their tangents, and the bodies' linear systems
    * are factorised by all of them at once (MumpsFactorization, which sums
    * the shares), so every decision the program takes from its numbers is
    * taken the same way everywhere. Each process writes its piece of the
