@@ -306,9 +306,8 @@ namespace glissade
         if (processes::maximum(
               dofs.locally_owned_dofs().is_contiguous() ? 0 : 1) > 0)
           {
-            dofs.clear();
+            dofs.reinit(*serial);
             mesh = std::move(serial);
-            dofs.reinit(*mesh);
             dofs.distribute_dofs(fe);
             nodes_of_whole_mesh = WholeMeshNodes();
           }
