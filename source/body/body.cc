@@ -222,9 +222,7 @@ namespace glissade
 
 
 
-  Body::Body(const BodyDescription &description,
-             const std::string     &source,
-             const bool             may_distribute_mesh)
+  Body::Body(const BodyDescription &description, const std::string &source)
     : description(description)
     , source(source)
   {
@@ -262,15 +260,14 @@ namespace glissade
                          "or save the mesh first-order (gmsh -order 1)");
     const auto box = GridTools::compute_bounding_box(*serial);
 
-    // On several processes a quasi-static body holds its share of the
-    // mesh (distribute_mesh), its dofs numbered as one process numbers
-    // them; the serial mesh and its dofs are let go once what needs the
-    // whole mesh is known (the element constraints, the axis, the nodes).
-    // (a mesh whose boundary ids include the one of the cut faces stays
-    // whole)
+    // On several processes a body holds its share of the mesh
+    // (distribute_mesh), its dofs numbered as one process numbers them; the
+    // serial mesh and its dofs are let go once what needs the whole mesh is
+    // known (the element constraints, the axis, the nodes). (a mesh whose
+    // boundary ids include the one of the cut faces stays whole)
     const auto boundary_ids = serial->get_boundary_ids();
     const bool distribute =
-      may_distribute_mesh && processes::count() > 1 &&
+      processes::count() > 1 &&
       std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
         boundary_ids.end();
     const FiniteElement<2>              &fe = element_space->finite_element();

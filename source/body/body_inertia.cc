@@ -6,8 +6,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/body/body_inertia.h>
+#include <glissade/lac/direct_solver.h>
 
 #include <cmath>
 #include <map>
@@ -79,10 +81,15 @@ namespace glissade
     const bool redistribute = settings.redistribute_contact_mass &&
                               space.components_per_displacement() == 1;
 
+    // (on a mesh shared out over the processes, the masses of this
+    // process's cells; apply_mass sums the processes' products)
+    shared_out = body.mesh_is_distributed();
     cell_dofs.resize(body.triangulation().n_active_cells());
     cell_mass.resize(cell_dofs.size());
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
+        if (shared_out && !body.is_own_cell(cell))
+          continue;
         const unsigned int index = cell->active_cell_index();
         cell_dofs[index].resize(n);
         cell->get_dof_indices(cell_dofs[index]);
@@ -148,6 +155,14 @@ namespace glissade
           if (system % per_dim == 0)
             translation[system / per_dim](cell_dofs[k][i]) = 1.;
         }
+    // (each process has set the value dofs of its own cells)
+    if (shared_out)
+      for (auto &t : translation)
+        {
+          processes::sum(t.begin(), t.size());
+          for (auto &value : t)
+            value = value > 0. ? 1. : 0.;
+        }
   }
 
 
@@ -184,11 +199,18 @@ namespace glissade
     const FiniteElement<2>              &fe = body.dof_handler().get_fe();
     std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
     const double h = 1e-6 * std::max(body.size(), 1e-300);
+    // (on a mesh shared out, each dof's owner sets it, then the processes'
+    // vectors are summed)
+    const IndexSet owned = body.dof_handler().locally_owned_dofs();
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
+        if (shared_out && !body.is_own_cell(cell))
+          continue;
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < local.size(); ++i)
           {
+            if (shared_out && !owned.is_element(local[i]))
+              continue;
             const unsigned int system = fe.system_to_component_index(i).first;
             const unsigned int c = system / per_dim, kind = system % per_dim;
             const Point<2>    &X = support.at(local[i]);
@@ -209,6 +231,8 @@ namespace glissade
                                  ", " + std::to_string(X[1]) + ")");
           }
       }
+    if (shared_out)
+      processes::sum(v.begin(), v.size());
     body.system().constraints().distribute(v);
   }
 
@@ -236,22 +260,43 @@ namespace glissade
     sparsity.copy_from(pattern);
     SparseMatrix<double> M(sparsity);
     for (unsigned int c = 0; c < cell_dofs.size(); ++c)
-      homogeneous.distribute_local_to_global(cell_mass[c], cell_dofs[c], M);
+      if (!cell_dofs[c].empty())
+        homogeneous.distribute_local_to_global(cell_mass[c], cell_dofs[c], M);
     damping_before = apply_mass(v);
     damping_before *= settings.mass_damping;
     Vector<double> rhs = residual;
     rhs -= damping_before;
     homogeneous.condense(rhs);
+    // (on a mesh shared out, M is each process's cells' share, which MUMPS
+    // sums: the whole diagonal is the sum of the shares', and a massless
+    // dof's 1 is put by the process that owns it)
+    std::vector<double> diagonal(M.m());
+    for (types::global_dof_index i = 0; i < M.m(); ++i)
+      diagonal[i] = M.el(i, i);
+    if (shared_out)
+      processes::sum(diagonal);
+    const IndexSet owned = body.dof_handler().locally_owned_dofs();
     for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
-      if (!homogeneous.is_constrained(i) && !(M.diag_element(i) > 0.))
+      if (!homogeneous.is_constrained(i) && !(diagonal[i] > 0.))
         {
-          M.set(i, i, 1.);
+          if (!shared_out || owned.is_element(i))
+            M.set(i, i, 1.);
           rhs(i) = 0.;
         }
-    SparseDirectUMFPACK solver;
-    solver.initialize(M);
     a = rhs;
-    solver.solve(a);
+    if (shared_out)
+      {
+        DirectSolver solver;
+        solver.use_cholesky(true, {});
+        solver.factorize(M);
+        solver.solve(a);
+      }
+    else
+      {
+        SparseDirectUMFPACK solver;
+        solver.initialize(M);
+        solver.solve(a);
+      }
     homogeneous.distribute(a);
 
     // Moreau-Jean's start-state loads: (1 - theta) / theta (F_ext -
@@ -412,6 +457,9 @@ namespace glissade
       for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
         for (unsigned int j = 0; j < cell_dofs[c].size(); ++j)
           y(cell_dofs[c][i]) += cell_mass[c](i, j) * x(cell_dofs[c][j]);
+    // (every process calls it: the processes' shares summed)
+    if (shared_out)
+      processes::sum(y.begin(), y.size());
     return y;
   }
 

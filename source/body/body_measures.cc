@@ -1,6 +1,7 @@
 // Measures of a body's state (include/glissade/body/body_measures.h).
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/body/body_measures.h>
 
@@ -173,9 +174,6 @@ namespace glissade
   double
   strain_energy(const Body &body)
   {
-    // (the bodies of a dynamic scheme, which alone asks for it, hold the
-    // whole mesh: Simulation)
-    AssertThrow(!body.mesh_is_distributed(), ExcNotImplemented());
     const bool axisymmetric =
       body.hypothesis() == PlaneHypothesis::axisymmetric;
     const Vector<double> &u         = body.displacement();
@@ -183,8 +181,13 @@ namespace glissade
     std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
     std::vector<double>                  values(local.size());
     double                               energy = 0.;
+    // (a mesh shared out: this process's cells, then the processes' sums;
+    // every process asks)
+    const bool shared_out = body.mesh_is_distributed();
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       {
+        if (shared_out && !body.is_own_cell(cell))
+          continue;
         evaluator->reinit(cell);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < local.size(); ++i)
@@ -201,6 +204,8 @@ namespace glissade
                       (axisymmetric ? 2. * M_PI * r : body.thickness());
           }
       }
+    if (shared_out)
+      processes::sum(&energy, 1);
     return energy;
   }
 } // namespace glissade

@@ -76,10 +76,7 @@ namespace glissade
     Timer          setup;
     for (const auto &description : scene.bodies)
       mistakes.collect([&]() {
-        // (a dynamic scheme's inertia and energies are integrated over
-        // the whole mesh: its bodies keep it whole on every process)
-        all_bodies.push_back(std::make_unique<Body>(
-          description, scene.source, !scene.time_integration.dynamic()));
+        all_bodies.push_back(std::make_unique<Body>(description, scene.source));
         // A large mesh takes a while to set up: say what is happening.
         // (on several processes, whether its mesh is shared out: process
         // 0's count of the cells it holds)

@@ -44,14 +44,10 @@ namespace glissade
   {
   public:
     /**
-     * With `may_distribute_mesh` (a quasi-static scene) and several
-     * processes, the body holds its mesh shared out over the processes
-     * (distribute_mesh); a body of a dynamic scheme, and every body on one
-     * process, holds the whole mesh.
+     * On several processes the body holds its mesh shared out over them
+     * (distribute_mesh); on one process, the whole mesh.
      */
-    Body(const BodyDescription &description,
-         const std::string     &source,
-         const bool             may_distribute_mesh = false);
+    Body(const BodyDescription &description, const std::string &source);
 
     // What the body is, as set up from its description.
     const std::string &

@@ -193,6 +193,9 @@ namespace glissade
     std::vector<dealii::FullMatrix<double>> cell_mass;
     dealii::Vector<double>                  v, a;
     dealii::Vector<double>                  u_start, u_predicted, v_predicted;
+    /** The body's mesh is shared out over the processes: the masses are
+     *  this process's cells', and products with M are summed. */
+    bool shared_out = false;
     /** The unit translations along x and y (value dofs at 1). */
     std::array<dealii::Vector<double>, 2> translation;
     double                                step = 0.;
