@@ -32,9 +32,12 @@ namespace glissade
     // deal.II's distributed vectors (DataOut's) need. A METIS partition,
     // tried, owns scattered numbers, and DataOut's index-owner search never
     // ended in deal.II 9.4.)
+    // (the ranges processes::share gives, process p cells n p / P to
+    // n (p + 1) / P)
     std::vector<unsigned int> owner(n);
-    for (std::size_t cell = 0; cell < n; ++cell)
-      owner[cell] = cell * size / n;
+    for (std::size_t p = 0; p < std::size_t(size); ++p)
+      for (std::size_t cell = n * p / size; cell < n * (p + 1) / size; ++cell)
+        owner[cell] = p;
 
     // The vertices whose cells this process holds: those of its own
     // cells, of the boundary, and the vertex nearest to each kept point.
