@@ -4,12 +4,16 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/body/body_measures.h>
+#include <glissade/mesh/cell_order.h>
 #include <glissade/mesh/mesh_diameter.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
+#include <map>
+#include <vector>
 
 #include "test_tools.h"
 
@@ -252,4 +256,83 @@ GLISSADE_TEST(mesh_diameter_is_deal_ii_s)
                 << " (deal.II " << theirs << ")" << std::endl;
       check(ours == theirs, name + ": the same diameter as deal.II's");
     }
+}
+
+
+
+// The Hilbert curve on a 2^k x 2^k grid (k = 1 to 6): every point has its
+// own place along it, the curve starts at (0, 0) and ends at (2^k - 1, 0),
+// and points one place apart are neighbours on the grid (its definition).
+GLISSADE_TEST(mesh_hilbert_curve_walks_between_neighbours)
+{
+  for (unsigned int order = 1; order <= 6; ++order)
+    {
+      const std::uint32_t                n = std::uint32_t(1) << order;
+      std::vector<std::pair<long, long>> point_at(std::size_t(n) * n, {-1, -1});
+      for (std::uint32_t x = 0; x < n; ++x)
+        for (std::uint32_t y = 0; y < n; ++y)
+          {
+            const std::uint64_t d = hilbert_index(order, x, y);
+            check(d < point_at.size() && point_at[d].first < 0,
+                  "order " + std::to_string(order) +
+                    ": a place along the curve out of range or taken twice");
+            point_at[d] = {x, y};
+          }
+      check(point_at.front() == std::make_pair(0l, 0l) &&
+              point_at.back() == std::make_pair(long(n) - 1, 0l),
+            "order " + std::to_string(order) +
+              ": the curve does not run from (0, 0) to (n - 1, 0)");
+      for (std::size_t d = 1; d < point_at.size(); ++d)
+        check(std::abs(point_at[d].first - point_at[d - 1].first) +
+                  std::abs(point_at[d].second - point_at[d - 1].second) ==
+                1,
+              "order " + std::to_string(order) + ": places " +
+                std::to_string(d - 1) + " and " + std::to_string(d) +
+                " are not neighbours");
+    }
+}
+
+// A Gmsh file that lists the 16 x 8 cells of [0, 2] x [0, 1] scrambled
+// (tests/data/make_scrambled_block_mesh.py) is read with its cells along
+// the Hilbert curve of the square [0, 2]^2 around it: the first 64 are the
+// left half (the curve's first quadrant), the last 64 the right half; the
+// body is the file's (area 2, the named boundaries' faces 8, 8, 16, 16).
+GLISSADE_TEST(mesh_gmsh_cells_along_hilbert_curve)
+{
+  const std::string prm = R"(
+subsection Scene
+  set Bodies = block
+end
+subsection Body block
+  subsection Mesh
+    set Type = gmsh
+    set File = )" + source_path("tests/data/block_16x8_scrambled.msh") +
+                          R"(
+  end
+  subsection Boundary conditions
+    set Fixed = left: all
+  end
+end
+subsection Output
+  set Progress = false
+end
+)";
+  Simulation              simulation(SceneReader::read_string(prm, "block"));
+  const Triangulation<2> &mesh = simulation.body("block").triangulation();
+  check(mesh.n_active_cells() == 128, "128 cells");
+  unsigned int misplaced = 0;
+  for (const auto &cell : mesh.active_cell_iterators())
+    if ((cell->active_cell_index() < 64) != (cell->center()[0] < 1.))
+      ++misplaced;
+  std::cout << "  cells on the wrong side of x = 1 for their place: "
+            << misplaced << std::endl;
+  check(misplaced == 0, "the first 64 cells are not the left half");
+  check_relative(GridTools::volume(mesh), 2., 1e-14, "area");
+  std::map<types::boundary_id, unsigned int> faces;
+  for (const auto &cell : mesh.active_cell_iterators())
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary())
+        ++faces[face->boundary_id()];
+  check(faces[1] == 8 && faces[2] == 8 && faces[3] == 16 && faces[4] == 16,
+        "the faces of left, right, bottom, top are not 8, 8, 16, 16");
 }

@@ -5,6 +5,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/mesh/cell_order.h>
 #include <glissade/mesh/gmsh_reader.h>
 #include <glissade/mesh/mesh_factory.h>
 
@@ -39,7 +40,12 @@ namespace glissade
       GridTools::distort_random(description.distortion, triangulation, true);
     check_cells_are_not_folded(triangulation, where);
     if (type(description.type).from_file)
-      check_mesh_is_conforming(triangulation, where);
+      {
+        check_mesh_is_conforming(triangulation, where);
+        // (after the checks, whose messages number the cells as the file
+        // does; a file's order would share the mesh out poorly)
+        order_cells_along_hilbert_curve(triangulation);
+      }
     return labels;
   }
 

@@ -23,8 +23,11 @@ namespace glissade
 
   namespace
   {
-    // Raised when the layout of the file changes: an old file is refused.
-    const std::string checkpoint_format = "glissade checkpoint 3";
+    // Raised when the layout of the file or the numbering of the dofs
+    // changes: an old file is refused. (4: the cells of a mesh read from a
+    // Gmsh file are walked along a Hilbert curve, which numbers its dofs
+    // anew.)
+    const std::string checkpoint_format = "glissade checkpoint 4";
   } // namespace
 
 
