@@ -61,4 +61,7 @@ print(f"{n:.0f} processes: {many_wall:.1f} s, largest peak {many_peak / 1e6:.2f}
 print(f"speed-up {one_wall / many_wall:.2f}, memory per process "
       f"{many_peak / one_peak:.2f} of one process's")
 PY
-python3 "$here/../tests/compare_processes.py" "$work/one" "$work/many" | tail -1
+# (at 1e-8: at a million dofs one process differs from itself with one
+# thread instead of two by 7.9e-10 on the contact forces)
+python3 "$here/../tests/compare_processes.py" "$work/one" "$work/many" \
+  --tolerance=1e-8 | tail -1
