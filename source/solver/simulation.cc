@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/debug_log.h>
+#include <glissade/base/freed_memory.h>
 #include <glissade/base/input_error.h>
 #include <glissade/base/interruption.h>
 #include <glissade/base/processes.h>
@@ -263,6 +264,9 @@ namespace glissade
   Simulation::assemble_bodies(double &residual, double &scale)
   {
     TimerOutput::Scope scope(timer, timing::assembly);
+    // (the last iteration's contact algebra and factorisations' workspace
+    // are free: their pages go back before the new tangent is made)
+    return_freed_memory();
     // The bodies are independent until the contact correction: one task
     // each, on both cores (the same arithmetic as one after the other). The
     // factorisations stay in sequence: they call the threaded BLAS, and two
@@ -349,6 +353,8 @@ namespace glissade
         all_bodies[b]->system().solve(all_bodies[b]->system().right_hand_side(),
                                       du[b]);
       }
+    // (the factorisations' workspace, before the contact algebra's blocks)
+    return_freed_memory();
     return true;
   }
 
