@@ -4,10 +4,10 @@
 #include <glissade/base/processes.h>
 #include <glissade/body/body.h>
 #include <glissade/body/body_measures.h>
+#include <glissade/mesh/nearest_vertex.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace glissade
@@ -31,15 +31,8 @@ namespace glissade
     // vertices are kept for it.
     if (body.mesh_is_distributed())
       {
-        const auto  &nodes   = body.whole_mesh_nodes();
-        double       best    = std::numeric_limits<double>::max();
-        unsigned int nearest = 0;
-        for (unsigned int v = 0; v < nodes.vertices.size(); ++v)
-          if (nodes.vertices[v].distance(point) < best)
-            {
-              best    = nodes.vertices[v].distance(point);
-              nearest = v;
-            }
+        const auto &nodes          = body.whole_mesh_nodes();
+        const auto [nearest, best] = nearest_vertex(nodes.vertices, point);
         if (best > 1e-8 * body.size())
           {
             std::ostringstream message;

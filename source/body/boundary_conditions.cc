@@ -7,6 +7,7 @@
 #include <glissade/body/boundary_conditions.h>
 #include <glissade/mesh/boundary_normals.h>
 #include <glissade/mesh/mesh_diameter.h>
+#include <glissade/mesh/nearest_vertex.h>
 #include <glissade/mesh/process_mesh.h>
 
 #include <cmath>
@@ -78,18 +79,12 @@ namespace glissade
     double   x, y;
     if (text::parse_point_location(location, x, y))
       {
-        result.is_vertex      = true;
-        result.point          = Point<2>(x, y);
-        const auto  &vertices = triangulation.get_vertices();
-        const auto   used     = triangulation.get_used_vertices();
-        double       best     = std::numeric_limits<double>::max();
-        unsigned int best_v   = 0;
-        for (unsigned int v = 0; v < vertices.size(); ++v)
-          if (used[v] && vertices[v].distance(result.point) < best)
-            {
-              best   = vertices[v].distance(result.point);
-              best_v = v;
-            }
+        result.is_vertex     = true;
+        result.point         = Point<2>(x, y);
+        const auto &vertices = triangulation.get_vertices();
+        const auto  used     = triangulation.get_used_vertices();
+        const auto [best_v, best] =
+          nearest_vertex(vertices, result.point, &used);
         // The diameter walks the boundary: callers that resolve many
         // points pass it.
         const double size =

@@ -4,10 +4,10 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <glissade/mesh/nearest_vertex.h>
 #include <glissade/mesh/process_mesh.h>
 
 #include <algorithm>
-#include <limits>
 #include <stdexcept>
 
 namespace glissade
@@ -53,17 +53,7 @@ namespace glissade
     const auto &vertices = serial.get_vertices();
     const auto &used     = serial.get_used_vertices();
     for (const Point<2> &point : kept_points)
-      {
-        double       best    = std::numeric_limits<double>::max();
-        unsigned int nearest = 0;
-        for (unsigned int v = 0; v < vertices.size(); ++v)
-          if (used[v] && vertices[v].distance(point) < best)
-            {
-              best    = vertices[v].distance(point);
-              nearest = v;
-            }
-        marked[nearest] = true;
-      }
+      marked[nearest_vertex(vertices, point, &used).index] = true;
 
     std::vector<bool> held(n, false);
     for (const auto &cell : serial.active_cell_iterators())
