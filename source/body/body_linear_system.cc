@@ -59,8 +59,19 @@ namespace glissade
   void
   BodyLinearSystem::clear()
   {
-    tangent    = 0.;
+    if (tangent.empty())
+      tangent.reinit(sparsity);
+    else
+      tangent = 0.;
     system_rhs = 0.;
+  }
+
+
+
+  void
+  BodyLinearSystem::release_tangent()
+  {
+    tangent.clear();
   }
 
 

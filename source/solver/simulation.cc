@@ -339,6 +339,10 @@ namespace glissade
               ++stats.n_reused_factorizations;
             else
               all_bodies[b]->system().factorize();
+            // (the condensed method and a body out of contact read the
+            // factor alone until the next assembly, which makes the tangent
+            // again: with the previous factor too)
+            all_bodies[b]->system().release_tangent();
           }
         catch (const std::runtime_error &e)
           {
