@@ -4,13 +4,11 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/body/body_measures.h>
-#include <glissade/mesh/cell_order.h>
 #include <glissade/mesh/mesh_diameter.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <iomanip>
 #include <map>
 #include <vector>
@@ -260,43 +258,14 @@ GLISSADE_TEST(mesh_diameter_is_deal_ii_s)
 
 
 
-// The Hilbert curve on a 2^k x 2^k grid (k = 1 to 6): every point has its
-// own place along it, the curve starts at (0, 0) and ends at (2^k - 1, 0),
-// and points one place apart are neighbours on the grid (its definition).
-GLISSADE_TEST(mesh_hilbert_curve_walks_between_neighbours)
-{
-  for (unsigned int order = 1; order <= 6; ++order)
-    {
-      const std::uint32_t                n = std::uint32_t(1) << order;
-      std::vector<std::pair<long, long>> point_at(std::size_t(n) * n, {-1, -1});
-      for (std::uint32_t x = 0; x < n; ++x)
-        for (std::uint32_t y = 0; y < n; ++y)
-          {
-            const std::uint64_t d = hilbert_index(order, x, y);
-            check(d < point_at.size() && point_at[d].first < 0,
-                  "order " + std::to_string(order) +
-                    ": a place along the curve out of range or taken twice");
-            point_at[d] = {x, y};
-          }
-      check(point_at.front() == std::make_pair(0l, 0l) &&
-              point_at.back() == std::make_pair(long(n) - 1, 0l),
-            "order " + std::to_string(order) +
-              ": the curve does not run from (0, 0) to (n - 1, 0)");
-      for (std::size_t d = 1; d < point_at.size(); ++d)
-        check(std::abs(point_at[d].first - point_at[d - 1].first) +
-                  std::abs(point_at[d].second - point_at[d - 1].second) ==
-                1,
-              "order " + std::to_string(order) + ": places " +
-                std::to_string(d - 1) + " and " + std::to_string(d) +
-                " are not neighbours");
-    }
-}
-
 // A Gmsh file that lists the 16 x 8 cells of [0, 2] x [0, 1] scrambled
 // (tests/data/make_scrambled_block_mesh.py) is read with its cells along
-// the Hilbert curve of the square [0, 2]^2 around it: the first 64 are the
-// left half (the curve's first quadrant), the last 64 the right half; the
-// body is the file's (area 2, the named boundaries' faces 8, 8, 16, 16).
+// a Hilbert curve of the square [0, 2]^2 around it, which walks each
+// quadrant whole from one cell to its neighbour: the first 64 cells are one
+// half of the block (x < 1 or x > 1, a quadrant of the square), and every
+// cell but one (the step from one quadrant to the other) shares a face
+// with the next. The body is the file's (area 2, the named boundaries'
+// faces 8, 8, 16, 16).
 GLISSADE_TEST(mesh_gmsh_cells_along_hilbert_curve)
 {
   const std::string prm = R"(
@@ -320,13 +289,30 @@ end
   Simulation              simulation(SceneReader::read_string(prm, "block"));
   const Triangulation<2> &mesh = simulation.body("block").triangulation();
   check(mesh.n_active_cells() == 128, "128 cells");
-  unsigned int misplaced = 0;
+  std::vector<Triangulation<2>::active_cell_iterator> cells;
   for (const auto &cell : mesh.active_cell_iterators())
-    if ((cell->active_cell_index() < 64) != (cell->center()[0] < 1.))
-      ++misplaced;
+    cells.push_back(cell);
+  const bool   first_left = cells[0]->center()[0] < 1.;
+  unsigned int misplaced = 0, steps_apart = 0;
+  for (std::size_t c = 0; c < cells.size(); ++c)
+    {
+      if ((c < 64) != ((cells[c]->center()[0] < 1.) == first_left))
+        ++misplaced;
+      if (c > 0)
+        {
+          bool touching = false;
+          for (const unsigned int f : cells[c]->face_indices())
+            touching = touching || (!cells[c]->at_boundary(f) &&
+                                    cells[c]->neighbor(f) == cells[c - 1]);
+          steps_apart += touching ? 0 : 1;
+        }
+    }
   std::cout << "  cells on the wrong side of x = 1 for their place: "
-            << misplaced << std::endl;
-  check(misplaced == 0, "the first 64 cells are not the left half");
+            << misplaced << "; cells not beside the one before: " << steps_apart
+            << std::endl;
+  check(misplaced == 0, "the first 64 cells are not one half of the block");
+  check(steps_apart <= 1,
+        "more than one cell does not share a face with the one before");
   check_relative(GridTools::volume(mesh), 2., 1e-14, "area");
   std::map<types::boundary_id, unsigned int> faces;
   for (const auto &cell : mesh.active_cell_iterators())

@@ -1,12 +1,15 @@
 // Cells in the order of a Hilbert curve (include/glissade/mesh/cell_order.h).
 
+#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold.h>
 
 #include <glissade/mesh/cell_order.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -16,33 +19,6 @@
 namespace glissade
 {
   using namespace dealii;
-
-  std::uint64_t
-  hilbert_index(const unsigned int order, std::uint32_t x, std::uint32_t y)
-  {
-    // The quadrants from the coarsest down, each turned so that the curve
-    // enters it at its own origin (the classic xy2d).
-    const std::uint32_t n     = std::uint32_t(1) << order;
-    std::uint64_t       index = 0;
-    for (std::uint32_t s = n / 2; s > 0; s /= 2)
-      {
-        const std::uint32_t rx = (x & s) > 0 ? 1 : 0;
-        const std::uint32_t ry = (y & s) > 0 ? 1 : 0;
-        index += std::uint64_t(s) * s * ((3 * rx) ^ ry);
-        if (ry == 0)
-          {
-            if (rx == 1)
-              {
-                x = n - 1 - x;
-                y = n - 1 - y;
-              }
-            std::swap(x, y);
-          }
-      }
-    return index;
-  }
-
-
 
   void
   order_cells_along_hilbert_curve(Triangulation<2> &mesh)
@@ -68,15 +44,17 @@ namespace glissade
               }
           }
       }
-    const unsigned int order = 16;
-    const double       side  = std::max(high[0] - low[0], high[1] - low[1]);
-    const double       scale = side > 0. ? ((1u << order) - 1) / side : 0.;
-    std::vector<std::uint64_t> key(cells.size());
+    // (deal.II's overload for points scales each direction to its own
+    // extent: a long body's pieces would be thin slices across it)
+    const int    bits  = 16;
+    const double side  = std::max(high[0] - low[0], high[1] - low[1]);
+    const double scale = side > 0. ? ((1u << bits) - 1) / side : 0.;
+    std::vector<std::array<std::uint64_t, 2>> grid_points(cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c)
-      key[c] = hilbert_index(
-        order,
-        std::uint32_t(std::lround((centres[c][0] - low[0]) * scale)),
-        std::uint32_t(std::lround((centres[c][1] - low[1]) * scale)));
+      for (unsigned int d = 0; d < 2; ++d)
+        grid_points[c][d] = std::lround((centres[c][d] - low[d]) * scale);
+    const auto key =
+      Utilities::inverse_Hilbert_space_filling_curve<2>(grid_points, bits);
 
     // (stable: cells whose centres share a grid point keep the file's order)
     std::vector<std::size_t> order_of_cells(cells.size());

@@ -2,8 +2,6 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <cstdint>
-
 namespace glissade
 {
   /**
@@ -18,15 +16,10 @@ namespace glissade
    * cells in the order its mesher made them, which on the Hertz sphere gave
    * process 0 of two 2,924 of the 3,107 cells to hold. Made on one process
    * too, so that every run numbers the dofs alike (the checkpoint, and the
-   * comparisons between process counts, rely on it).
+   * comparisons between process counts, rely on it). The curve is
+   * deal.II's (Utilities::inverse_Hilbert_space_filling_curve), on a grid
+   * of 2^16 x 2^16 over the mesh's bounding square.
    */
   void
   order_cells_along_hilbert_curve(dealii::Triangulation<2> &mesh);
-
-  /**
-   * The position of the point (x, y) of a 2^order x 2^order grid along the
-   * Hilbert curve that starts at (0, 0) and ends at (2^order - 1, 0).
-   */
-  std::uint64_t
-  hilbert_index(unsigned int order, std::uint32_t x, std::uint32_t y);
 } // namespace glissade
