@@ -60,6 +60,7 @@ namespace glissade
                            const std::set<types::global_dof_index> &massless,
                            const std::string                       &where)
     : settings(settings)
+    , contact_dofs(massless.begin(), massless.end())
   {
     const ElementSpace &space = body.space();
     if (space.components_per_displacement() != 1 && settings.lumped_mass)
@@ -239,34 +240,32 @@ namespace glissade
 
 
   void
-  BodyInertia::initialize(const Body &body, const Vector<double> &residual)
+  BodyInertia::prepare_mass_system(const Body           &body,
+                                   SparsityPattern      &sparsity,
+                                   SparseMatrix<double> &M)
   {
-    // M a_0 = R_0 on the dofs that have mass and are free: the mass
-    // condensed by the body's constraints without their values (element
-    // relations, supports), a massless dof's row the identity.
-    AffineConstraints<double> homogeneous;
+    // The mass condensed by the body's constraints without their values
+    // (element relations, supports), a free massless dof's row the
+    // identity.
+    mass_constraints.clear();
     for (const auto &line : body.system().constraints().get_lines())
       {
-        homogeneous.add_line(line.index);
-        homogeneous.add_entries(line.index, line.entries);
+        mass_constraints.add_line(line.index);
+        mass_constraints.add_entries(line.index, line.entries);
       }
-    homogeneous.close();
+    mass_constraints.close();
     DynamicSparsityPattern pattern(body.n_dofs());
     DoFTools::make_sparsity_pattern(body.dof_handler(),
                                     pattern,
-                                    homogeneous,
+                                    mass_constraints,
                                     false);
-    SparsityPattern sparsity;
     sparsity.copy_from(pattern);
-    SparseMatrix<double> M(sparsity);
+    M.reinit(sparsity);
     for (unsigned int c = 0; c < cell_dofs.size(); ++c)
       if (!cell_dofs[c].empty())
-        homogeneous.distribute_local_to_global(cell_mass[c], cell_dofs[c], M);
-    damping_before = apply_mass(v);
-    damping_before *= settings.mass_damping;
-    Vector<double> rhs = residual;
-    rhs -= damping_before;
-    homogeneous.condense(rhs);
+        mass_constraints.distribute_local_to_global(cell_mass[c],
+                                                    cell_dofs[c],
+                                                    M);
     // (on a mesh shared out, M is each process's cells' share, which MUMPS
     // sums: the whole diagonal is the sum of the shares', and a massless
     // dof's 1 is put by the process that owns it)
@@ -276,13 +275,50 @@ namespace glissade
     if (shared_out)
       processes::sum(diagonal);
     const IndexSet owned = body.dof_handler().locally_owned_dofs();
+    without_mass.assign(body.n_dofs(), false);
     for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
-      if (!homogeneous.is_constrained(i) && !(diagonal[i] > 0.))
+      if (!mass_constraints.is_constrained(i) && !(diagonal[i] > 0.))
         {
           if (!shared_out || owned.is_element(i))
             M.set(i, i, 1.);
-          rhs(i) = 0.;
+          without_mass[i] = true;
         }
+
+    // Newmark with contact dofs that carry mass (Contact mass = kept, or a
+    // Hermite body): the contact impulse's share of each step's
+    // acceleration, M^-1 F_c, is taken out of the next step's predictor, so
+    // the mass is factorised once for it.
+    bool contact_with_mass = false;
+    for (const auto dof : contact_dofs)
+      contact_with_mass =
+        contact_with_mass ||
+        (!mass_constraints.is_constrained(dof) && !without_mass[dof]);
+    if (settings.scheme == TimeIntegrationSettings::Scheme::newmark &&
+        contact_with_mass)
+      {
+        mass_factor = std::make_unique<DirectSolver>();
+        mass_factor->use_cholesky(true, {});
+        mass_factor->factorize(M);
+      }
+  }
+
+
+
+  void
+  BodyInertia::initialize(const Body &body, const Vector<double> &residual)
+  {
+    // M a_0 = R_0 on the dofs that have mass and are free.
+    SparsityPattern      sparsity;
+    SparseMatrix<double> M;
+    prepare_mass_system(body, sparsity, M);
+    Vector<double> damping_0 = apply_mass(v);
+    damping_0 *= settings.mass_damping;
+    Vector<double> rhs = residual;
+    rhs -= damping_0;
+    mass_constraints.condense(rhs);
+    for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
+      if (without_mass[i])
+        rhs(i) = 0.;
     a = rhs;
     if (shared_out)
       {
@@ -297,28 +333,58 @@ namespace glissade
         solver.initialize(M);
         solver.solve(a);
       }
-    homogeneous.distribute(a);
+    mass_constraints.distribute(a);
+    a_smooth = a;
 
-    // Moreau-Jean's start-state loads: (1 - theta) / theta (F_ext -
-    // F_int)_0.
-    old_forces.reinit(body.n_dofs());
-    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
-      {
-        old_forces = residual;
-        old_forces *= (1. - settings.theta) / settings.theta;
-      }
-
-    // The forces of the initial state, for the first step's work: F_ext +
-    // F_support = M a_0 + a_M M v_0 + F_int + F_v - F_c, F_int + F_v -
-    // F_ext being -residual.
+    // The forces of the initial state: F_ext + F_support = M a_0 + a_M M
+    // v_0 + F_int + F_v - F_c, F_int + F_v - F_ext being -residual (the
+    // free dofs without mass, where M a_0 = residual does not hold, have
+    // no support: F_ext alone); the smooth forces s = F_ext + F_support -
+    // F_int - a_M M v - F_v.
+    mass_damping_before = apply_mass(v);
+    mass_damping_before *= settings.mass_damping;
+    viscous_before.reinit(body.n_dofs());
+    if (viscous_forces.size() == viscous_before.size())
+      viscous_before = viscous_forces;
     applied_before = apply_mass(a);
-    applied_before += damping_before;
+    applied_before += mass_damping_before;
     applied_before -= residual;
     applied_before += body.applied_loads();
     applied_before -= body.get_contact_forces();
-    contact_before = body.get_contact_forces();
-    if (viscous_forces.size() == damping_before.size())
-      damping_before += viscous_forces;
+    for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
+      if (without_mass[i])
+        applied_before(i) += residual(i);
+    contact_before          = body.get_contact_forces();
+    Vector<double> internal = body.applied_loads();
+    internal -= residual;
+    internal -= viscous_before;
+    smooth_before = applied_before;
+    smooth_before -= internal;
+    smooth_before -= mass_damping_before;
+    smooth_before -= viscous_before;
+    set_start_state_forces(residual);
+  }
+
+
+
+  void
+  BodyInertia::set_start_state_forces(const Vector<double> &f)
+  {
+    old_forces.reinit(f.size());
+    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
+      {
+        // Moreau-Jean's (1 - theta) / theta (F_ext - F_int - F_v)_n.
+        old_forces = f;
+        old_forces *= (1. - settings.theta) / settings.theta;
+        return;
+      }
+    // Newmark's dofs without mass: their rows carry no inertia, only the
+    // trapezoidal rule's mean of the forces, 1/2 (f_n + f_n+1) + P / dt =
+    // 0, which the equation of the end state writes as f_n+1 + f_n + F_c =
+    // 0 (F_c = 2 P / dt): their start-state forces are f_n.
+    for (types::global_dof_index i = 0; i < old_forces.size(); ++i)
+      if (without_mass[i])
+        old_forces(i) = f(i);
   }
 
 
@@ -352,10 +418,11 @@ namespace glissade
         return;
       }
     const double beta = settings.beta, gamma = settings.gamma;
+    // (the smooth acceleration: the contact acts by the step's impulse)
     u_predicted = u_n;
-    u_predicted.add(dt, v, dt * dt * (0.5 - beta), a);
+    u_predicted.add(dt, v, dt * dt * (0.5 - beta), a_smooth);
     v_predicted = v;
-    v_predicted.add((1. - gamma) * dt, a);
+    v_predicted.add((1. - gamma) * dt, a_smooth);
     c_a = 1. / (beta * dt * dt);
     c_v = gamma / (beta * dt);
   }
@@ -398,24 +465,80 @@ namespace glissade
     const Vector<double> &u = body.displacement();
     const bool            moreau_jean =
       settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean;
-    const Vector<double> v_start = v;
+    const Vector<double> &contact = body.get_contact_forces();
+    if (without_mass.empty())
+      {
+        // (a run continued from a checkpoint: the state was read, the
+        // mass's structure is made here)
+        SparsityPattern      sparsity;
+        SparseMatrix<double> M;
+        prepare_mass_system(body, sparsity, M);
+      }
+    // Newmark with contact dofs that carry mass: M^-1 F_c, the contact's
+    // share of the end state's acceleration (zero on the massless dofs,
+    // whose forces move no mass).
+    Vector<double> contact_acceleration(u.size());
+    if (mass_factor)
+      {
+        contact_acceleration = contact;
+        for (types::global_dof_index i = 0; i < u.size(); ++i)
+          if (without_mass[i])
+            contact_acceleration(i) = 0.;
+        mass_constraints.condense(contact_acceleration);
+        mass_factor->solve(contact_acceleration);
+        mass_constraints.distribute(contact_acceleration);
+      }
+    const double   kinetic_before = kinetic_energy();
+    Vector<double> v_start        = v;
     for (types::global_dof_index i = 0; i < u.size(); ++i)
       {
         v(i) = v_predicted(i) + c_v * (u(i) - u_predicted(i));
         a(i) = moreau_jean ? (v(i) - v_start(i)) / step :
                              c_a * (u(i) - u_predicted(i));
       }
-    // M a + C v + F_int = F_ext + F_c + F_support, and the last assembly
-    // was the converged state's: F_ext + F_support = (F_int + M a + C v -
-    // F_ext) + F_ext - F_c on every dof.
+    if (!moreau_jean)
+      {
+        // Kane et al.'s contact-implicit Newmark: the contact's impulse P
+        // = dt F_c / 2 changes the velocity by M^-1 P, the smooth forces by
+        // Newmark's rule; the end state's a = c_a (u - u~) counts F_c
+        // whole, so v gains (1/2 - gamma) dt M^-1 F_c and the next
+        // predictor takes the smooth acceleration alone.
+        a_smooth = a;
+        a_smooth -= contact_acceleration;
+        v.add((0.5 - settings.gamma) * step, contact_acceleration);
+      }
+
+    // The converged assembly's unbalanced forces are F_int + M (c_a (u -
+    // u~) + a_M v) + F_v - F_ext - f_old on every dof (f_old: the start
+    // state's forces the step carries), its applied loads F_ext + f_old;
+    // where a dof is constrained, the equation of motion gives the
+    // support's reaction.
+    Vector<double> inertia(u.size());
+    for (types::global_dof_index i = 0; i < u.size(); ++i)
+      inertia(i) = c_a * (u(i) - u_predicted(i)) +
+                   settings.mass_damping *
+                     (v_predicted(i) + c_v * (u(i) - u_predicted(i)));
+    const Vector<double> inertia_force = apply_mass(inertia);
+    // F_ext + F_support = F_int + M (..) + F_v - F_c - f_old
     Vector<double> applied = body.unbalanced_forces();
     applied += body.applied_loads();
-    applied -= body.get_contact_forces();
-    applied -= old_forces; // (Moreau-Jean's start-state forces: not loads)
-    Vector<double> damping = apply_mass(v);
-    damping *= settings.mass_damping;
-    if (viscous_forces.size() == damping.size())
-      damping += viscous_forces;
+    applied -= contact;
+    applied -= old_forces;
+    Vector<double> viscous(u.size());
+    if (viscous_forces.size() == u.size())
+      viscous = viscous_forces;
+    Vector<double> internal = body.unbalanced_forces();
+    internal += body.applied_loads();
+    internal -= inertia_force;
+    internal -= viscous;
+    Vector<double> mass_damping = apply_mass(v);
+    mass_damping *= settings.mass_damping;
+    // The smooth forces s = F_ext + F_support - F_int - a_M M v - F_v.
+    Vector<double> smooth = applied;
+    smooth -= internal;
+    smooth -= mass_damping;
+    smooth -= viscous;
+
     Vector<double> du = u;
     du -= u_start;
     const auto trapezoid = [&](const Vector<double> &before,
@@ -423,28 +546,33 @@ namespace glissade
       return 0.5 * (before * du + now * du);
     };
     account.work_of_loads += trapezoid(applied_before, applied);
-    account.contact_work +=
-      trapezoid(contact_before, body.get_contact_forces());
-    account.damping_dissipation += trapezoid(damping_before, damping);
-    applied_before = applied;
-    contact_before = body.get_contact_forces();
-    damping_before = damping;
-    if (moreau_jean)
-      {
-        // f_n+1 = F_ext - F_int at the end state, from the converged
-        // assembly's unbalanced forces F_int + M (a + a_M v) - F_ext -
-        // (1 - theta) / theta f_n, on every dof.
-        const double   theta = settings.theta;
-        Vector<double> inertia(u.size());
-        for (types::global_dof_index i = 0; i < u.size(); ++i)
-          inertia(i) =
-            c_a * (u(i) - u_predicted(i)) + settings.mass_damping * v(i);
-        Vector<double> f = apply_mass(inertia);
-        f -= old_forces;
-        f -= body.unbalanced_forces();
-        old_forces = f;
-        old_forces *= (1. - theta) / theta;
-      }
+    account.damping_dissipation +=
+      trapezoid(mass_damping_before, mass_damping) +
+      trapezoid(viscous_before, viscous);
+    // The contact acts by the step's impulse P, whose force in the
+    // equation of the end state is F_c = P / (w dt) (w: theta, or 1/2 for
+    // Newmark): its work on the step's motion is P . du / dt.
+    const double contact_weight = moreau_jean ? settings.theta : 0.5;
+    const double contact_work   = contact_weight * (contact * du);
+    account.contact_work += contact_work;
+    // The scheme's own dissipation: what the kinetic energy lacks of the
+    // work of the step's mean smooth force and of the contact impulse
+    // (zero to round-off for the trapezoidal rule; (theta - 1/2)
+    // (|v_n+1 - v_n|_M^2 + |du|_K^2) for Moreau-Jean on a linear body).
+    account.scheme_dissipation += trapezoid(smooth_before, smooth) +
+                                  contact_work -
+                                  (kinetic_energy() - kinetic_before);
+
+    applied_before      = applied;
+    contact_before      = contact;
+    mass_damping_before = mass_damping;
+    viscous_before      = viscous;
+    smooth_before       = smooth;
+    // F_ext - F_int - F_v at the end state, on every dof.
+    Vector<double> f = inertia_force;
+    f -= old_forces;
+    f -= body.unbalanced_forces();
+    set_start_state_forces(f);
   }
 
 

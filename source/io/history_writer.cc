@@ -180,6 +180,7 @@ namespace glissade
                                 "contact_dissipation",
                                 "friction_dissipation",
                                 "damping_dissipation",
+                                "scheme_dissipation",
                                 "energy_balance"})
       columns.push_back(q);
     evaluators.emplace_back([energies](std::vector<double> &row) {
@@ -189,6 +190,7 @@ namespace glissade
       row.push_back(energies->contact_dissipation());
       row.push_back(energies->friction_dissipation);
       row.push_back(energies->damping_dissipation);
+      row.push_back(energies->scheme_dissipation);
       row.push_back(energies->balance());
     });
   }

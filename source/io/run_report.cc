@@ -30,6 +30,38 @@ namespace glissade
 
 
   std::string
+  energy_report(const EnergyAccount &e)
+  {
+    std::ostringstream out;
+    out << std::setprecision(4) << "energies: kinetic " << e.kinetic
+        << ", stored " << e.strain << ", work of the loads " << e.work_of_loads
+        << "; dissipated by the contact " << e.contact_dissipation()
+        << ", by friction " << e.friction_dissipation << ", by the damping "
+        << e.damping_dissipation << ", by the scheme " << e.scheme_dissipation
+        << "; balance " << e.balance();
+    if (e.contact_creating_steps > 0)
+      {
+        out << "\nwarning: the contact created energy in "
+            << e.contact_creating_steps << " step"
+            << (e.contact_creating_steps > 1 ? "s" : "") << " ("
+            << e.contact_created << " in all; the largest, "
+            << e.largest_created
+            << ", in the step ending at t = " << e.largest_created_at
+            << "); steps ending at t =";
+        for (unsigned int k = 0; k < e.contact_creating_times.size(); ++k)
+          out << (k > 0 ? ", " : " ") << e.contact_creating_times[k];
+        if (e.contact_creating_steps > e.contact_creating_times.size())
+          out << ", ...";
+        out << ". The contact laws make each step's work <= 0 (doc/theory.md, "
+               "'Energy'): a curved master's gap is linearised over the "
+               "step; smaller steps shrink what it creates";
+      }
+    return out.str();
+  }
+
+
+
+  std::string
   timing_table(const RunStatistics &s, const bool with_contact)
   {
     std::vector<std::pair<std::string, double>> rows = {

@@ -27,7 +27,7 @@ namespace glissade
     // changes: an old file is refused. (4: the cells of a mesh read from a
     // Gmsh file are walked along a Hilbert curve, which numbers its dofs
     // anew.)
-    const std::string checkpoint_format = "glissade checkpoint 4";
+    const std::string checkpoint_format = "glissade checkpoint 5";
   } // namespace
 
 

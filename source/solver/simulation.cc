@@ -415,7 +415,7 @@ namespace glissade
       {
         if (newton(t_start, t_end))
           {
-            integrator->accept_step();
+            integrator->accept_step(t_end);
             return true;
           }
       }
@@ -769,7 +769,11 @@ namespace glissade
   std::string
   Simulation::summary() const
   {
-    return run_summary(statistics(), n_dofs(), !contact_problem->empty());
+    std::string text =
+      run_summary(statistics(), n_dofs(), !contact_problem->empty());
+    if (const EnergyAccount *energies = integrator->energies())
+      text += "\n" + energy_report(*energies);
+    return text;
   }
 
 

@@ -1,6 +1,7 @@
 #include <glissade/body/body_measures.h>
 #include <glissade/solver/time_integrator.h>
 
+#include <algorithm>
 #include <set>
 
 namespace glissade
@@ -28,7 +29,7 @@ namespace glissade
       begin_step(const double, const double) override
       {}
       void
-      accept_step() override
+      accept_step(const double) override
       {}
     };
 
@@ -109,10 +110,14 @@ namespace glissade
       }
 
       void
-      accept_step() override
+      accept_step(const double t) override
       {
+        const double contact_work_before = account.contact_work;
         for (const auto &body : bodies)
           body->inertia()->accept_step(*body, account);
+        account.record_step_contact_work(account.contact_work -
+                                           contact_work_before,
+                                         t);
         // Friction dissipates - r_t times the slip of the step at each
         // node in contact (the slip since the step began, along t).
         for (const auto &pair : contact->contact_pairs())
@@ -156,13 +161,27 @@ namespace glissade
 
 
     /**
-     * Newmark's implicit scheme: the contact law on the end positions,
-     * every node within the alert distance (the quasi-static step's).
+     * Newmark's implicit scheme with the contact implicit (Kane, Repetto,
+     * Ortiz & Marsden 1999): the smooth forces by Newmark's rule, the
+     * contact by the step's impulse P, its law on the end positions, every
+     * node within the alert distance (the quasi-static step's). The end
+     * state's equation carries the contact force F_c = 2 P / dt, which the
+     * outputs report halved (the step's mean force P / dt). Its work over
+     * the step, P . du / dt, is then -P_N g_n - mu P_N |slip| <= 0: the
+     * contact never creates energy (doc/theory.md, "Energy").
      */
     class Newmark : public WithInertia
     {
     public:
       using WithInertia::WithInertia;
+
+      void
+      attach(const ContactProblem &contact_problem) override
+      {
+        WithInertia::attach(contact_problem);
+        for (const auto &pair : contact->contact_pairs())
+          pair->report_forces_scaled_by(0.5);
+      }
 
     protected:
       void
@@ -174,15 +193,23 @@ namespace glissade
 
     /**
      * Moreau and Jean's theta-method (Jean 1999; Feng, Joli, Cros &
-     * Magnain 2005 with the bi-potential local solver): the contact law on
-     * the end velocities and the step's impulses, for the nodes whose gap
-     * closes by the step's theta point, g_n + (1 - theta) dt U_N <= 0. With
-     * U = H v_n the relative velocity at the start, the end velocity's
-     * law is the position law shifted: U_N,n+1 >= 0 is g(u) - g_n - (1 -
-     * theta) dt U_N,n >= 0 to first order, and the slip velocity is that
-     * of slip - (1 - theta) dt U_T,n. A node that does not close is out of
-     * the step (it may go behind the master within it, by less than dt
-     * times its speed; the next step stops it).
+     * Magnain 2005 with the bi-potential local solver): Signorini's law on
+     * the end normal velocity and the step's impulses, for the nodes whose
+     * gap closes by the step's theta point, g_n + (1 - theta) dt U_N <= 0,
+     * and that do not move away. With U = H v_n the relative velocity at
+     * the start, the end velocity's law is the position law shifted: U_N,n+1
+     * >= 0 is g(u) - g_n - (1 - theta) dt U_N,n >= 0 to first order.
+     * Coulomb's law holds on the step's slip. A node that does not close is
+     * out of the step (it may go behind the master within it, by less than
+     * dt times its speed; the next step stops it).
+     *
+     * The velocity law needs the contact nodes' mass (Contact mass =
+     * kept): a node without mass has no velocity of its own (the scheme's
+     * u_n+1 = u_n + dt (theta v_n+1 + (1 - theta) v_n) makes its v ring
+     * from step to step at theta = 1/2), and a law on it lets nodes through
+     * the master. With the mass redistributed, the law is Signorini's on
+     * the end positions, as Newmark's, whose impulse does no positive work
+     * either (doc/theory.md, "Energy").
      */
     class MoreauJean : public WithInertia
     {
@@ -196,7 +223,8 @@ namespace glissade
       attach(const ContactProblem &contact_problem) override
       {
         WithInertia::attach(contact_problem);
-        contact->use_velocity_law();
+        if (!scene.time_integration.redistribute_contact_mass)
+          contact->use_velocity_law();
         // The local problem's unknown is the step's impulse over theta
         // dt; the outputs report the mean force, the impulse over dt.
         for (const auto &pair : contact->contact_pairs())
@@ -207,6 +235,8 @@ namespace glissade
       void
       begin_contact_step(const double t_start, const double dt) override
       {
+        if (contact->position_law())
+          return;
         const double theta = scene.time_integration.theta;
         for (const auto &pair : contact->contact_pairs())
           {
@@ -226,7 +256,6 @@ namespace glissade
                   continue;
                 const ContactLinearization &l   = node.linearization;
                 double                      U_N = velocity_along(l.gap_row);
-                double                      U_T = velocity_along(l.slip_row);
                 // Relative to a moving obstacle's material under the node;
                 // the detection's gap is to the obstacle at the step's end:
                 // its gap at the start adds back the obstacle's motion.
@@ -239,7 +268,6 @@ namespace glissade
                     const MasterSurface &obstacle = pair->surface();
                     const Tensor<1, 2>   w = obstacle.velocity_at(x, t_start);
                     U_N -= node.normal * w;
-                    U_T -= node.tangent * w;
                     start_gap +=
                       dt * (node.normal *
                             obstacle.velocity_at(x, t_start + 0.5 * dt));
@@ -251,8 +279,19 @@ namespace glissade
                     node.status   = BiPotentialSolver::NodeStatus::open;
                     continue;
                   }
-                node.law_shift = {{-(1. - theta) * dt * U_T,
-                                   -start_gap - (1. - theta) * dt * U_N}};
+                // The impulse works on the step's mean velocity, theta
+                // U_n+1 + (1 - theta) U_n = du / dt. An approaching node
+                // (U_N,n <= 0) takes Jean's law, U_N,n+1 >= 0: the normal
+                // work (1 - theta) P_N U_N,n is <= 0. A node behind the
+                // master that moves away (U_N,n > 0) may not come back
+                // within the step, g - g_n >= 0: its normal work is zero
+                // (on the end velocity its impulse would work positively).
+                // Coulomb's law holds on the step's slip: the friction's
+                // work is - mu P_N |slip| <= 0 (on the end velocity alone,
+                // a slip that reverses within the step would create
+                // energy).
+                node.law_shift = {
+                  {0., -start_gap - (1. - theta) * dt * std::min(U_N, 0.)}};
               }
           }
       }

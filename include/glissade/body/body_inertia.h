@@ -1,13 +1,18 @@
 #pragma once
 
 #include <deal.II/base/types.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/energy_account.h>
 #include <glissade/description/scene_description.h>
+#include <glissade/lac/direct_solver.h>
 
 #include <array>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -140,6 +145,7 @@ namespace glissade
     void
     accept_step(const Body &body, EnergyAccount &account);
 
+
     /**
      * The force that would change the body's momentum by itself over one
      * step, |M v~| / dt: the scale of the residual of a body in flight,
@@ -177,12 +183,34 @@ namespace glissade
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       // clang-format off
-      archive & v & a & applied_before & contact_before & damping_before
+      archive & v & a & a_smooth & applied_before & contact_before
+              & mass_damping_before & viscous_before & smooth_before
               & old_forces;
       // clang-format on
     }
 
   private:
+    /**
+     * The forces of the start state that the next step carries as loads
+     * (step_forces()), from f = F_ext - F_int - F_v of the accepted state:
+     * Moreau-Jean's (1 - theta) / theta f on every dof; Newmark's f on
+     * the free dofs without mass, whose rows the trapezoidal rule writes
+     * as the mean of the step's two ends.
+     */
+    void
+    set_start_state_forces(const dealii::Vector<double> &f);
+
+    /**
+     * The mass M assembled and condensed by the body's constraints without
+     * their values (mass_constraints), the identity on the rows of the free
+     * dofs without mass (without_mass), and Newmark's mass_factor where
+     * contact dofs carry mass.
+     */
+    void
+    prepare_mass_system(const Body                   &body,
+                        dealii::SparsityPattern      &sparsity,
+                        dealii::SparseMatrix<double> &M);
+
     /** M x, the mass applied to a global vector. */
     dealii::Vector<double>
     apply_mass(const dealii::Vector<double> &x) const;
@@ -205,8 +233,25 @@ namespace glissade
     /** Moreau-Jean: (1 - theta) / theta (F_ext - F_int)_n. */
     dealii::Vector<double> old_forces;
     /** The forces of the last accepted state, for the next step's work:
-     *  loads and supports, contact, damping. */
-    dealii::Vector<double> applied_before, contact_before, damping_before;
+     *  loads and supports, contact, mass damping, viscous stress, and the
+     *  internal forces (Moreau-Jean's own dissipation). */
+    dealii::Vector<double> applied_before, contact_before, mass_damping_before,
+      viscous_before, smooth_before;
+    /**
+     * Newmark's acceleration of the smooth forces alone (without the
+     * contact's impulse), which the next step's predictors take.
+     */
+    dealii::Vector<double> a_smooth;
+    /** The dofs the contact pairs touch, and the free dofs without mass. */
+    std::vector<dealii::types::global_dof_index> contact_dofs;
+    std::vector<bool>                            without_mass;
+    /**
+     * Newmark with contact dofs that carry mass: the factorised mass,
+     * condensed by the body's constraints without their values, for M^-1
+     * F_c at each accepted step.
+     */
+    std::unique_ptr<DirectSolver>     mass_factor;
+    dealii::AffineConstraints<double> mass_constraints;
     /** The last assembly's viscous forces (stiffness damping). */
     dealii::Vector<double> viscous_forces;
   };

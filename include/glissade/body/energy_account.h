@@ -1,5 +1,9 @@
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 namespace glissade
 {
   /**
@@ -27,6 +31,48 @@ namespace glissade
     double contact_work         = 0.;
     double friction_dissipation = 0.;
     double damping_dissipation  = 0.;
+    /**
+     * What the scheme itself dissipates: Moreau-Jean's for theta > 1/2,
+     * (theta - 1/2) (|v_n+1 - v_n|_M^2 + du . (F_int,n+1 - F_int,n)) a
+     * step; zero for Newmark's trapezoidal rule.
+     */
+    double scheme_dissipation = 0.;
+
+    /**
+     * The steps whose contact did positive work on the bodies (created
+     * energy) beyond round-off, 1e-8 of the energies at stake: how many,
+     * what they created in all, the largest and when, and the end times of
+     * the first ten. Every scheme's contact law makes the work of each
+     * step <= 0 (doc/theory.md, "Energy"); a step that breaks it is
+     * reported in the summary.
+     */
+    unsigned int        contact_creating_steps = 0;
+    double              contact_created        = 0.;
+    double              largest_created = 0., largest_created_at = 0.;
+    std::vector<double> contact_creating_times;
+
+    /** The contact's work over the step that ended at t (all bodies). */
+    void
+    record_step_contact_work(const double work, const double t)
+    {
+      // (the energies at stake: a step's work within 1e-8 of them is the
+      // round-off of a body at rest, whose energies are its weight's)
+      const double scale = std::max({initial,
+                                     kinetic + strain,
+                                     std::abs(work_of_loads),
+                                     friction_dissipation});
+      if (!(work > 1e-8 * scale))
+        return;
+      ++contact_creating_steps;
+      contact_created += work;
+      if (work > largest_created)
+        {
+          largest_created    = work;
+          largest_created_at = t;
+        }
+      if (contact_creating_times.size() < 10)
+        contact_creating_times.push_back(t);
+    }
 
     /** What the normal contact dissipated: - W_contact - D_friction. */
     double
@@ -39,7 +85,7 @@ namespace glissade
     balance() const
     {
       return kinetic + strain - initial - work_of_loads - contact_work +
-             damping_dissipation;
+             damping_dissipation + scheme_dissipation;
     }
 
     template <class Archive>
@@ -48,7 +94,10 @@ namespace glissade
     {
       // clang-format off
       archive & kinetic & strain & initial & work_of_loads & contact_work
-              & friction_dissipation & damping_dissipation;
+              & friction_dissipation & damping_dissipation
+              & scheme_dissipation & contact_creating_steps & contact_created
+              & largest_created & largest_created_at
+              & contact_creating_times;
       // clang-format on
     }
   };

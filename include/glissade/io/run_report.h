@@ -1,5 +1,7 @@
 #pragma once
 
+#include <glissade/body/energy_account.h>
+
 #include <string>
 
 namespace glissade
@@ -42,6 +44,15 @@ namespace glissade
   run_summary(const RunStatistics &statistics,
               const unsigned int   n_dofs,
               const bool           with_contact);
+
+  /**
+   * A dynamic run's energies in one line: what the contact (its normal part
+   * and friction), the damping and the scheme dissipated, and the balance;
+   * then, if any step's contact did positive work beyond round-off, a
+   * warning that names those steps by their end times.
+   */
+  std::string
+  energy_report(const EnergyAccount &energies);
 
   /**
    * Where the wall time went: assembly, factorization, predictor solve,

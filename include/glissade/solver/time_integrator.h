@@ -18,9 +18,12 @@ namespace glissade
    *
    * - QuasiStatic (Time integration/Scheme = quasi-static): t is a load
    *   parameter and a step is an equilibrium; nothing to do.
-   * - Newmark: every body gets a BodyInertia, whose terms its assembly
-   *   adds; a step begins from the accepted state (u_n, v_n, a_n), and the
-   *   state it converges to is accepted before the next.
+   * - Newmark, Moreau-Jean: every body gets a BodyInertia, whose terms its
+   *   assembly adds; a step begins from the accepted state, and the state
+   *   it converges to is accepted before the next. Both take the contact
+   *   as the step's impulse: Newmark with its law on the end positions
+   *   (Kane et al.'s contact-implicit Newmark), Moreau-Jean on the end
+   *   normal velocity and the step's slip.
    *
    * A scheme is one class here and one line in create().
    */
@@ -59,9 +62,12 @@ namespace glissade
     virtual void
     begin_step(const double t_start, const double t) = 0;
 
-    /** After a converged step: its end state becomes the start state. */
+    /**
+     * After a converged step ending at t: its end state becomes the start
+     * state, and its energies are accounted.
+     */
     virtual void
-    accept_step() = 0;
+    accept_step(const double t) = 0;
 
     /**
      * The energies so far (EnergyAccount), for the history and the
