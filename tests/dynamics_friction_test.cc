@@ -35,7 +35,7 @@ namespace
   {
     std::vector<double> t, p, p_normal, x;
     double              largest_contact_work = 0., energy_scale = 0.;
-    unsigned int        reported_steps       = 0;
+    unsigned int        reported_steps = 0;
   };
 
   BlockHistory
@@ -58,10 +58,9 @@ namespace
       history.p.push_back(block.inertia()->momentum()[0]);
       history.p_normal.push_back(block.inertia()->momentum()[1]);
       history.x.push_back(vertex_displacement(block, Point<2>(0., 0.))[0]);
-      history.energy_scale =
-        std::max({history.energy_scale,
-                  e.kinetic + e.strain,
-                  std::abs(e.work_of_loads)});
+      history.energy_scale = std::max({history.energy_scale,
+                                       e.kinetic + e.strain,
+                                       std::abs(e.work_of_loads)});
       history.largest_contact_work =
         std::max(history.largest_contact_work, e.contact_work - contact_work);
       contact_work = e.contact_work;
@@ -85,9 +84,8 @@ namespace
   void
   check_no_energy_from_contact(const BlockHistory &h, const std::string &what)
   {
-    std::cout << "    largest contact work of a step "
-              << h.largest_contact_work << " (energies " << h.energy_scale
-              << ")" << std::endl;
+    std::cout << "    largest contact work of a step " << h.largest_contact_work
+              << " (energies " << h.energy_scale << ")" << std::endl;
     check(h.largest_contact_work <= 1e-10 * h.energy_scale,
           what + ": a step's contact did positive work");
     check(h.reported_steps == 0,
@@ -102,13 +100,13 @@ namespace
   check_block_cases(const std::string              &master,
                     const std::vector<std::string> &variant,
                     const std::string              &label,
-                    const double distance_tolerance = 0.005)
+                    const double                    distance_tolerance = 0.005)
   {
-    const double pi = numbers::PI, a = 10. * pi / 180., g = 1., m = 0.5,
-                 T = 2., dt = 0.01, mu_stick = 0.3;
-    const double free_momentum     = m * g * std::sin(a) * T;
-    const double free_displacement = 0.5 * g * std::sin(a) * T * T;
-    const std::string where        = label + " on the " + master;
+    const double pi = numbers::PI, a = 10. * pi / 180., g = 1., m = 0.5, T = 2.,
+                 dt = 0.01, mu_stick = 0.3;
+    const double      free_momentum     = m * g * std::sin(a) * T;
+    const double      free_displacement = 0.5 * g * std::sin(a) * T * T;
+    const std::string where             = label + " on the " + master;
     // (on the slab, whose top the block's weight and friction bend, the
     // normal is not quite y's)
     const double identity_tolerance = master == "floor" ? 1e-8 : 1e-3;
@@ -133,12 +131,13 @@ namespace
             where + ": the sticking block moves");
       check(p_second <= std::max(1.5 * p_first, 1e-6 * free_momentum),
             where + ": the sticking block's momentum grows");
-      check(x <= 1e-3 * free_displacement, where + ": the sticking block creeps");
+      check(x <= 1e-3 * free_displacement,
+            where + ": the sticking block creeps");
       // (at rest, its energies are those of its weight's compression: the
       // energies at stake are those a slide would exchange)
       BlockHistory at_stake = h;
-      at_stake.energy_scale = std::max(h.energy_scale,
-                                       m * g * std::sin(a) * free_displacement);
+      at_stake.energy_scale =
+        std::max(h.energy_scale, m * g * std::sin(a) * free_displacement);
       check_no_energy_from_contact(at_stake, where + ", sticking");
     }
 
@@ -155,10 +154,10 @@ namespace
       // and all.
       double identity = 0.;
       for (unsigned int i = 0; i < h.t.size(); ++i)
-        identity = std::max(
-          identity,
-          std::abs(h.p[i] + mu * h.p_normal[i] -
-                   m * g * (std::sin(a) - mu * std::cos(a)) * h.t[i]));
+        identity =
+          std::max(identity,
+                   std::abs(h.p[i] + mu * h.p_normal[i] -
+                            m * g * (std::sin(a) - mu * std::cos(a)) * h.t[i]));
       std::cout << "  " << where << ", mu = 0.1: largest |p + mu p_n - m g "
                 << "(sin a - mu cos a) t| " << identity << std::endl;
       check(identity <= identity_tolerance * free_momentum,
@@ -182,7 +181,7 @@ namespace
     // Launched at v0 = 0.45 on a flat floor: p = m (v0 - mu g t) until
     // v0 / (mu g) = 1.5, then at rest.
     {
-      const double v0 = 0.45, mu = 0.3, stop = v0 / (mu * g);
+      const double             v0 = 0.45, mu = 0.3, stop = v0 / (mu * g);
       std::vector<std::string> flat = {
         "Body block/Initial velocity=0.45, 0",
         "Body block/Boundary conditions/Gravity=0, -1"};

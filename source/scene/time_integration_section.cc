@@ -27,12 +27,13 @@ namespace glissade
       "the bodies' inertia (Material/Density), the load program's "
       "increments the time steps, each solved by Newton with the contact "
       "step of the quasi-static scheme on the dynamic tangent K + M / "
-      "(beta dt^2); with the contact nodes' mass redistributed (Contact "
-      "mass) the contact pressure does not chatter and the energy stays "
-      "under control. moreau-jean: Moreau and Jean's theta-method, the "
-      "contact law (bi-potential, Coulomb) on the end velocities and the "
-      "step's impulses, for the nodes that close within the step "
-      "(doc/theory.md, 'Dynamics').");
+      "(beta dt^2); the contact acts by each step's impulse, its law on the "
+      "end positions (Kane et al.'s contact-implicit Newmark), so it never "
+      "does positive work. moreau-jean: Moreau and Jean's theta-method, the "
+      "contact by the step's impulses too (Signorini on the end velocities "
+      "with Contact mass = kept, on the end positions with the mass "
+      "redistributed; Coulomb on the step's slip); theta = 1 damps what the "
+      "step does not resolve (doc/theory.md, 'Dynamics').");
     prm.declare_entry("Theta",
                       "0.5",
                       Patterns::Double(0.5, 1.),
@@ -66,7 +67,7 @@ namespace glissade
                       "and Renard 2008): the contact force then has no "
                       "inertia of its own to ring with, and the total mass "
                       "and momentum are kept. kept: the mass as assembled "
-                      "(the pressure chatters at impact).");
+                      "(each step's contact force rings about its mean).");
     prm.declare_entry("Mass damping",
                       "0",
                       Patterns::Double(0.),
