@@ -171,10 +171,7 @@ namespace glissade
   void
   BodyInertia::set_initial_velocity(const Body &body)
   {
-    // The initial velocity at each dof's support point: a value dof takes
-    // v there, a Hermite derivative dof the derivative of v (by a central
-    // difference of the expressions, exact for the linear fields of rigid
-    // motions and uniform velocities).
+    // The initial velocity at each dof (field_at_dofs).
     const auto                   &description = body.description_of_body();
     FunctionParser<2>             velocity(2);
     std::map<std::string, double> constants = {{"pi", M_PI}};
@@ -192,6 +189,30 @@ namespace glissade
                          "cannot read '" + description.initial_velocity[0] +
                            ", " + description.initial_velocity[1] + "'");
       }
+    v = field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
+      const double value = velocity.value(X, c);
+      if (!std::isfinite(value))
+        throw InputError(body.source_name() + ": Body " + body.name() +
+                           "/Initial velocity",
+                         "is not finite at (" + std::to_string(X[0]) + ", " +
+                           std::to_string(X[1]) + ")");
+      return value;
+    });
+    body.system().constraints().distribute(v);
+  }
+
+
+
+  Vector<double>
+  BodyInertia::field_at_dofs(
+    const Body                                                  &body,
+    const std::function<double(const Point<2> &, unsigned int)> &field) const
+  {
+    // A value dof takes the field at its support point, a Hermite
+    // derivative dof the field's derivative there (by a central
+    // difference, exact for the linear fields of rigid motions and uniform
+    // velocities).
+    Vector<double>                              values(body.n_dofs());
     std::map<types::global_dof_index, Point<2>> support;
     DoFTools::map_dofs_to_support_points(body.space().mapping(),
                                          body.dof_handler(),
@@ -216,25 +237,43 @@ namespace glissade
             const unsigned int c = system / per_dim, kind = system % per_dim;
             const Point<2>    &X = support.at(local[i]);
             if (kind == 0)
-              v(local[i]) = velocity.value(X, c);
+              values(local[i]) = field(X, c);
             else
               {
                 Tensor<1, 2> e;
                 e[kind - 1] = h;
-                v(local[i]) =
-                  (velocity.value(X + e, c) - velocity.value(X - e, c)) /
-                  (2. * h);
+                values(local[i]) =
+                  (field(X + e, c) - field(X - e, c)) / (2. * h);
               }
-            if (!std::isfinite(v(local[i])))
-              throw InputError(body.source_name() + ": Body " + body.name() +
-                                 "/Initial velocity",
-                               "is not finite at (" + std::to_string(X[0]) +
-                                 ", " + std::to_string(X[1]) + ")");
           }
       }
     if (shared_out)
-      processes::sum(v.begin(), v.size());
-    body.system().constraints().distribute(v);
+      processes::sum(values.begin(), values.size());
+    return values;
+  }
+
+
+
+  double
+  BodyInertia::moment_of_inertia(const Body &body, const Point<2> &centre) const
+  {
+    const Vector<double> w =
+      field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
+        return c == 0 ? -(X[1] - centre[1]) : X[0] - centre[0];
+      });
+    return apply_mass(w) * w;
+  }
+
+
+
+  double
+  BodyInertia::angular_momentum(const Body &body, const Point<2> &centre) const
+  {
+    const Vector<double> w =
+      field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
+        return c == 0 ? -(X[1] - centre[1]) : X[0] - centre[0];
+      });
+    return apply_mass(w) * v;
   }
 
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
@@ -12,6 +13,7 @@
 #include <glissade/lac/direct_solver.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -165,6 +167,22 @@ namespace glissade
     double
     kinetic_energy() const;
 
+    /**
+     * The moment of inertia about `centre` of the mass as the scheme has
+     * it (redistributed or kept): w . M w for the unit rotation w = e_3 x
+     * (X - centre) of the reference configuration.
+     */
+    double
+    moment_of_inertia(const Body &body, const dealii::Point<2> &centre) const;
+
+    /**
+     * The angular momentum about `centre`, w . M v with w the unit rotation
+     * about it (of the reference positions: about a centre that moves, add
+     * its motion's moment).
+     */
+    double
+    angular_momentum(const Body &body, const dealii::Point<2> &centre) const;
+
     const dealii::Vector<double> &
     velocity() const
     {
@@ -210,6 +228,16 @@ namespace glissade
     prepare_mass_system(const Body                   &body,
                         dealii::SparsityPattern      &sparsity,
                         dealii::SparseMatrix<double> &M);
+
+    /**
+     * The dof values of a field of the reference positions: a value dof
+     * takes the field at its support point, a Hermite derivative dof its
+     * derivative there.
+     */
+    dealii::Vector<double>
+    field_at_dofs(const Body                                &body,
+                  const std::function<double(const dealii::Point<2> &,
+                                             unsigned int)> &field) const;
 
     /** M x, the mass applied to a global vector. */
     dealii::Vector<double>
