@@ -38,8 +38,8 @@ namespace
     {
       largest  = std::max(largest, e.contact_work - previous);
       previous = e.contact_work;
-      energies = std::max(
-        {energies, e.kinetic + e.strain, std::abs(e.work_of_loads)});
+      energies =
+        std::max({energies, e.kinetic + e.strain, std::abs(e.work_of_loads)});
     }
   };
 
@@ -122,10 +122,10 @@ namespace
   SlopeRun
   roll_down(const std::string &scheme, const double mu, const double a)
   {
-    const std::string ramp = "min(t / 0.2, 1)";
-    const std::string gravity =
-      std::to_string(std::sin(a)) + " * " + ramp + ", " +
-      std::to_string(-std::cos(a)) + " * " + ramp;
+    const std::string ramp    = "min(t / 0.2, 1)";
+    const std::string gravity = std::to_string(std::sin(a)) + " * " + ramp +
+                                ", " + std::to_string(-std::cos(a)) + " * " +
+                                ramp;
     std::vector<std::string> overrides = {
       "Output/Progress=false",
       "Output/VTU interval=0",
@@ -217,34 +217,33 @@ GLISSADE_TEST(dynamics_rolling_down_a_slope)
 {
   const double a = 30. * numbers::PI / 180., T = 2., t_r = 0.2;
   // int_0^T int_0^t g(t') dt' dt for g = min(t / t_r, 1)
-  const double travel_integral = t_r * t_r / 6. +
-                                 0.5 * (std::pow(T - t_r / 2., 2) -
-                                        std::pow(t_r / 2., 2));
+  const double travel_integral =
+    t_r * t_r / 6. + 0.5 * (std::pow(T - t_r / 2., 2) - std::pow(t_r / 2., 2));
   for (const std::string scheme : {"newmark", "moreau-jean"})
     for (const double mu : {0.4, 0.1})
       {
         const SlopeRun run       = roll_down(scheme, mu, a);
         const double   threshold = run.k2 / (1. + run.k2) * std::tan(a);
         const bool     rolls     = mu >= threshold;
-        const double   along     = rolls ? std::sin(a) / (1. + run.k2) :
-                                           std::sin(a) - mu * std::cos(a);
-        const double   acceleration = acceleration_after(run, 0.3);
+        const double   along =
+          rolls ? std::sin(a) / (1. + run.k2) : std::sin(a) - mu * std::cos(a);
+        const double acceleration = acceleration_after(run, 0.3);
         // the angle turned per unit travel: -1 / R rolling, -mu cos a /
         // (k^2 R (sin a - mu cos a)) slipping (the same integral of g(t)
         // over both, whichever the scheme's error on positions)
-        const double turn    = run.angle / run.travel;
-        const double turn_cf = rolls ? -1. :
-                                       -mu * std::cos(a) /
-                                         (run.k2 * (std::sin(a) -
-                                                    mu * std::cos(a)));
+        const double turn = run.angle / run.travel;
+        const double turn_cf =
+          rolls ?
+            -1. :
+            -mu * std::cos(a) / (run.k2 * (std::sin(a) - mu * std::cos(a)));
         std::cout << std::setprecision(6) << "  " << scheme << ", mu = " << mu
                   << (rolls ? " (rolls" : " (slips") << ", threshold "
                   << threshold << "): acceleration " << acceleration << " ("
                   << along << "), travel " << run.travel << " ("
-                  << along * travel_integral << "), angle turned "
-                  << run.angle << ", per unit travel " << turn << " ("
-                  << turn_cf << "); largest contact work of a step "
-                  << run.work.largest << std::endl;
+                  << along * travel_integral << "), angle turned " << run.angle
+                  << ", per unit travel " << turn << " (" << turn_cf
+                  << "); largest contact work of a step " << run.work.largest
+                  << std::endl;
         const std::string what =
           scheme + ", mu = " + std::to_string(mu) + ": the ";
         check_relative(acceleration, along, 0.01, what + "acceleration");

@@ -341,7 +341,10 @@ namespace glissade
       dofs,
       *element_space,
       std::move(constraints),
-      without_follower_pressure(*boundary_conditions),
+      // (a turning frame's Coriolis and Euler forces make the tangent
+      // unsymmetric)
+      without_follower_pressure(*boundary_conditions) &&
+        !description.turning_frame.active(),
       RigidMotionSprings(motions_free_of_supports(*boundary_conditions,
                                                   dofs,
                                                   *element_space,

@@ -164,6 +164,21 @@ namespace glissade
           for (auto &value : t)
             value = value > 0. ? 1. : 0.;
         }
+
+    const TurningFrameDescription &turning =
+      body.description_of_body().turning_frame;
+    if (turning.active())
+      {
+        frame = std::make_unique<TurningFrame>(
+          body,
+          turning,
+          field_at_dofs(body,
+                        [&](const Point<2> &X, const unsigned int c) {
+                          return X[c] - turning.centre[c];
+                        }),
+          where);
+        frame->set_time(0.);
+      }
   }
 
 
@@ -397,7 +412,17 @@ namespace glissade
     Vector<double> internal = body.applied_loads();
     internal -= residual;
     internal -= viscous_before;
+    frame_before.reinit(body.n_dofs());
+    if (frame)
+      {
+        frame_before =
+          frame->forces([&](const Vector<double> &x) { return apply_mass(x); },
+                        body.displacement(),
+                        v);
+        internal += frame_before;
+      }
     smooth_before = applied_before;
+    smooth_before += frame_before;
     smooth_before -= internal;
     smooth_before -= mass_damping_before;
     smooth_before -= viscous_before;
@@ -442,10 +467,14 @@ namespace glissade
 
 
   void
-  BodyInertia::begin_step(const Vector<double> &u_n, const double dt)
+  BodyInertia::begin_step(const Vector<double> &u_n,
+                          const double          dt,
+                          const double          t)
   {
     step    = dt;
     u_start = u_n;
+    if (frame)
+      frame->set_time(t);
     if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
       {
         const double theta = settings.theta;
@@ -478,7 +507,18 @@ namespace glissade
     // (no step yet: the assembly of the initial state, whose residual
     // gives the initial acceleration)
     if (step == 0.)
-      return;
+      {
+        // (the frame's forces of the initial state, at its velocity)
+        if (frame)
+          {
+            std::vector<double> velocity(dofs.size());
+            for (unsigned int j = 0; j < dofs.size(); ++j)
+              velocity[j] = v(dofs[j]);
+            frame->add_cell_terms(
+              cell_mass[cell], dofs, u, velocity, 0., nullptr, cell_rhs);
+          }
+        return;
+      }
     const double              a_M = settings.mass_damping;
     const FullMatrix<double> &m   = cell_mass[cell];
     const unsigned int        n   = dofs.size();
@@ -494,6 +534,15 @@ namespace glissade
             cell_rhs(i) -= m(i, j) * x(j);
             cell_matrix(i, j) += (c_a + a_M * c_v) * m(i, j);
           }
+    if (frame)
+      {
+        std::vector<double> velocity(n);
+        for (unsigned int j = 0; j < n; ++j)
+          velocity[j] =
+            v_predicted(dofs[j]) + c_v * (u(dofs[j]) - u_predicted(dofs[j]));
+        frame->add_cell_terms(
+          m, dofs, u, velocity, c_v, &cell_matrix, cell_rhs);
+      }
   }
 
 
@@ -572,8 +621,24 @@ namespace glissade
     internal -= viscous;
     Vector<double> mass_damping = apply_mass(v);
     mass_damping *= settings.mass_damping;
-    // The smooth forces s = F_ext + F_support - F_int - a_M M v - F_v.
+    // A turning frame's forces, at the velocity of the step's equation (the
+    // assembly counted them with the inertia: they are loads here).
+    Vector<double> frame_forces(u.size());
+    if (frame)
+      {
+        Vector<double> v_equation = v_predicted;
+        for (types::global_dof_index i = 0; i < u.size(); ++i)
+          v_equation(i) += c_v * (u(i) - u_predicted(i));
+        frame_forces =
+          frame->forces([&](const Vector<double> &x) { return apply_mass(x); },
+                        u,
+                        v_equation);
+        internal += frame_forces;
+      }
+    // The smooth forces s = F_ext + F_support + F_frame - F_int - a_M M v -
+    // F_v.
     Vector<double> smooth = applied;
+    smooth += frame_forces;
     smooth -= internal;
     smooth -= mass_damping;
     smooth -= viscous;
@@ -584,7 +649,8 @@ namespace glissade
                                const Vector<double> &now) {
       return 0.5 * (before * du + now * du);
     };
-    account.work_of_loads += trapezoid(applied_before, applied);
+    account.work_of_loads += trapezoid(applied_before, applied) +
+                             trapezoid(frame_before, frame_forces);
     account.damping_dissipation +=
       trapezoid(mass_damping_before, mass_damping) +
       trapezoid(viscous_before, viscous);
@@ -607,7 +673,8 @@ namespace glissade
     mass_damping_before = mass_damping;
     viscous_before      = viscous;
     smooth_before       = smooth;
-    // F_ext - F_int - F_v at the end state, on every dof.
+    frame_before        = frame_forces;
+    // F_ext - F_int - F_v (+ F_frame) at the end state, on every dof.
     Vector<double> f = inertia_force;
     f -= old_forces;
     f -= body.unbalanced_forces();

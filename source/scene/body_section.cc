@@ -356,6 +356,7 @@ namespace glissade
 
     MaterialDescription::declare_parameters(prm, regions);
     declare_boundary_conditions(prm);
+    TurningFrameDescription::declare_parameters(prm);
     prm.declare_entry("Initial velocity",
                       "0, 0",
                       Patterns::Anything(),
@@ -379,6 +380,7 @@ namespace glissade
     prm.leave_subsection();
     prm.check([&]() { material.parse_parameters(prm, where); });
     prm.check([&]() { parse_boundary_conditions(prm, *this, where); });
+    prm.check([&]() { turning_frame.parse_parameters(prm, where); });
     prm.check([&]() {
       initial_velocity =
         text::split_top_level(text::trim(prm.get("Initial velocity")), ',');

@@ -1,3 +1,4 @@
+#include <glissade/base/input_error.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/solver/time_integrator.h>
 
@@ -105,7 +106,7 @@ namespace glissade
       begin_step(const double t_start, const double t) override
       {
         for (const auto &body : bodies)
-          body->inertia()->begin_step(body->displacement(), t - t_start);
+          body->inertia()->begin_step(body->displacement(), t - t_start, t);
         begin_contact_step(t_start, t - t_start);
       }
 
@@ -313,6 +314,13 @@ namespace glissade
         case TimeIntegrationSettings::Scheme::quasi_static:
           break;
       }
+    for (const auto &body : bodies)
+      if (body->description_of_body().turning_frame.active())
+        throw InputError(scene.source + ": Body " + body->name() +
+                           "/Turning frame/Angular velocity",
+                         "a turning frame's forces act on the body's inertia: "
+                         "choose a dynamic scheme (Time integration/Scheme = "
+                         "newmark or moreau-jean), or leave the entry empty");
     return std::make_unique<QuasiStatic>();
   }
 } // namespace glissade

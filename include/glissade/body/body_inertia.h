@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/energy_account.h>
+#include <glissade/body/turning_frame.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/lac/direct_solver.h>
 
@@ -81,9 +82,12 @@ namespace glissade
     void
     initialize(const Body &body, const dealii::Vector<double> &residual);
 
-    /** The predictors of a step of length dt from the displacement u_n. */
+    /** The predictors of a step of length dt from the displacement u_n,
+     *  ending at t. */
     void
-    begin_step(const dealii::Vector<double> &u_n, const double dt);
+    begin_step(const dealii::Vector<double> &u_n,
+               const double                  dt,
+               const double                  t);
 
     /**
      * Forces of the start state that the step's equation carries as loads:
@@ -203,7 +207,7 @@ namespace glissade
       // clang-format off
       archive & v & a & a_smooth & applied_before & contact_before
               & mass_damping_before & viscous_before & smooth_before
-              & old_forces;
+              & frame_before & old_forces;
       // clang-format on
     }
 
@@ -264,7 +268,9 @@ namespace glissade
      *  loads and supports, contact, mass damping, viscous stress, and the
      *  internal forces (Moreau-Jean's own dissipation). */
     dealii::Vector<double> applied_before, contact_before, mass_damping_before,
-      viscous_before, smooth_before;
+      viscous_before, smooth_before, frame_before;
+    /** The forces of a turning frame (Body <name>/Turning frame), or none. */
+    std::unique_ptr<TurningFrame> frame;
     /**
      * Newmark's acceleration of the smooth forces alone (without the
      * contact's impulse), which the next step's predictors take.

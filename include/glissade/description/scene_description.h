@@ -146,6 +146,34 @@ namespace glissade
     parse_parameters(SectionReader &prm, const std::string &where);
   };
 
+  /**
+   * A body seen from a frame that turns at Omega(t) about e_3 through a
+   * centre (Body <name>/Turning frame): the blade in its own frame. Its
+   * inertia then has the frame's forces, per unit mass Omega^2 r
+   * (centrifugal), -2 Omega e_3 x v (Coriolis) and -dOmega/dt e_3 x r
+   * (Euler), r = x - centre the current position.
+   */
+  struct TurningFrameDescription
+  {
+    /** Omega, an expression of t in rad/s; empty: the frame is inertial. */
+    std::string      angular_velocity;
+    dealii::Point<2> centre;
+    bool             coriolis = true;
+
+    bool
+    active() const
+    {
+      return !angular_velocity.empty();
+    }
+
+    /** The subsection Turning frame of a body
+     *  (source/scene/turning_frame_section.cc). */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(SectionReader &prm, const std::string &where);
+  };
+
   struct BodyDescription
   {
     std::string                       name;
@@ -159,6 +187,9 @@ namespace glissade
     /** An acceleration field of x, y, t acting on the mass (Boundary
      *  conditions/Gravity); empty for none. */
     std::vector<std::string> gravity;
+    /** The frame the body is seen from (Turning frame); inertial if not
+     *  active(). */
+    TurningFrameDescription turning_frame;
 
     /**
      * The subsection Body <name>: Mesh, Element, Material, Boundary
