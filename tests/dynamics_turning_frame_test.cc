@@ -37,51 +37,50 @@ namespace
                                 const double L,
                                 const double Omega)
   {
-    const unsigned int n_elements = 60, n = 2 * n_elements;
-    const double       h          = L / n_elements;
+    const unsigned int       n_elements = 60, n = 2 * n_elements;
+    const double             h = L / n_elements;
     LAPACKFullMatrix<double> K(n, n), M(n, n);
-    const double gauss_x[4] = {-0.8611363115940526,
-                               -0.3399810435848563,
-                               0.3399810435848563,
-                               0.8611363115940526};
-    const double gauss_w[4] = {0.3478548451374538,
-                               0.6521451548625461,
-                               0.6521451548625461,
-                               0.3478548451374538};
+    const double             gauss_x[4] = {-0.8611363115940526,
+                                           -0.3399810435848563,
+                                           0.3399810435848563,
+                                           0.8611363115940526};
+    const double             gauss_w[4] = {0.3478548451374538,
+                                           0.6521451548625461,
+                                           0.6521451548625461,
+                                           0.3478548451374538};
     for (unsigned int e = 0; e < n_elements; ++e)
       {
         // dofs w_e, w'_e, w_e+1, w'_e+1; the root's two are clamped
-        const int dof[4] = {2 * int(e) - 2,
-                            2 * int(e) - 1,
-                            2 * int(e),
-                            2 * int(e) + 1};
-        double ke[4][4] = {}, me[4][4] = {};
+        const int dof[4]   = {2 * int(e) - 2,
+                              2 * int(e) - 1,
+                              2 * int(e),
+                              2 * int(e) + 1};
+        double    ke[4][4] = {}, me[4][4] = {};
         for (unsigned int q = 0; q < 4; ++q)
           {
             const double xi = 0.5 * (gauss_x[q] + 1.), w = 0.5 * gauss_w[q] * h;
-            const double x  = (e + xi) * h;
+            const double x = (e + xi) * h;
             // Hermite shape functions, their first and second derivatives
-            const double N[4] = {1 - 3 * xi * xi + 2 * xi * xi * xi,
-                                 h * (xi - 2 * xi * xi + xi * xi * xi),
-                                 3 * xi * xi - 2 * xi * xi * xi,
-                                 h * (-xi * xi + xi * xi * xi)};
-            const double dN[4] = {(-6 * xi + 6 * xi * xi) / h,
-                                  1 - 4 * xi + 3 * xi * xi,
-                                  (6 * xi - 6 * xi * xi) / h,
-                                  -2 * xi + 3 * xi * xi};
+            const double N[4]   = {1 - 3 * xi * xi + 2 * xi * xi * xi,
+                                   h * (xi - 2 * xi * xi + xi * xi * xi),
+                                   3 * xi * xi - 2 * xi * xi * xi,
+                                   h * (-xi * xi + xi * xi * xi)};
+            const double dN[4]  = {(-6 * xi + 6 * xi * xi) / h,
+                                   1 - 4 * xi + 3 * xi * xi,
+                                   (6 * xi - 6 * xi * xi) / h,
+                                   -2 * xi + 3 * xi * xi};
             const double ddN[4] = {(-6 + 12 * xi) / (h * h),
                                    (-4 + 6 * xi) / h,
                                    (6 - 12 * xi) / (h * h),
                                    (-2 + 6 * xi) / h};
             const double tension =
-              rho_A * Omega * Omega *
-              (r_0 * (L - x) + 0.5 * (L * L - x * x));
+              rho_A * Omega * Omega * (r_0 * (L - x) + 0.5 * (L * L - x * x));
             for (unsigned int i = 0; i < 4; ++i)
               for (unsigned int j = 0; j < 4; ++j)
                 {
-                  ke[i][j] += w * (EI * ddN[i] * ddN[j] +
-                                   tension * dN[i] * dN[j] -
-                                   rho_A * Omega * Omega * N[i] * N[j]);
+                  ke[i][j] +=
+                    w * (EI * ddN[i] * ddN[j] + tension * dN[i] * dN[j] -
+                         rho_A * Omega * Omega * N[i] * N[j]);
                   me[i][j] += w * rho_A * N[i] * N[j];
                 }
           }
@@ -123,9 +122,9 @@ namespace
   {
     const double      period = 2. * M_PI / expected;
     const std::string b      = "1.8751*(y-50)/100";
-    const std::string mode   = "40*(cosh(" + b + ")-cos(" + b + ")-0.7341*(sinh(" +
-                             b + ")-sin(" + b + ")))";
-    const std::string scene = R"(
+    const std::string mode   = "40*(cosh(" + b + ")-cos(" + b +
+                             ")-0.7341*(sinh(" + b + ")-sin(" + b + ")))";
+    const std::string   scene = R"(
 subsection Scene
   set Bodies = blade
 end
@@ -158,20 +157,20 @@ subsection Output
   set Progress     = false
 end
 )";
-    Simulation simulation(SceneReader::read_string(
+    Simulation          simulation(SceneReader::read_string(
       scene,
       "spun_blade.prm",
-      {"Output/Directory=dynamics_turning_blade_" +
-         std::to_string(int(Omega)) + (coriolis ? "_coriolis" : ""),
-       "Body blade/Initial velocity=" + mode + ", 0",
-       "Body blade/Turning frame/Angular velocity=" + std::to_string(Omega),
-       std::string("Body blade/Turning frame/Coriolis=") +
-         (coriolis ? "true" : "false"),
-       "Load program/Stage end times=" + std::to_string(9.5 * period),
-       "Load program/Stage increments=380"}));
-    const Body &blade = simulation.body("blade");
-    const auto  tip   = vertex_value_dofs(blade, Point<2>(0., 150.));
-    double      previous_t = 0., previous_u = 0.;
+      {"Output/Directory=dynamics_turning_blade_" + std::to_string(int(Omega)) +
+                  (coriolis ? "_coriolis" : ""),
+                "Body blade/Initial velocity=" + mode + ", 0",
+                "Body blade/Turning frame/Angular velocity=" + std::to_string(Omega),
+                std::string("Body blade/Turning frame/Coriolis=") +
+                  (coriolis ? "true" : "false"),
+                "Load program/Stage end times=" + std::to_string(9.5 * period),
+                "Load program/Stage increments=380"}));
+    const Body         &blade = simulation.body("blade");
+    const auto          tip   = vertex_value_dofs(blade, Point<2>(0., 150.));
+    double              previous_t = 0., previous_u = 0.;
     std::vector<double> crossings;
     simulation.on_increment = [&](unsigned int, double t) {
       const double u = blade.displacement()(tip[0]);
@@ -212,8 +211,8 @@ GLISSADE_TEST(dynamics_turning_frame_reference_beam)
     return b * (std::sinh(b * x) + std::sin(b * x) -
                 c * (std::cosh(b * x) - std::cos(b * x)));
   };
-  const unsigned int n     = 2000;
-  double             norm  = 0., K_1 = 0., K_2 = 0.;
+  const unsigned int n    = 2000;
+  double             norm = 0., K_1 = 0., K_2 = 0.;
   for (unsigned int i = 0; i <= n; ++i)
     {
       const double x = double(i) / n;
@@ -225,14 +224,12 @@ GLISSADE_TEST(dynamics_turning_frame_reference_beam)
   K_1 /= norm;
   K_2 /= norm;
   const double Omega = 0.02 * omega_0;
-  const double omega =
-    rotating_cantilever_frequency(EI, rho_A, 200., L, Omega);
-  const double k = (omega * omega - omega_0 * omega_0) / (Omega * Omega);
+  const double omega = rotating_cantilever_frequency(EI, rho_A, 200., L, Omega);
+  const double k     = (omega * omega - omega_0 * omega_0) / (Omega * Omega);
   std::cout << std::setprecision(8) << "  omega_0 " << omega_0
             << " (Euler-Bernoulli " << euler_bernoulli
-            << "), Southwell's coefficient " << k << " (K_1 " << K_1
-            << ", K_2 " << K_2 << ": " << K_1 - 1. + 2. * K_2 << ")"
-            << std::endl;
+            << "), Southwell's coefficient " << k << " (K_1 " << K_1 << ", K_2 "
+            << K_2 << ": " << K_1 - 1. + 2. * K_2 << ")" << std::endl;
   check_relative(omega_0, euler_bernoulli, 1e-6, "the beam's omega_0");
   check_relative(k, K_1 - 1. + 2. * K_2, 1e-3, "Southwell's coefficient");
 }
@@ -260,11 +257,11 @@ GLISSADE_TEST(dynamics_turning_frame_southwell)
           rotating_cantilever_frequency(EI, rho_A, r_0, L, Omega);
         const double measured =
           spun_blade_frequency(Omega, reference, coriolis);
-        std::cout << std::setprecision(6) << "  Omega = " << ratio
-                  << " omega_0" << (coriolis ? ", with Coriolis" : "")
+        std::cout << std::setprecision(6) << "  Omega = " << ratio << " omega_0"
+                  << (coriolis ? ", with Coriolis" : "")
                   << ": first bending frequency " << measured
-                  << " rad/s, the rotating beam's " << reference
-                  << " (ratio " << measured / reference << "), Southwell's "
+                  << " rad/s, the rotating beam's " << reference << " (ratio "
+                  << measured / reference << "), Southwell's "
                   << omega_0 * std::sqrt(1. + 0.9788 * ratio * ratio)
                   << std::endl;
         check_relative(measured,
@@ -320,15 +317,15 @@ subsection Output
   set History      = energies()
 end
 )";
-    Simulation  simulation(SceneReader::read_string(
+    Simulation        simulation(SceneReader::read_string(
       scene,
       "body_at_rest.prm",
       {"Load program/Stage increments=" + std::to_string(steps),
-        "Output/Directory=dynamics_turning_frame_body_at_rest_" +
-          std::to_string(steps)}));
-    const Body &disk   = simulation.body("disk");
-    double      strain = 0.;
-    simulation.on_increment = [&](unsigned int, double) {
+              "Output/Directory=dynamics_turning_frame_body_at_rest_" +
+                std::to_string(steps)}));
+    const Body       &disk   = simulation.body("disk");
+    double            strain = 0.;
+    simulation.on_increment  = [&](unsigned int, double) {
       const EnergyAccount &e = *simulation.energies();
       strain = std::max(strain, e.strain / std::max(e.kinetic, 1e-300));
     };
@@ -359,8 +356,8 @@ GLISSADE_TEST(dynamics_turning_frame_body_at_rest)
   const auto coarse = body_at_rest_seen_turning(400);
   const auto fine   = body_at_rest_seen_turning(800);
   std::cout << std::setprecision(6) << "  largest distance to the rigid "
-            << "rotation by -3 pi: " << coarse[0] << " (400 steps), "
-            << fine[0] << " (800 steps), ratio " << coarse[0] / fine[0]
+            << "rotation by -3 pi: " << coarse[0] << " (400 steps), " << fine[0]
+            << " (800 steps), ratio " << coarse[0] / fine[0]
             << "; largest stored / kinetic energy " << coarse[1] << ", "
             << fine[1] << std::endl;
   check(coarse[0] <= 1e-2, "the body at rest is not seen turning back");

@@ -23,8 +23,8 @@ namespace glissade
   {
     // The partner of a dof: the same node's dof of the other component,
     // of the same kind (value, or the same derivative of a Hermite space).
-    const FiniteElement<2> &fe      = body.dof_handler().get_fe();
-    const unsigned int      per_dim = body.space().components_per_displacement();
+    const FiniteElement<2> &fe = body.dof_handler().get_fe();
+    const unsigned int per_dim = body.space().components_per_displacement();
     partner.assign(body.n_dofs(), numbers::invalid_dof_index);
     sign.assign(body.n_dofs(), 0.);
     std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
@@ -64,14 +64,13 @@ namespace glissade
 
 
   void
-  TurningFrame::add_cell_terms(
-    const FullMatrix<double>                   &mass,
-    const std::vector<types::global_dof_index> &dofs,
-    const Vector<double>                       &u,
-    const std::vector<double>                  &v_local,
-    const double                                c_v,
-    FullMatrix<double>                         *cell_matrix,
-    Vector<double>                             &cell_rhs) const
+  TurningFrame::add_cell_terms(const FullMatrix<double>                   &mass,
+                               const std::vector<types::global_dof_index> &dofs,
+                               const Vector<double>                       &u,
+                               const std::vector<double> &v_local,
+                               const double               c_v,
+                               FullMatrix<double>        *cell_matrix,
+                               Vector<double>            &cell_rhs) const
   {
     const unsigned int n = dofs.size();
     // The cell's r and v by dof, and their turns J r, J v (the partners of
@@ -126,8 +125,8 @@ namespace glissade
   Vector<double>
   TurningFrame::forces(
     const std::function<Vector<double>(const Vector<double> &)> &apply_mass,
-    const Vector<double>                                         &u,
-    const Vector<double>                                         &v) const
+    const Vector<double>                                        &u,
+    const Vector<double>                                        &v) const
   {
     Vector<double> r = reference_position;
     r += u;

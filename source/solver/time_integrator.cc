@@ -3,6 +3,8 @@
 #include <glissade/solver/time_integrator.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 namespace glissade
@@ -107,6 +109,7 @@ namespace glissade
       {
         for (const auto &body : bodies)
           body->inertia()->begin_step(body->displacement(), t - t_start, t);
+        record_start_gaps(t_start, t - t_start);
         begin_contact_step(t_start, t - t_start);
       }
 
@@ -116,6 +119,46 @@ namespace glissade
         const double contact_work_before = account.contact_work;
         for (const auto &body : bodies)
           body->inertia()->accept_step(*body, account);
+        // A rigid obstacle that moves works on the bodies through its
+        // contact as a prescribed motion does: that is the work of the
+        // loads and supports. The contact's own work, on the relative
+        // motion, is r_t slip + r_n (g_n+1 - g_n) at each node (which its
+        // law makes <= 0); the rest of what its forces did on the slave's
+        // dofs is the obstacle's (on a curved obstacle that turns under a
+        // node, the relative motion is along the curve, not the chord the
+        // dofs' displacement takes).
+        double obstacle_work = 0.;
+        for (const auto &pair : contact->contact_pairs())
+          if (pair->master() == nullptr)
+            {
+              const Body    &slave = pair->slave();
+              Vector<double> du    = slave.displacement();
+              du -= slave.stored_displacement();
+              const auto on_slave = [&](const DofVector &row) {
+                double value = 0.;
+                for (const DofCoefficient &e : row)
+                  if (e.body == 0)
+                    value += e.value * du(e.dof);
+                return value;
+              };
+              for (const ContactNode &node : pair->nodes())
+                if (node.active)
+                  {
+                    const ContactLinearization &l = node.linearization;
+                    const std::array<double, 2> r =
+                      pair->reported_reaction(node);
+                    const double received =
+                      r[0] * on_slave(l.tangential_force) +
+                      r[1] * on_slave(l.normal_force);
+                    const double relative =
+                      r[0] * l.slip + r[1] * (std::isfinite(node.start_gap) ?
+                                                l.gap - node.start_gap :
+                                                0.);
+                    obstacle_work += received - relative;
+                  }
+            }
+        account.contact_work -= obstacle_work;
+        account.work_of_loads += obstacle_work;
         account.record_step_contact_work(account.contact_work -
                                            contact_work_before,
                                          t);
@@ -145,6 +188,34 @@ namespace glissade
       ContactProblem                           *contact = nullptr;
 
     private:
+      /**
+       * Each node's gap at the step's start, to the master as it stood
+       * then: the detection's gap (the node at u_n) to an obstacle moved
+       * back by its motion over the step (the detection takes it at the
+       * step's end). NaN for a node without a counterpart.
+       */
+      void
+      record_start_gaps(const double t_start, const double dt)
+      {
+        for (const auto &pair : contact->contact_pairs())
+          for (ContactNode &node : pair->nodes())
+            {
+              node.start_gap = std::numeric_limits<double>::quiet_NaN();
+              if (!node.projected)
+                continue;
+              node.start_gap = node.linearization.gap;
+              if (pair->master() == nullptr)
+                {
+                  Point<2> x = node.reference_position;
+                  for (unsigned int d = 0; d < 2; ++d)
+                    x[d] += pair->slave().displacement()(node.dofs[d]);
+                  node.start_gap +=
+                    dt * (node.normal *
+                          pair->surface().velocity_at(x, t_start + 0.5 * dt));
+                }
+            }
+      }
+
       void
       measure_energies()
       {
@@ -258,20 +329,16 @@ namespace glissade
                 const ContactLinearization &l   = node.linearization;
                 double                      U_N = velocity_along(l.gap_row);
                 // Relative to a moving obstacle's material under the node;
-                // the detection's gap is to the obstacle at the step's end:
-                // its gap at the start adds back the obstacle's motion.
-                double start_gap = l.gap;
+                // the gap at the start is to the obstacle as it stood then
+                // (record_start_gaps()).
+                const double start_gap = node.start_gap;
                 if (body[1] == nullptr)
                   {
                     Point<2> x = node.reference_position;
                     for (unsigned int d = 0; d < 2; ++d)
                       x[d] += pair->slave().displacement()(node.dofs[d]);
-                    const MasterSurface &obstacle = pair->surface();
-                    const Tensor<1, 2>   w = obstacle.velocity_at(x, t_start);
-                    U_N -= node.normal * w;
-                    start_gap +=
-                      dt * (node.normal *
-                            obstacle.velocity_at(x, t_start + 0.5 * dt));
+                    U_N -=
+                      node.normal * pair->surface().velocity_at(x, t_start);
                   }
                 if (start_gap + (1. - theta) * dt * U_N > 0.)
                   {

@@ -51,6 +51,12 @@ namespace glissade
      * (TimeIntegrator).
      */
     std::array<double, 2> law_shift = {{0., 0.}};
+    /**
+     * Under a dynamic scheme, the gap at the step's start to the master as
+     * it stood then (TimeIntegrator); NaN for a node without a
+     * counterpart then.
+     */
+    double start_gap = 0.;
 
     /**
      * Gap, slip, their derivatives, the forces of the reaction and the
