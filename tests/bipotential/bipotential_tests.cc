@@ -649,6 +649,171 @@ namespace
 // Hertz check also prints timings.
 // Each is a ctest test of its own ("contact_local_<name>",
 // tests/harness.h); the Hertz timing is printed by the benchmark target.
+namespace
+{
+  // --------------------------------------------------------------------
+  // A yielding layer's law (BiPotentialSolver::solve with caps): r_n in
+  // [0, cap], g >= 0 where open, g = 0 below the cap, g <= 0 at it.
+  void
+  test_capped_normal_law()
+  {
+    std::printf("\n== Capped normal reactions (a yielding layer)\n");
+    const BiPotentialSolver solver = tight_solver();
+    // One node, frictionless: r_n = min(cap, max(0, -g_free / W_nn)).
+    for (const double cap : {0.1, 0.2, std::numeric_limits<double>::infinity()})
+      {
+        const ComplianceMatrix W = single_node(1., 0., 2.);
+        std::vector<Vector2>   r;
+        const auto   result   = solver.solve(W, {{{0., -0.3}}}, {0.}, r, {cap});
+        const double expected = std::min(cap, 0.15);
+        std::printf("  cap %g: r_n %.15g (closed form %g), gap %.3g\n",
+                    cap,
+                    r[0][1],
+                    expected,
+                    result.displacement[0][1]);
+        check(result.converged, "converged");
+        check(std::abs(r[0][1] - expected) <= 1e-14, "r_n = min(cap, 0.15)");
+        check(std::abs(result.displacement[0][1] - (-0.3 + 2. * expected)) <=
+                1e-14,
+              "the gap: g_free + W r_n (behind the master at the cap)");
+      }
+    // One node, mu = 0.5, slipping at the cap: r = (-mu cap, cap).
+    {
+      const ComplianceMatrix W = single_node(1., 0., 2.);
+      std::vector<Vector2>   r;
+      const auto result = solver.solve(W, {{{0.2, -0.3}}}, {0.5}, r, {0.1});
+      std::printf("  mu 0.5, cap 0.1: r = (%.15g, %.15g), u = (%.3g, %.3g)\n",
+                  r[0][0],
+                  r[0][1],
+                  result.displacement[0][0],
+                  result.displacement[0][1]);
+      check(result.converged, "converged with friction");
+      check(std::abs(r[0][1] - 0.1) <= 1e-14 &&
+              std::abs(r[0][0] + 0.05) <= 1e-14,
+            "slipping at the cap: r = (-mu cap, cap)");
+    }
+    // Coupled random SPD W, frictionless, caps drawn at random: against
+    // the enumeration of every node's state (open, closed, at its cap).
+    unsigned int total_at_cap = 0;
+    for (const unsigned int n : {2u, 3u, 5u})
+      for (unsigned int seed = 1; seed <= 4; ++seed)
+        {
+          const ComplianceMatrix W = reference::random_spd(n, 300 * n + seed);
+          const reference::DenseMatrix M =
+            reference::normal_part(reference::to_dense(W));
+          std::mt19937                           generator(seed);
+          std::uniform_real_distribution<double> uniform(-1., 1.);
+          std::vector<Vector2>                   u_free(n);
+          std::vector<double>                    cap(n);
+          for (unsigned int k = 0; k < n; ++k)
+            {
+              u_free[k] = {{0., uniform(generator)}};
+              cap[k]    = 0.2 + 1.5 * (1. + uniform(generator));
+            }
+          std::vector<Vector2> r;
+          const auto           result =
+            solver.solve(W, u_free, std::vector<double>(n, 0.), r, cap);
+          // Enumeration: state 0 open, 1 closed (g = 0), 2 at the cap.
+          unsigned int states = 1;
+          for (unsigned int k = 0; k < n; ++k)
+            states *= 3;
+          unsigned int        found = 0;
+          std::vector<double> reference_r;
+          for (unsigned int code = 0; code < states; ++code)
+            {
+              std::vector<unsigned int> state(n);
+              for (unsigned int k = 0, c = code; k < n; ++k, c /= 3)
+                state[k] = c % 3;
+              // r of the closed nodes from g = 0, the others fixed
+              std::vector<double> z(n, 0.);
+              std::vector<int>    closed;
+              for (unsigned int k = 0; k < n; ++k)
+                if (state[k] == 2)
+                  z[k] = cap[k];
+                else if (state[k] == 1)
+                  closed.push_back(k);
+              const unsigned int  m = closed.size();
+              std::vector<double> A(m * m), b(m);
+              for (unsigned int i = 0; i < m; ++i)
+                {
+                  b[i] = -u_free[closed[i]][1];
+                  for (unsigned int k = 0; k < n; ++k)
+                    if (state[k] == 2)
+                      b[i] -= M(closed[i], k) * z[k];
+                  for (unsigned int j = 0; j < m; ++j)
+                    A[i * m + j] = M(closed[i], closed[j]);
+                }
+              // Gauss elimination (small, SPD)
+              bool regular = true;
+              for (unsigned int i = 0; i < m && regular; ++i)
+                {
+                  regular = std::abs(A[i * m + i]) > 1e-14;
+                  for (unsigned int j = i + 1; j < m && regular; ++j)
+                    {
+                      const double f = A[j * m + i] / A[i * m + i];
+                      for (unsigned int c = i; c < m; ++c)
+                        A[j * m + c] -= f * A[i * m + c];
+                      b[j] -= f * b[i];
+                    }
+                }
+              if (!regular)
+                continue;
+              for (int i = int(m) - 1; i >= 0; --i)
+                {
+                  double v = b[i];
+                  for (unsigned int c = i + 1; c < m; ++c)
+                    v -= A[i * m + c] * b[c];
+                  b[i] = v / A[i * m + i];
+                }
+              for (unsigned int i = 0; i < m; ++i)
+                z[closed[i]] = b[i];
+              bool admissible = true;
+              for (unsigned int k = 0; k < n; ++k)
+                {
+                  double g = u_free[k][1];
+                  for (unsigned int l = 0; l < n; ++l)
+                    g += M(k, l) * z[l];
+                  const double tolerance = 1e-12;
+                  admissible             = admissible &&
+                               (state[k] == 0 ? g >= -tolerance :
+                                state[k] == 1 ? z[k] >= -tolerance &&
+                                                  z[k] <= cap[k] + tolerance :
+                                                g <= tolerance);
+                }
+              if (admissible)
+                {
+                  ++found;
+                  reference_r = z;
+                }
+            }
+          double       difference = 0.;
+          unsigned int at_cap = 0, closed = 0;
+          for (unsigned int k = 0; k < n && found > 0; ++k)
+            {
+              difference =
+                std::max(difference, std::abs(r[k][1] - reference_r[k]));
+              at_cap += r[k][1] >= cap[k] * (1. - 1e-12);
+              closed += r[k][1] > 0. && r[k][1] < cap[k] * (1. - 1e-12);
+            }
+          total_at_cap += at_cap;
+          std::printf("  n %u seed %u: %u closed, %u at their caps; %u "
+                      "admissible state patterns, %u sweeps, |r - "
+                      "r_enumerated| %.1e\n",
+                      n,
+                      seed,
+                      closed,
+                      at_cap,
+                      found,
+                      result.sweeps,
+                      difference);
+          check(result.converged, "converged");
+          check(found >= 1, "the enumeration found the solution");
+          check(difference <= 1e-9, "r matches the enumeration to 1e-9");
+        }
+    check(total_at_cap > 0, "some nodes of the random problems are at caps");
+  }
+} // namespace
+
 static const glissade_tests::Registrations tests = {
   {{"single_node_frictionless", test_single_node_frictionless},
    {"coupled_frictionless", test_coupled_frictionless},
@@ -658,6 +823,7 @@ static const glissade_tests::Registrations tests = {
    {"beta_range", test_beta},
    {"degenerate_input", test_degenerate_input},
    {"block_sparse_storage", test_block_sparse_storage},
-   {"ill_conditioned_polish", test_ill_conditioned_polish}}};
+   {"ill_conditioned_polish", test_ill_conditioned_polish},
+   {"capped_normal_law", test_capped_normal_law}}};
 static const glissade_tests::Registrations benchmarks =
   {{{"hertz_and_timing", test_hertz_and_timing}}, false};

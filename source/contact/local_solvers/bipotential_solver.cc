@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace glissade
@@ -71,20 +72,41 @@ namespace glissade
 
     // The residuals of the contact law at each node, from a consistent pair
     // (u, r). See BiPotentialSolver::Residuals for what each one means.
+    // The cap on node k's normal reaction (none: infinity).
+    double
+    cap_of(const std::vector<double> &cap, const std::size_t k)
+    {
+      return cap.empty() ? std::numeric_limits<double>::infinity() : cap[k];
+    }
+
+    // The residuals of the contact law at each node, from a consistent pair
+    // (u, r). See BiPotentialSolver::Residuals for what each one means.
+    // Where a node's normal reaction is capped (a yielding layer), its
+    // normal law is r_n in [0, cap], g >= 0 where r_n = 0, g = 0 where 0 <
+    // r_n < cap, g <= 0 where r_n = cap.
     Residuals
     residuals_of(const std::vector<Vector2> &u,
                  const std::vector<Vector2> &r,
                  const std::vector<double>  &mu,
-                 const double                scale)
+                 const double                scale,
+                 const std::vector<double>  &cap = {})
     {
       Residuals result;
       for (std::size_t k = 0; k < u.size(); ++k)
         {
-          const double gap = u[k][n];
-          result.complementarity =
-            std::max(result.complementarity,
-                     std::abs(std::min(gap, scale * r[k][n])));
-          result.max_penetration = std::max(result.max_penetration, -gap);
+          const double gap   = u[k][n];
+          const double cap_k = cap_of(cap, k);
+          const bool   yielding =
+            std::isfinite(cap_k) && r[k][n] >= cap_k * (1. - 1e-12);
+          result.complementarity = std::max(
+            result.complementarity,
+            std::isfinite(cap_k) ?
+              std::abs(
+                scale * r[k][n] -
+                std::max(0., std::min(scale * cap_k, scale * r[k][n] - gap))) :
+              std::abs(std::min(gap, scale * r[k][n])));
+          if (!yielding)
+            result.max_penetration = std::max(result.max_penetration, -gap);
 
           // Coulomb's law for the tangential part, at the given normal
           // reaction: s r_t must be the projection of s r_t - u_t onto
@@ -295,18 +317,20 @@ namespace glissade
     gauss_seidel_update(const Vector2 &r_k,
                         const Vector2 &u_k,
                         const double   rho_k,
-                        const double   mu_k)
+                        const double   mu_k,
+                        const double   cap_k)
     {
       if (mu_k == 0.)
-        // Frictionless: projected SOR on the normal LCP.
-        return {{0., std::max(0., r_k[n] - rho_k * u_k[n])}};
+        // Frictionless: projected SOR on the normal LCP (box-constrained
+        // below a cap).
+        return {{0., std::min(cap_k, std::max(0., r_k[n] - rho_k * u_k[n]))}};
       // Bi-potential step: the normal argument is the modified gap
       // g + mu |u_t|, which couples Signorini and Coulomb so that a single
       // projection on K_mu enforces both.
       const Vector2 trial = {
         {r_k[t] - rho_k * u_k[t],
          r_k[n] - rho_k * (u_k[n] + mu_k * std::abs(u_k[t]))}};
-      return BiPotentialSolver::project_on_coulomb_cone(trial, mu_k);
+      return BiPotentialSolver::project_on_capped_cone(trial, mu_k, cap_k);
     }
 
     // When to polish. Gauss-Seidel finds the statuses (open, stick, slip)
@@ -362,6 +386,7 @@ namespace glissade
                          const std::vector<Vector2>        &u_free,
                          const std::vector<double>         &mu,
                          const std::vector<double>         &rho,
+                         const std::vector<double>         &cap,
                          const double                       scale,
                          const double                       free_length,
                          std::vector<Vector2>              &r)
@@ -370,6 +395,7 @@ namespace glissade
         , u_free(u_free)
         , mu(mu)
         , rho(rho)
+        , cap(cap)
         , scale(scale)
         , free_length(free_length)
         , r(r)
@@ -435,6 +461,7 @@ namespace glissade
       const std::vector<Vector2>        &u_free;
       const std::vector<double>         &mu;
       const std::vector<double>         &rho;
+      const std::vector<double>         &cap;
       const double                       scale;
       const double                       free_length;
       std::vector<Vector2>              &r;
@@ -449,7 +476,8 @@ namespace glissade
       double max_change = 0.;
       for (unsigned int k = 0; k < W.n_nodes(); ++k)
         {
-          const Vector2 new_r = gauss_seidel_update(r[k], u[k], rho[k], mu[k]);
+          const Vector2 new_r =
+            gauss_seidel_update(r[k], u[k], rho[k], mu[k], cap_of(cap, k));
           const Vector2 delta = {{new_r[t] - r[k][t], new_r[n] - r[k][n]}};
           if (delta[t] != 0. || delta[n] != 0.)
             {
@@ -479,20 +507,25 @@ namespace glissade
     bool
     GaussSeidelIterate::satisfies_law(const double bound) const
     {
-      const Residuals residuals = residuals_of(u, r, mu, scale);
+      const Residuals residuals = residuals_of(u, r, mu, scale, cap);
       return residuals.complementarity <= bound && residuals.friction <= bound;
     }
 
     bool
     GaussSeidelIterate::polish_solves(double &bound)
     {
+      // (the statuses' linear law has no yielding node: with one at its
+      // cap, Gauss-Seidel alone)
+      for (unsigned int k = 0; k < r.size(); ++k)
+        if (r[k][n] >= cap_of(cap, k) * (1. - 1e-12))
+          return false;
       std::vector<Vector2> candidate, candidate_u;
       if (!polish(W, u_free, mu, r, candidate))
         return false;
       compute_displacement(W, u_free, candidate, candidate_u);
       const double    candidate_bound = residual_bound(max_norm(candidate));
       const Residuals residuals =
-        residuals_of(candidate_u, candidate, mu, scale);
+        residuals_of(candidate_u, candidate, mu, scale, cap);
       if (residuals.complementarity <= candidate_bound &&
           residuals.friction <= candidate_bound &&
           residuals.max_cone_violation <= candidate_bound)
@@ -529,9 +562,9 @@ namespace glissade
       std::vector<Vector2> projected(W.n_nodes()), projected_u;
       for (unsigned int k = 0; k < W.n_nodes(); ++k)
         projected[k] =
-          mu[k] == 0. ?
-            Vector2{{0., std::max(0., candidate[k][n])}} :
-            BiPotentialSolver::project_on_coulomb_cone(candidate[k], mu[k]);
+          BiPotentialSolver::project_on_capped_cone(candidate[k],
+                                                    mu[k],
+                                                    cap_of(cap, k));
       compute_displacement(W, u_free, projected, projected_u);
       if (!u_is_exact)
         refresh();
@@ -547,7 +580,7 @@ namespace glissade
     GaussSeidelIterate::merit(const std::vector<Vector2> &uu,
                               const std::vector<Vector2> &rr) const
     {
-      const Residuals e = residuals_of(uu, rr, mu, scale);
+      const Residuals e = residuals_of(uu, rr, mu, scale, cap);
       return e.complementarity + e.friction;
     }
 
@@ -624,6 +657,20 @@ namespace glissade
     // because x is not in the polar cone.
     const double r_n = (x[n] + mu * abs_t) / (1. + mu * mu);
     return {{std::copysign(mu * r_n, x[t]), r_n}};
+  }
+
+  Vector2
+  BiPotentialSolver::project_on_capped_cone(const Vector2 &x,
+                                            const double   mu,
+                                            const double   cap)
+  {
+    // The cone's projection if it is under the cap; otherwise the nearest
+    // point of the cap's segment {r_n = cap, |r_t| <= mu cap}, which is the
+    // nearest point of the truncated cone then.
+    const Vector2 on_cone = project_on_coulomb_cone(x, mu);
+    if (!(on_cone[n] > cap))
+      return on_cone;
+    return {{std::max(-mu * cap, std::min(mu * cap, x[t])), cap}};
   }
 
   BiPotentialSolver::NodeStatus
@@ -706,12 +753,33 @@ namespace glissade
                            const std::vector<double>  &mu,
                            std::vector<Vector2>       &r) const
   {
+    return solve(W, u_free, mu, r, {});
+  }
+
+
+
+  BiPotentialSolver::Result
+  BiPotentialSolver::solve(const ComplianceMatrix     &W,
+                           const std::vector<Vector2> &u_free,
+                           const std::vector<double>  &mu,
+                           std::vector<Vector2>       &r,
+                           const std::vector<double>  &cap) const
+  {
     Result             result;
     const unsigned int n_nodes = W.n_nodes();
 
     // 1. Refuse what cannot be solved, before touching r.
-    const std::string problem =
-      invalid_input_message(settings, W, u_free, mu, r);
+    std::string problem = invalid_input_message(settings, W, u_free, mu, r);
+    if (problem.empty() && !cap.empty())
+      {
+        if (cap.size() != n_nodes)
+          problem = "size mismatch: W has " + std::to_string(n_nodes) +
+                    " nodes, the caps " + std::to_string(cap.size());
+        for (std::size_t k = 0; k < cap.size() && problem.empty(); ++k)
+          if (!(cap[k] > 0.))
+            problem = "the cap of node " + std::to_string(k) +
+                      " is not > 0 (infinity: none)";
+      }
     if (!problem.empty())
       {
         result.outcome = Outcome::invalid_input;
@@ -749,7 +817,7 @@ namespace glissade
     // holds; once the statuses have settled, or every polish_period sweeps,
     // the law of the iterate's statuses is solved directly (the polish).
     GaussSeidelIterate iterate(
-      settings, W, u_free, mu, rho, scale, free_length, r);
+      settings, W, u_free, mu, rho, cap, scale, free_length, r);
     StatusWatch watch(n_nodes);
     result.outcome = Outcome::max_sweeps_reached;
     for (unsigned int sweep = 1; sweep <= settings.max_sweeps; ++sweep)
@@ -804,7 +872,7 @@ namespace glissade
         iterate.reactions_replaced();
       }
     std::vector<Vector2> &u = iterate.exact_displacement();
-    result.residuals        = residuals_of(u, r, mu, scale);
+    result.residuals        = residuals_of(u, r, mu, scale, cap);
     if (result.residual_bound == 0.)
       result.residual_bound = iterate.residual_bound(max_norm(r));
     result.converged    = result.outcome == Outcome::converged;
@@ -824,13 +892,14 @@ namespace glissade
                             const std::vector<double>  &mu,
                             const std::vector<Vector2> &r,
                             const double                force_to_length_scale,
-                            std::vector<Vector2>       *displacement)
+                            std::vector<Vector2>       *displacement,
+                            const std::vector<double>  &cap)
   {
     std::vector<Vector2> u;
     compute_displacement(W, u_free, r, u);
     const double scale =
       force_to_length_scale > 0. ? force_to_length_scale : natural_scale(W);
-    const Residuals result = residuals_of(u, r, mu, scale);
+    const Residuals result = residuals_of(u, r, mu, scale, cap);
     if (displacement != nullptr)
       *displacement = std::move(u);
     return result;

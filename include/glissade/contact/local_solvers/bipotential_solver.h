@@ -247,6 +247,22 @@ namespace glissade
           std::vector<Vector2>       &r) const;
 
     /**
+     * The same with each node's normal reaction capped, r_n <= cap[k] (a
+     * layer that yields, as an abradable coating: at the cap the node may
+     * go behind the master, g <= 0; infinity: no cap). The law is then
+     * the projection on the Coulomb cone truncated by the cap
+     * (project_on_capped_cone()), a box-constrained LCP without friction:
+     * Gauss-Seidel converges as before; the polish is not tried while a
+     * node is at its cap.
+     */
+    Result
+    solve(const ComplianceMatrix     &W,
+          const std::vector<Vector2> &u_free,
+          const std::vector<double>  &mu,
+          std::vector<Vector2>       &r,
+          const std::vector<double>  &cap) const;
+
+    /**
      * The same law by a primal-dual active-set iteration (a semismooth
      * Newton method on the law): the statuses (open, stick, slip and its
      * direction) of r on input, then, repeatedly, the reactions of those
@@ -287,6 +303,10 @@ namespace glissade
     static Vector2
     project_on_coulomb_cone(const Vector2 &x, double mu);
 
+    /** The projection onto K_mu truncated by r_n <= cap. */
+    static Vector2
+    project_on_capped_cone(const Vector2 &x, double mu, double cap);
+
     /** The status that the contact law assigns to a solved node. */
     static NodeStatus
     classify(const Vector2 &r, double mu);
@@ -308,5 +328,6 @@ namespace glissade
     const std::vector<double>                     &mu,
     const std::vector<BiPotentialSolver::Vector2> &r,
     double                                         force_to_length_scale,
-    std::vector<BiPotentialSolver::Vector2>       *displacement = nullptr);
+    std::vector<BiPotentialSolver::Vector2>       *displacement = nullptr,
+    const std::vector<double>                     &cap          = {});
 } // namespace glissade
