@@ -12,7 +12,10 @@ run wrote into its output directory:
 - deformed-mesh.png: every body in its last written state, deformed at
   true scale and coloured by the von Mises stress (one colour scale for
   all bodies), over the reference outline, from the <body>.pvd files, and
-  the rigid obstacles in their final place (obstacle-<pair>.csv).
+  the rigid obstacles in their final place (obstacle-<pair>.csv);
+- coating-<pair>.png: an abradable coating's worn depth round the casing
+  (in its own frame) after each revolution and at the end, from
+  coating-<pair>.csv.
 
 Run by glissade with Debian's /usr/bin/python3 (matplotlib); by hand:
 /usr/bin/python3 scripts/plot_scene.py <output directory>."""
@@ -278,8 +281,42 @@ def plot_deformed_mesh():
     plt.close(fig)
 
 
+def plot_coating(path):
+    """coating-<pair>.png: the worn depth against the casing's angle, one
+    curve per revolution recorded (the last one darkest)."""
+    rows = read_csv(path)
+    if not rows:
+        return
+    by_revolution = {}
+    for r in rows:
+        key = (int(r["revolution"]), number(r["time"]))
+        by_revolution.setdefault(key, []).append(
+            (number(r["angle"]), number(r["worn_depth"])))
+    fig, axis = plt.subplots(figsize=(7, 3.4))
+    keys = sorted(by_revolution)
+    for i, key in enumerate(keys):
+        points = by_revolution[key]
+        shade = 0.25 + 0.75 * (i + 1) / len(keys)
+        axis.plot([p[0] for p in points], [p[1] for p in points],
+                  color=(0.1, 0.2, 0.6, shade), linewidth=1,
+                  label=f"revolution {key[0]} (t = {key[1]:.4g})"
+                  if i >= len(keys) - 4 else None)
+    axis.set_xlabel("angle in the casing's frame (degrees)")
+    axis.set_ylabel("worn depth")
+    axis.set_xlim(0, 360)
+    axis.grid(alpha=0.3)
+    axis.legend(fontsize=7)
+    name = os.path.basename(path)[:-len(".csv")]
+    axis.set_title(f"{name}: the abradable coating's wear", fontsize=9)
+    fig.tight_layout()
+    save_atomically(fig, os.path.join(directory, name + ".png"), dpi=110)
+    plt.close(fig)
+
+
 plot_history()
 plot_curves()
+for coating_path in sorted(glob.glob(os.path.join(directory, "coating-*.csv"))):
+    plot_coating(coating_path)
 pairs = set()
 for path in glob.glob(os.path.join(directory, "contact-*.pvd")):
     pairs.add(os.path.basename(path)[len("contact-"):-len(".pvd")])

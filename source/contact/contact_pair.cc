@@ -5,11 +5,13 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/mesh/boundary_normals.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -52,25 +54,32 @@ namespace glissade
          text::split_top_level(description.slave_boundary, ','))
       slave_ids.insert(
         slave.boundary_id(text::trim(name), entry + "/Slave boundary"));
-    std::set<unsigned int> seen;
+    std::map<unsigned int, unsigned int> node_of_vertex;
     for (const auto &cell : slave.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
             slave_ids.count(cell->face(f)->boundary_id()) > 0)
-          for (const unsigned int v : {0u, 1u})
-            {
-              const unsigned int vertex = cell->face(f)->vertex_index(v);
-              if (!seen.insert(vertex).second)
-                continue;
-              ContactNode node;
-              node.vertex             = vertex;
-              node.reference_position = cell->face(f)->vertex(v);
-              node.dofs               = BoundaryConditions::cell_vertex_dofs(
-                cell,
-                GeometryInfo<2>::face_to_cell_vertices(f, v),
-                slave.space());
-              slave_nodes.push_back(node);
-            }
+          {
+            std::array<unsigned int, 2> face;
+            for (const unsigned int v : {0u, 1u})
+              {
+                const unsigned int vertex = cell->face(f)->vertex_index(v);
+                const auto [at, added] =
+                  node_of_vertex.emplace(vertex, slave_nodes.size());
+                face[v] = at->second;
+                if (!added)
+                  continue;
+                ContactNode node;
+                node.vertex             = vertex;
+                node.reference_position = cell->face(f)->vertex(v);
+                node.dofs               = BoundaryConditions::cell_vertex_dofs(
+                  cell,
+                  GeometryInfo<2>::face_to_cell_vertices(f, v),
+                  slave.space());
+                slave_nodes.push_back(node);
+              }
+            slave_faces.push_back(face);
+          }
 
     slave_outward_normal =
       boundary_vertex_normals(slave.triangulation(),
@@ -83,6 +92,67 @@ namespace glissade
     discretisation = ContactDiscretisation::create(
       description.discretisation,
       {description, slave, master, *master_surface, slave_nodes, slave_ids});
+    if (master_surface->coating() != nullptr &&
+        description.discretisation != "node-to-segment")
+      throw InputError(entry + "/Discretisation",
+                       "an abradable coating (Obstacle/Coating thickness) "
+                       "caps each slave node's force: it needs "
+                       "node-to-segment contact, not " +
+                         description.discretisation);
+  }
+
+
+
+  double
+  ContactPair::normal_force_cap(const ContactNode &node) const
+  {
+    const AbradableCoating *coating = master_surface->coating();
+    if (coating == nullptr)
+      return std::numeric_limits<double>::infinity();
+    // The node's tributary area, half of each adjacent slave face now (a
+    // ring 2 pi x_r ds for a body of revolution), times the yield pressure:
+    // the force the local problem's reaction may reach, which the outputs
+    // report times their scale.
+    const unsigned int k        = &node - slave_nodes.data();
+    const auto         position = [&](const unsigned int j) {
+      const ContactNode &n = slave_nodes[j];
+      return n.reference_position +
+             Tensor<1, 2>({slave_body.displacement()(n.dofs[0]),
+                           slave_body.displacement()(n.dofs[1])});
+    };
+    const bool ring = slave_body.hypothesis() == PlaneHypothesis::axisymmetric;
+    double     area = 0.;
+    for (const auto &face : slave_faces)
+      for (const unsigned int side : {0u, 1u})
+        if (face[side] == k)
+          {
+            const Point<2> x = position(k), other = position(face[1 - side]);
+            const double   length = x.distance(other);
+            area += ring ? 2. * M_PI * length * (2. * x[0] + other[0]) / 6. :
+                           0.5 * length * slave_body.thickness();
+          }
+    return coating->yield_pressure() * area / reported_force_scale;
+  }
+
+
+
+  void
+  ContactPair::wear_coating()
+  {
+    if (master_surface->coating() == nullptr)
+      return;
+    for (const ContactNode &node : slave_nodes)
+      if (node.active &&
+          node.reaction[1] >= normal_force_cap(node) * (1. - 1e-9))
+        {
+          Point<2> start = node.reference_position, end = start;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              start[d] += slave_body.stored_displacement()(node.dofs[d]);
+              end[d] += slave_body.displacement()(node.dofs[d]);
+            }
+          master_surface->wear_along(start, end);
+        }
   }
 
 

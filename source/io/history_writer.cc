@@ -2,6 +2,7 @@
 #include <glissade/base/processes.h>
 #include <glissade/base/text.h>
 #include <glissade/body/body_measures.h>
+#include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/history_writer.h>
 
@@ -131,6 +132,22 @@ namespace glissade
         add_contact_node(*pair, args[0], args[1], item, entry);
         return;
       }
+    if (kind == "wear" && pair != nullptr && args.size() == 1)
+      {
+        if (pair->coating() == nullptr)
+          throw InputError(entry,
+                           "'" + item + "': pair '" + args[0] +
+                             "' has no abradable coating (Obstacle/Coating "
+                             "thickness)");
+        columns.push_back(identifier(args[0]) + "_removed_area");
+        columns.push_back(identifier(args[0]) + "_worn_depth");
+        evaluators.emplace_back([pair](std::vector<double> &row) {
+          const auto &profile = pair->coating()->profile();
+          row.push_back(pair->removed_area());
+          row.push_back(*std::max_element(profile.begin(), profile.end()));
+        });
+        return;
+      }
 
     const Body *body = nullptr;
     for (const auto &b : bodies)
@@ -158,7 +175,7 @@ namespace glissade
                          "' (known: displacement(body, point(x, y)), "
                          "max_displacement(body), reaction(body, "
                          "boundary), contact_force(pair), "
-                         "contact_node(pair, point(x, y)); dynamic "
+                         "contact_node(pair, point(x, y)), wear(pair); dynamic "
                          "schemes: momentum(body), energies())");
   }
 

@@ -3,12 +3,14 @@
 #include <glissade/base/processes.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/body/body_measures.h>
+#include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/io/body_output.h>
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
 #include <glissade/io/scene_output.h>
 
+#include <cmath>
 #include <iomanip>
 
 namespace glissade
@@ -28,6 +30,8 @@ namespace glissade
         contact_outputs.emplace_back(*pair);
         if (pair->surface().is_rigid())
           obstacles.emplace_back(pair->name(), &pair->surface());
+        if (pair->coating() != nullptr)
+          coatings.push_back({pair.get(), {}, {}, {}});
       }
     pvd_records.resize(bodies.size() + contact_outputs.size());
   }
@@ -65,6 +69,41 @@ namespace glissade
       write_contact_tables(increment, t);
     if (vtu_due(increment, last))
       write_vtu(increment, t);
+    if (processes::writes_files())
+      write_coating_profiles(t, last);
+  }
+
+
+
+  void
+  SceneOutput::write_coating_profiles(const double t, const bool last)
+  {
+    for (auto &coating : coatings)
+      {
+        const int revolution = static_cast<int>(std::floor(
+          std::abs(coating.pair->surface().rotation()) / (2. * M_PI) + 1e-9));
+        const int written =
+          coating.revolutions.empty() ? 0 : coating.revolutions.back();
+        if (!(revolution > written || last))
+          continue;
+        if (!coating.revolutions.empty() && coating.times.back() == t)
+          continue;
+        coating.revolutions.push_back(revolution);
+        coating.times.push_back(t);
+        coating.profiles.push_back(coating.pair->coating()->profile());
+        AtomicFile file(settings.directory + "/coating-" +
+                        coating.pair->name() + ".csv");
+        file.write_and_commit([&](std::ostream &out) {
+          out << "revolution,time,angle,worn_depth\n" << std::setprecision(12);
+          for (unsigned int s = 0; s < coating.profiles.size(); ++s)
+            {
+              const auto &profile = coating.profiles[s];
+              for (unsigned int k = 0; k < profile.size(); ++k)
+                out << coating.revolutions[s] << ',' << coating.times[s] << ','
+                    << 360. * k / profile.size() << ',' << profile[k] << '\n';
+            }
+        });
+      }
   }
 
 

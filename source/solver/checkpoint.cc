@@ -6,6 +6,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/io/atomic_file.h>
 #include <glissade/solver/simulation.h>
 
@@ -91,6 +92,8 @@ namespace glissade
                            "contact pair '" + pair->name() +
                              "' has a different number of slave nodes");
         archive & pair->nodes();
+        if (AbradableCoating *coating = pair->coating())
+          coating->serialize(archive, 0);
       }
   }
 

@@ -416,6 +416,7 @@ namespace glissade
         if (newton(t_start, t_end))
           {
             integrator->accept_step(t_end);
+            contact_problem->accept_step();
             return true;
           }
       }

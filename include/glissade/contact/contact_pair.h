@@ -195,8 +195,44 @@ namespace glissade
     std::array<dealii::Vector<double>, 2>
     contact_forces() const;
 
+    /**
+     * The cap on a slave node's normal reaction in the local problem: its
+     * tributary area times an abradable coating's yield pressure (over the
+     * reported scale); infinity without a coating.
+     */
+    double
+    normal_force_cap(const ContactNode &node) const;
+
+    /**
+     * After a converged step: the coating worn along the paths of the
+     * nodes that pressed on it at its yield pressure.
+     */
+    void
+    wear_coating();
+
+    /** The master surface's abradable coating, or nullptr. */
+    const AbradableCoating *
+    coating() const
+    {
+      return master_surface->coating();
+    }
+    AbradableCoating *
+    coating()
+    {
+      return master_surface->coating();
+    }
+
+    /** The coating's removed area (zero without one). */
+    double
+    removed_area() const
+    {
+      return master_surface->removed_area();
+    }
+
   private:
     double reported_force_scale = 1.;
+    /** The slave faces, as indices into the nodes. */
+    std::vector<std::array<unsigned int, 2>> slave_faces;
 
     /**
      * Projects one slave node at the current state and linearises it;

@@ -75,6 +75,8 @@ namespace glissade
       archive &pvd_records;
       // (a checkpoint from before the contact surfaces had PVD files)
       pvd_records.resize(bodies.size() + contact_outputs.size());
+      for (auto &coating : coatings)
+        archive &coating.revolutions &coating.times &coating.profiles;
     }
 
   private:
@@ -96,6 +98,25 @@ namespace glissade
     std::vector<ContactSurfaceOutput>         contact_outputs;
     /** The rigid obstacles, by pair name, that the pictures draw. */
     std::vector<std::pair<std::string, const MasterSurface *>> obstacles;
+
+    /**
+     * The worn profiles of a pair's abradable coating, one at each
+     * revolution the casing completes and at the end:
+     * coating-<pair>.csv (revolution, time, angle in degrees in the
+     * casing's frame, worn depth), and its PNG (Plots).
+     */
+    struct CoatingProfiles
+    {
+      const ContactPair               *pair;
+      std::vector<int>                 revolutions;
+      std::vector<double>              times;
+      std::vector<std::vector<double>> profiles;
+    };
+    std::vector<CoatingProfiles> coatings;
+
+    /** A coating's profile, if a revolution was completed or `last`. */
+    void
+    write_coating_profiles(const double t, const bool last);
     /** (time, file) of every VTU written, per body then per contact pair. */
     std::vector<std::vector<std::pair<double, std::string>>> pvd_records;
   };

@@ -236,6 +236,9 @@ namespace glissade
           held_directions(BiPotentialSolver::classify(start[k],
                                                       nodes.friction[k]),
                           nodes.friction[k]);
+        // (a node at its cap yields: its normal is not held)
+        if (start[k][1] >= nodes.normal_cap[k] * (1. - 1e-12))
+          held[k] = {{false, false}};
         for (unsigned int c = 0; c < 2; ++c)
           augmentation.directions[k][c] = held[k][c] && active[k]->augmented[c];
       }
@@ -306,12 +309,17 @@ namespace glissade
     // continues them.
     TimerOutput::Scope      scope(timer, timing::local_solve);
     const BiPotentialSolver solver(settings);
-    r                 = start;
-    result            = solver.solve(condensed.compliance(),
+    r      = start;
+    result = solver.solve(condensed.compliance(),
                           condensed.free_displacement(),
                           nodes.friction,
-                          r);
-    bool check_branch = !result.converged;
+                          r,
+                          nodes.normal_cap);
+    // (the active-set iteration knows no cap: not with a node at its cap)
+    bool capped = false;
+    for (unsigned int k = 0; k < r.size(); ++k)
+      capped = capped || r[k][1] >= nodes.normal_cap[k] * (1. - 1e-12);
+    bool check_branch = !result.converged && !capped;
     if (result.converged)
       {
         std::vector<std::array<bool, 2>> in_play = held;
@@ -324,7 +332,7 @@ namespace glissade
             for (unsigned int c = 0; c < 2; ++c)
               in_play[k][c] = in_play[k][c] || now[c];
           }
-        check_branch = changed && augmentation.count() == 0 &&
+        check_branch = changed && augmentation.count() == 0 && !capped &&
                        !condensed.positive_definite_on(in_play);
       }
     if (!check_branch)

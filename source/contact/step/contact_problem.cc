@@ -83,6 +83,24 @@ namespace glissade
       pairs.empty() ? ContactSolverSettings::Method::condensed :
                       scene.contact_solver.method,
       {bodies, bodies_in_contact, solver_settings, timer, scene.source});
+    for (const auto &pair : pairs)
+      if (pair->coating() != nullptr &&
+          scene.contact_solver.method !=
+            ContactSolverSettings::Method::condensed)
+        throw InputError(scene.source + ": Contact solver/Method",
+                         "pair '" + pair->name() +
+                           "' has an abradable coating, whose capped "
+                           "reactions the condensed method solves: use "
+                           "Method = condensed");
+  }
+
+
+
+  void
+  ContactProblem::accept_step()
+  {
+    for (auto &pair : pairs)
+      pair->wear_coating();
   }
 
 
@@ -198,6 +216,7 @@ namespace glissade
               active.push_back(&node);
               nodes.friction.push_back(
                 cone_slope(pair->settings().friction, l.vertex_cone));
+              nodes.normal_cap.push_back(pair->normal_force_cap(node));
               nodes.initial.push_back(
                 {{l.slip + node.law_shift[0], l.gap + node.law_shift[1]}});
               nodes.forces.push_back({&l.tangential_force, b});

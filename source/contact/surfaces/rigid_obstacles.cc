@@ -1,11 +1,13 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/base/user_function.h>
+#include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/contact/surfaces/master_surface.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/description/scene_description.h>
 
 #include <any>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -16,12 +18,15 @@ namespace glissade
 
   namespace
   {
-    /** A casing's shape (`Obstacle/Radius`, `Lobes`, `Lobe depth`). */
+    /** A casing's shape (`Obstacle/Radius`, `Lobes`, `Lobe depth`) and
+     *  its abradable coating (`Coating thickness`, ...; none if 0). */
     struct CasingShape
     {
-      double       radius = 1.;
-      unsigned int lobes  = 2;
-      double       depth  = 0.;
+      double       radius            = 1.;
+      unsigned int lobes             = 2;
+      double       depth             = 0.;
+      double       coating_thickness = 0., coating_yield_pressure = 0.;
+      unsigned int coating_cells = 1440;
     };
 
     /**
@@ -39,7 +44,8 @@ namespace glissade
       RigidObstacle(const ContactDescription &d)
         : reference_point(d.obstacle_point)
         , motion(d.obstacle_motion, d.entry + "/Obstacle/Motion")
-        , rotation({d.obstacle_rotation}, d.entry + "/Obstacle/Rotation")
+        , rotation_function({d.obstacle_rotation},
+                            d.entry + "/Obstacle/Rotation")
       {}
 
       void
@@ -61,6 +67,12 @@ namespace glissade
       is_rigid() const override
       {
         return true;
+      }
+
+      double
+      rotation() const override
+      {
+        return angle;
       }
 
       /**
@@ -120,6 +132,10 @@ namespace glissade
       /** The reference point now, and the rotation angle now. */
       Point<2> position;
       double   angle = 0.;
+      /** The reference point and the turn at the step's start... */
+      Point<2> start_position;
+      /** ...and the turn since. */
+      double turn_in_step = 0.;
 
     private:
       Tensor<1, 2>
@@ -141,16 +157,14 @@ namespace glissade
       double
       rotation_angle(const double time) const
       {
-        rotation.set_time(time);
-        return rotation.value(Point<2>(), 0);
+        rotation_function.set_time(time);
+        return rotation_function.value(Point<2>(), 0);
       }
 
       const Point<2> reference_point;
       /** m(t) and alpha(t), their values checked finite (UserFunction). */
       mutable UserFunction motion;
-      mutable UserFunction rotation;
-      Point<2>             start_position;
-      double               turn_in_step = 0.;
+      mutable UserFunction rotation_function;
     };
 
 
@@ -255,14 +269,15 @@ namespace glissade
     public:
       CasingObstacle(const SurfaceContext &context)
         : RigidObstacle(context.description)
-        , radius(
-            std::any_cast<CasingShape>(context.description.surface_settings)
-              .radius)
-        , depth(std::any_cast<CasingShape>(context.description.surface_settings)
-                  .depth)
-        , lobes(std::any_cast<CasingShape>(context.description.surface_settings)
-                  .lobes)
-      {}
+        , shape(
+            std::any_cast<CasingShape>(context.description.surface_settings))
+      {
+        if (shape.coating_thickness > 0.)
+          layer =
+            std::make_unique<AbradableCoating>(shape.coating_thickness,
+                                               shape.coating_yield_pressure,
+                                               shape.coating_cells);
+      }
 
       SurfacePoint
       project(const Point<2> &x, const SegmentHint &) const override
@@ -297,6 +312,45 @@ namespace glissade
         return points;
       }
 
+      AbradableCoating *
+      coating() override
+      {
+        return layer.get();
+      }
+      const AbradableCoating *
+      coating() const override
+      {
+        return layer.get();
+      }
+
+      void
+      wear_along(const Point<2> &x_start, const Point<2> &x_end) override
+      {
+        if (!layer)
+          return;
+        // Each end in the casing's frame, as the casing stood then.
+        const auto frame_coordinates =
+          [](const Point<2> &x, const Point<2> &centre, const double turn) {
+            const Tensor<1, 2> d = x - centre;
+            return std::array<double, 2>{
+              {std::atan2(d[1], d[0]) - turn, d.norm()}};
+          };
+        const auto start =
+          frame_coordinates(x_start, start_position, angle - turn_in_step);
+        const auto end = frame_coordinates(x_end, position, angle);
+        layer->wear_along(start[0], start[1], end[0], end[1], [&](double psi) {
+          return casing_radius(psi);
+        });
+      }
+
+      double
+      removed_area() const override
+      {
+        return layer ? layer->removed_area(
+                         [&](double psi) { return casing_radius(psi); }) :
+                       0.;
+      }
+
     private:
       struct Curve
       {
@@ -304,14 +358,34 @@ namespace glissade
         Tensor<1, 2> first, second;
       };
 
+      /** The casing's own curve r_c(psi) in its frame (under a coating). */
+      double
+      casing_radius(const double psi) const
+      {
+        return shape.radius - shape.depth * std::cos(shape.lobes * psi);
+      }
+
+      /**
+       * The contact surface at the polar angle phi: the casing's curve, or
+       * the coating's worn surface inside it, r = r_c(psi) - e + w(psi),
+       * psi = phi - rotation.
+       */
       Curve
       at(const double phi) const
       {
-        const double       n   = lobes;
-        const double       s   = n * (phi - angle);
-        const double       r   = radius - depth * std::cos(s);
-        const double       dr  = depth * n * std::sin(s);
-        const double       ddr = depth * n * n * std::cos(s);
+        const double n   = shape.lobes;
+        const double psi = phi - angle;
+        const double s   = n * psi;
+        double       r   = casing_radius(psi);
+        double       dr  = shape.depth * n * std::sin(s);
+        double       ddr = shape.depth * n * n * std::cos(s);
+        if (layer)
+          {
+            const auto w = layer->worn(psi);
+            r += w[0] - layer->thickness();
+            dr += w[1];
+            ddr += w[2];
+          }
         const Tensor<1, 2> e_r({std::cos(phi), std::sin(phi)});
         const Tensor<1, 2> e_phi({-std::sin(phi), std::cos(phi)});
         return {position + r * e_r,
@@ -319,9 +393,8 @@ namespace glissade
                 (ddr - r) * e_r + 2. * dr * e_phi};
       }
 
-      const double       radius;
-      const double       depth;
-      const unsigned int lobes;
+      const CasingShape                 shape;
+      std::unique_ptr<AbradableCoating> layer;
     };
   } // namespace
 
@@ -461,6 +534,28 @@ namespace glissade
                       "casing: how far the lobes come in from the circle "
                       "of radius R (below R / (1 + n^2), so that the "
                       "casing stays convex).");
+    prm.declare_entry(
+      "Coating thickness",
+      "0",
+      Patterns::Double(0.),
+      "casing: an abradable coating of this thickness on the casing's "
+      "inside, the contact surface (0: none). It is rigid and perfectly "
+      "plastic: a slave node presses on it with at most Coating yield "
+      "pressure times its tributary area, and where it presses that hard "
+      "it cuts in, the coating removed along its path (Legrand, Batailly & "
+      "Pierre 2012). The worn profile is written per revolution "
+      "(coating-<pair>.csv and .png) and the removed area is the history "
+      "item wear(<pair>).");
+    prm.declare_entry("Coating yield pressure",
+                      "0",
+                      Patterns::Double(0.),
+                      "casing: the pressure at which the coating gives "
+                      "way (force per unit area; with a coating, > 0).");
+    prm.declare_entry("Coating cells",
+                      "1440",
+                      Patterns::Integer(16),
+                      "casing: the worn profile's equal angles round the "
+                      "casing (1440: a quarter of a degree).");
   }
 
 
@@ -469,9 +564,19 @@ namespace glissade
   parse_casing_parameters(const ParameterHandler &prm, const std::string &where)
   {
     CasingShape shape;
-    shape.radius = prm.get_double("Radius");
-    shape.lobes  = prm.get_integer("Lobes");
-    shape.depth  = prm.get_double("Lobe depth");
+    shape.radius                 = prm.get_double("Radius");
+    shape.lobes                  = prm.get_integer("Lobes");
+    shape.depth                  = prm.get_double("Lobe depth");
+    shape.coating_thickness      = prm.get_double("Coating thickness");
+    shape.coating_yield_pressure = prm.get_double("Coating yield pressure");
+    shape.coating_cells          = prm.get_integer("Coating cells");
+    if (shape.coating_thickness > 0. && !(shape.coating_yield_pressure > 0.))
+      throw InputError(where + "/Coating yield pressure",
+                       "must be > 0 with a coating (Coating thickness = " +
+                         std::to_string(shape.coating_thickness) + ")");
+    if (!(shape.coating_thickness < 0.5 * shape.radius))
+      throw InputError(where + "/Coating thickness",
+                       "must be below half the Radius");
     if (!(shape.radius <= 1e100))
       throw InputError(where + "/Radius",
                        "must be finite and below 1e100 (squared distances "

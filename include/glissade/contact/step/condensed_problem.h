@@ -51,6 +51,9 @@ namespace glissade
     std::vector<RankOneTerm> terms;
     /** Coulomb's mu of each node. */
     std::vector<double> friction;
+    /** The cap on each node's normal reaction (an abradable coating's;
+     *  infinity: none). */
+    std::vector<double> normal_cap;
 
     unsigned int
     size() const

@@ -72,6 +72,14 @@ namespace glissade
     void
     update_state();
 
+    /**
+     * After a converged step: what the step leaves behind besides the
+     * bodies' state, an abradable coating's wear (ContactPair::
+     * wear_coating()).
+     */
+    void
+    accept_step();
+
     /** Saves and restores the nodes' state (for cut-backs). */
     void
     store_state();

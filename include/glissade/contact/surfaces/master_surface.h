@@ -8,6 +8,8 @@
 
 namespace glissade
 {
+  class AbradableCoating;
+
   /**
    * One master dof's share in the point of the master surface under a
    * slave node: component `component` of the surface point c(s) contains
@@ -186,6 +188,42 @@ namespace glissade
     outline(const dealii::Point<2> & /*centre*/, const double /*reach*/) const
     {
       return {};
+    }
+
+    /** The surface's abradable coating, if it has one (a casing's). */
+    virtual AbradableCoating *
+    coating()
+    {
+      return nullptr;
+    }
+    virtual const AbradableCoating *
+    coating() const
+    {
+      return nullptr;
+    }
+
+    /**
+     * After a converged step: wears the coating along the path of a point
+     * that yielded on it, from x_start at the step's start to x_end at its
+     * end (the surface as it stood at each). Nothing without a coating.
+     */
+    virtual void
+    wear_along(const dealii::Point<2> & /*x_start*/,
+               const dealii::Point<2> & /*x_end*/)
+    {}
+
+    /** A rigid obstacle's turn now (Obstacle/Rotation); zero otherwise. */
+    virtual double
+    rotation() const
+    {
+      return 0.;
+    }
+
+    /** The coating's removed area (zero without one). */
+    virtual double
+    removed_area() const
+    {
+      return 0.;
     }
   };
 } // namespace glissade
