@@ -52,9 +52,12 @@ namespace glissade
           out << (k > 0 ? ", " : " ") << e.contact_creating_times[k];
         if (e.contact_creating_steps > e.contact_creating_times.size())
           out << ", ...";
-        out << ". The contact laws make each step's work <= 0 (doc/theory.md, "
-               "'Energy'): a curved master's gap is linearised over the "
-               "step; smaller steps shrink what it creates";
+        out << ". The contact laws make each step's work <= 0; it is not "
+               "where a node starts behind the master (pushed out, it gets "
+               "r_n times its penetration) or where a curved master's gap, "
+               "linearised over the step, bends away under a long slide "
+               "(smaller steps shrink what that creates; doc/theory.md, "
+               "'Energy')";
       }
     return out.str();
   }
