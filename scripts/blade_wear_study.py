@@ -225,9 +225,8 @@ def main():
                  label="$\\omega_1(\\Omega)$, Southwell")
     for k in range(2, 7):
         spectra.plot(line, k * line, color="tab:red", linewidth=0.8,
-                     linestyle="--")
-        spectra.text(top / k, top * 0.98, f"{k}$\\Omega$", color="tab:red",
-                     fontsize=8, va="top") if top / k < w.max() else None
+                     linestyle="--", label="k $\\Omega$, k = 2 ... 6 (from "
+                     "below)" if k == 2 else None)
     spectra.set_ylim(0, top)
     spectra.set_xlabel("$\\Omega$ (rad/s)")
     spectra.set_ylabel("frequency (rad/s)")
