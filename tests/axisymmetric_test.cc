@@ -263,19 +263,24 @@ namespace
    * tributary disk, the contact table's pressure); and the largest
    * |p_k - p0 sqrt(1 - r_k^2 / a^2)| / p0 over the nodes inside 0.9 a,
    * with Hertz's p0 and a of the measured load. `reduced_modulus` is E*,
-   * `reduced_radius` R*.
+   * `reduced_radius` R*. Radii and rings are read on the current
+   * positions, or on the reference ones for a small-strain solution (whose
+   * equilibrium holds on the undeformed body, as Hertz's does).
    */
   HertzFigures
   hertz_figures(const ContactPair &pair,
                 const double       reduced_modulus,
                 const double       reduced_radius,
-                HertzFigures      &hertz)
+                HertzFigures      &hertz,
+                const bool         on_reference_positions = false)
   {
     HertzFigures measured{0., 0., 0., 0.};
     double       second_moment = 0.;
     const Body  &body          = pair.slave();
+    const double moved         = on_reference_positions ? 0. : 1.;
     const auto   radius        = [&](const ContactNode &node) {
-      return node.reference_position[0] + body.displacement()(node.dofs[0]);
+      return node.reference_position[0] +
+             moved * body.displacement()(node.dofs[0]);
     };
     for (const ContactNode &node : pair.nodes())
       if (node.active)
@@ -306,10 +311,10 @@ namespace
             const ContactNode *b = by_vertex.at(cell->face(f)->vertex_index(1));
             const Point<2>     xa(radius(*a),
                               a->reference_position[1] +
-                                body.displacement()(a->dofs[1]));
+                                moved * body.displacement()(a->dofs[1]));
             const Point<2>     xb(radius(*b),
                               b->reference_position[1] +
-                                body.displacement()(b->dofs[1]));
+                                moved * body.displacement()(b->dofs[1]));
             const double       L = xa.distance(xb);
             area[a] += 2. * M_PI * L * (2. * xa[0] + xb[0]) / 6.;
             area[b] += 2. * M_PI * L * (2. * xb[0] + xa[0]) / 6.;
@@ -362,6 +367,12 @@ namespace
 // meshes are 0.0025 fine at the contact), a / R about 0.05: Hertz's a
 // and p0 within 1 %, the pressure within 3 % of p0 along the profile
 // inside 0.9 a, and the contact force equal to the support's reaction.
+// At large strain, read on the current positions. The 1 % on p0 is met by
+// two errors of opposite sense: at small strain on the same mesh the axis
+// node reads -1.33 % (its discretisation error at h = 0.0025, which the
+// test axisymmetric_hertz_sphere_axis_node_converges follows to zero on
+// meshes that are not this one), and the finite strain (of order a / R)
+// raises it.
 GLISSADE_TEST(axisymmetric_hertz_sphere_on_rigid_flat)
 {
   const auto   run_       = run("prm/hertz_sphere.prm", {}, "hertz_flat");
@@ -405,4 +416,55 @@ GLISSADE_TEST(axisymmetric_hertz_two_spheres)
         "the two supports' reactions do not balance");
   check(std::abs(pair.total_force()[1] + upper) <= 1e-10 * std::abs(upper),
         "the contact force and the reaction differ");
+}
+
+// Hertz's sphere on meshes that are not glissade's own: the peers
+// benchmark's Gmsh meshes (benchmarks/peers/problems.py hertz_mesh, uniform
+// at h = 0.005 and 0.0025 over the contact, unstructured; on them CalculiX's
+// CAX4 gives the same figures to 0.05 % of p0, doc/performance.md), at
+// small strain, the model Hertz's closed form solves. The contact radius a
+// (from the ring forces' second moment) within 0.1 % of Hertz's on both.
+// The pressure on the axis, the axis node's ring force over the disk its
+// hat function covers, is the discretisation's weakest reading (-3.0 % and
+// -1.3 %, in CalculiX as in glissade): it must converge to Hertz's p0 at
+// first order at least (its error at h / 2 at most 0.6 of that at h), and
+// its Richardson extrapolation 2 p0(h / 2) - p0(h) within 1 %.
+GLISSADE_TEST(axisymmetric_hertz_sphere_axis_node_converges)
+{
+  const double E_star = 200. / (1. - 0.3 * 0.3);
+  double       p0_error[2];
+  const char  *meshes[2] = {"hertz_sphere_gmsh_h0.005.msh",
+                            "hertz_sphere_gmsh_h0.0025.msh"};
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      const auto run_ =
+        run("prm/hertz_sphere.prm",
+            {"Body upper/Mesh/File=" +
+               source_path(std::string("tests/input/") + meshes[k]),
+             "Body upper/Material/Kinematics=small strain"},
+            "hertz_gmsh_" + std::to_string(k));
+      HertzFigures       hertz;
+      const ContactPair &pair = *run_->contact().contact_pairs()[0];
+      const HertzFigures measured =
+        hertz_figures(pair, E_star, 1., hertz, true);
+      std::cout << "  " << meshes[k] << ": a " << std::setprecision(3)
+                << 100. * (measured.contact_radius / hertz.contact_radius - 1.)
+                << " %, p0 on the axis "
+                << 100. * (measured.peak_pressure / hertz.peak_pressure - 1.)
+                << " % from Hertz's" << std::endl;
+      check_relative(measured.contact_radius,
+                     hertz.contact_radius,
+                     1e-3,
+                     "contact radius a");
+      p0_error[k] = measured.peak_pressure / hertz.peak_pressure - 1.;
+    }
+  // (each against Hertz's p0 of its own load: the loads agree to 1e-3)
+  const double extrapolated = 2. * p0_error[1] - p0_error[0];
+  std::cout << "  error ratio " << p0_error[1] / p0_error[0]
+            << ", extrapolated p0 " << std::setprecision(4)
+            << 100. * extrapolated << " % from Hertz's" << std::endl;
+  check(std::abs(p0_error[1]) <= 0.6 * std::abs(p0_error[0]),
+        "the pressure on the axis does not converge at first order");
+  check(std::abs(extrapolated) <= 1e-2,
+        "the extrapolated pressure on the axis is more than 1 % off Hertz's");
 }
