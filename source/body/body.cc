@@ -368,7 +368,15 @@ namespace glissade
 
 
   bool
-  Body::assemble()
+  Body::residual_alone_is_cheap() const
+  {
+    return description.material.kinematics == Kinematics::small_strain;
+  }
+
+
+
+  bool
+  Body::assemble(const bool with_tangent)
   {
     boundary_conditions->make_constraints(dofs,
                                           *element_space,
@@ -376,7 +384,7 @@ namespace glissade
                                           solution,
                                           element_constraints,
                                           linear_system->constraints());
-    linear_system->clear();
+    linear_system->clear(with_tangent);
     unconstrained_residual = 0.;
     problem.clear();
     if (!std::isfinite(solution.l2_norm()))

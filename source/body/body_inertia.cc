@@ -480,9 +480,10 @@ namespace glissade
         const double theta = settings.theta;
         u_predicted        = u_n;
         u_predicted.add(dt, v);
-        v_predicted = v;
-        c_a         = 1. / (theta * theta * dt * dt);
-        c_v         = 1. / (theta * dt);
+        v_predicted     = v;
+        c_a             = 1. / (theta * theta * dt * dt);
+        c_v             = 1. / (theta * dt);
+        predicted_force = apply_mass(v_predicted).l2_norm() / dt;
         return;
       }
     const double beta = settings.beta, gamma = settings.gamma;
@@ -491,8 +492,9 @@ namespace glissade
     u_predicted.add(dt, v, dt * dt * (0.5 - beta), a_smooth);
     v_predicted = v;
     v_predicted.add((1. - gamma) * dt, a_smooth);
-    c_a = 1. / (beta * dt * dt);
-    c_v = gamma / (beta * dt);
+    c_a             = 1. / (beta * dt * dt);
+    c_v             = gamma / (beta * dt);
+    predicted_force = apply_mass(v_predicted).l2_norm() / dt;
   }
 
 
@@ -619,8 +621,12 @@ namespace glissade
     internal += body.applied_loads();
     internal -= inertia_force;
     internal -= viscous;
-    Vector<double> mass_damping = apply_mass(v);
-    mass_damping *= settings.mass_damping;
+    Vector<double> mass_damping(u.size());
+    if (settings.mass_damping != 0.)
+      {
+        mass_damping = apply_mass(v);
+        mass_damping *= settings.mass_damping;
+      }
     // A turning frame's forces, at the velocity of the step's equation (the
     // assembly counted them with the inertia: they are loads here).
     Vector<double> frame_forces(u.size());
@@ -702,7 +708,7 @@ namespace glissade
   double
   BodyInertia::force_scale() const
   {
-    return step > 0. ? apply_mass(v_predicted).l2_norm() / step : 0.;
+    return step > 0. ? predicted_force : 0.;
   }
 
 

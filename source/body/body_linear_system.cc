@@ -57,12 +57,16 @@ namespace glissade
 
 
   void
-  BodyLinearSystem::clear()
+  BodyLinearSystem::clear(const bool with_tangent)
   {
-    if (tangent.empty())
-      tangent.reinit(sparsity);
-    else
-      tangent = 0.;
+    assembling_tangent = with_tangent;
+    if (with_tangent)
+      {
+        if (tangent.empty())
+          tangent.reinit(sparsity);
+        else
+          tangent = 0.;
+      }
     system_rhs = 0.;
   }
 
@@ -82,8 +86,14 @@ namespace glissade
     const Vector<double>                       &cell_rhs,
     const std::vector<types::global_dof_index> &local_dofs)
   {
-    iteration_constraints.distribute_local_to_global(
-      cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
+    if (assembling_tangent)
+      iteration_constraints.distribute_local_to_global(
+        cell_matrix, cell_rhs, local_dofs, tangent, system_rhs);
+    else
+      iteration_constraints.distribute_local_to_global(cell_rhs,
+                                                       local_dofs,
+                                                       system_rhs,
+                                                       cell_matrix);
   }
 
 

@@ -66,8 +66,11 @@ namespace glissade
 
 
 
-  Simulation::Simulation(const SceneDescription &scene)
-    : scene(scene)
+  // (the body reads the member scene, the description's copy: what it
+  // hands on by reference must live as long as the Simulation, and a
+  // description given as a temporary does not)
+  Simulation::Simulation(const SceneDescription &description)
+    : scene(description)
     , timer(std::cout, TimerOutput::never, TimerOutput::wall_times)
     , writes_files(processes::writes_files())
   {
@@ -164,12 +167,29 @@ namespace glissade
                               size,
                               n_dofs());
 
+    // At small strain every body's tangent is the same matrix through the
+    // increment (K_e kept, the inertia's and damping's terms fixed by the
+    // step, pressures on the undeformed body): a correction after the
+    // first is exact with the factorisation the first made. Where each
+    // body is solved alone (the condensed contact method) the iterations
+    // after the first then assemble the residual alone, which tests
+    // convergence and drives that correction: a quasi-static or dynamic
+    // step makes one tangent instead of three (Body::residual_alone_is_
+    // cheap). The tangent is assembled again where a factorisation follows
+    // (a node that went behind the master).
+    bool affine_bodies = true;
+    for (unsigned int b = 0; b < all_bodies.size(); ++b)
+      affine_bodies = affine_bodies &&
+                      all_bodies[b]->residual_alone_is_cheap() &&
+                      !contact_problem->solves_body(b);
+
     bool factorized_last_iteration = false;
     for (unsigned int iteration = 0; iteration <= settings.max_iterations;
          ++iteration)
       {
         double     residual = 0., scale = 0.;
-        const bool admissible = assemble_bodies(residual, scale);
+        const bool with_tangent = !affine_bodies || iteration == 0;
+        const bool admissible = assemble_bodies(residual, scale, with_tangent);
         // (on several processes: each decision below is taken alike by all
         // of them only if they hold the same numbers)
         processes::check_identical(residual, "the Newton residual");
@@ -216,11 +236,23 @@ namespace glissade
         // displacement test is solved with the last factorisation
         // (NewtonCriterion::confirms_only), once per factorisation; the
         // contact's own terms are those of the current state all the same.
+        // Affine bodies keep the first iteration's factorisation through
+        // the increment (exact for them).
         const bool previous_tangent =
-          settings.last_correction_with_previous_tangent &&
-          factorized_last_iteration && newly_active == 0 &&
-          criterion.confirms_only();
+          settings.last_correction_with_previous_tangent && newly_active == 0 &&
+          ((factorized_last_iteration && criterion.confirms_only()) ||
+           (affine_bodies && iteration > 0));
         factorized_last_iteration = !previous_tangent;
+        if (!with_tangent && !previous_tangent)
+          {
+            // (the same state: the same residual, now with its tangent)
+            double again = 0., again_scale = 0.;
+            if (!assemble_bodies(again, again_scale, true))
+              {
+                failure_cause = assembly_failure();
+                return false;
+              }
+          }
 
         // Predictor: the contact-free step of every body; then the contact
         // correction on the condensed system; then the update.
@@ -261,7 +293,9 @@ namespace glissade
 
 
   bool
-  Simulation::assemble_bodies(double &residual, double &scale)
+  Simulation::assemble_bodies(double    &residual,
+                              double    &scale,
+                              const bool with_tangent)
   {
     TimerOutput::Scope scope(timer, timing::assembly);
     // (the last iteration's contact algebra and factorisations' workspace
@@ -281,7 +315,7 @@ namespace glissade
       tasks += Threads::new_task([&, b]() {
         try
           {
-            assembled[b] = all_bodies[b]->assemble();
+            assembled[b] = all_bodies[b]->assemble(with_tangent);
           }
         catch (...)
           {

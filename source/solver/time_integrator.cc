@@ -107,10 +107,11 @@ namespace glissade
       void
       begin_step(const double t_start, const double t) override
       {
+        const double dt = step_length(t_start, t);
         for (const auto &body : bodies)
-          body->inertia()->begin_step(body->displacement(), t - t_start, t);
-        record_start_gaps(t_start, t - t_start);
-        begin_contact_step(t_start, t - t_start);
+          body->inertia()->begin_step(body->displacement(), dt, t);
+        record_start_gaps(t_start, dt);
+        begin_contact_step(t_start, dt);
       }
 
       void
@@ -225,6 +226,40 @@ namespace glissade
             account.kinetic += body->inertia()->kinetic_energy();
             account.strain += strain_energy(*body);
           }
+      }
+
+      /**
+       * The step's length as the load program means it: its stage's
+       * (t_end - t_begin) / n, halved by each cut-back, where t - t_start
+       * is that to round-off. Equal steps then have the same length to the
+       * bit (t - t_start differs in its last bits as t grows: 1e-13 of dt
+       * at t = 3 with dt = 0.005), which keeps the tangent's inertia
+       * terms, 1 / (beta dt^2) M, the same matrix from step to step (a
+       * tangent changed in its last bit is factorised anew), and a run
+       * restarted from a checkpoint takes the same steps as one that was
+       * not interrupted.
+       */
+      double
+      step_length(const double t_start, const double t) const
+      {
+        const double dt     = t - t_start;
+        const auto  &stages = scene.load_program;
+        double       begin  = 0.;
+        for (unsigned int s = 0; s < stages.stage_end_times.size(); ++s)
+          {
+            const double end = stages.stage_end_times[s];
+            if (t <= end + 1e-12 * std::abs(end))
+              {
+                double nominal = (end - begin) / stages.stage_increments[s];
+                for (unsigned int depth = 0; depth <= stages.max_cut_back_depth;
+                     ++depth, nominal *= 0.5)
+                  if (std::abs(dt - nominal) <= 1e-11 * nominal)
+                    return nominal;
+                return dt;
+              }
+            begin = end;
+          }
+        return dt;
       }
 
       EnergyAccount account;

@@ -131,10 +131,21 @@ namespace glissade
      * Assembles system()'s tangent and right-hand side F_ext - F_int (under
      * the Dirichlet data of the current time) and the unconstrained
      * residual. False if the state is not admissible (J <= 0 or a NaN), so
-     * that the caller cuts the step: assembly_problem() says why.
+     * that the caller cuts the step: assembly_problem() says why. Without
+     * the tangent (with_tangent false) the right-hand side and residual
+     * alone, the tangent left as it was (BodyLinearSystem::clear()).
      */
     bool
-    assemble();
+    assemble(const bool with_tangent = true);
+    /**
+     * Whether a residual alone costs much less than a residual with its
+     * tangent: small strain, where each cell's stiffness is kept and its
+     * forces are K_e u_e, and the tangent's cost is that of putting the
+     * cells' matrices together. (At large strain both come from the same
+     * loop over the quadrature points.)
+     */
+    bool
+    residual_alone_is_cheap() const;
     const std::string &
     assembly_problem() const;
 

@@ -259,6 +259,8 @@ namespace glissade
     /** The unit translations along x and y (value dofs at 1). */
     std::array<dealii::Vector<double>, 2> translation;
     double                                step = 0.;
+    /** |M v~| / dt, the step's inertia force scale (begin_step). */
+    double predicted_force = 0.;
     /** The end state's a and v from its u: a = c_a (u - u~) (Newmark), v =
      *  v~ + c_v (u - u~) (both schemes). */
     double c_a = 0., c_v = 0.;

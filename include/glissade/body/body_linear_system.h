@@ -66,9 +66,14 @@ namespace glissade
     /**
      * Tangent and right-hand side to zero, before an assembly (the
      * tangent's entries made again if release_tangent() let them go).
+     * Without the tangent (with_tangent false), the right-hand side alone:
+     * add_cell() then adds the cells' vectors, the cell matrices serving
+     * only the constraints' inhomogeneities, and the tangent is neither
+     * made nor touched (a correction with the last factorisation, or a
+     * residual that only tests convergence, needs no new one).
      */
     void
-    clear();
+    clear(const bool with_tangent = true);
 
     /**
      * Lets the tangent's entries go until the next assembly, once the
@@ -80,7 +85,8 @@ namespace glissade
     void
     release_tangent();
 
-    /** Adds a cell's matrix and right-hand side, through the constraints. */
+    /** Adds a cell's matrix and right-hand side, through the constraints
+     *  (the right-hand side alone after clear(false)). */
     void
     add_cell(const dealii::FullMatrix<double>                   &cell_matrix,
              const dealii::Vector<double>                       &cell_rhs,
@@ -199,10 +205,12 @@ namespace glissade
     dealii::AffineConstraints<double> iteration_constraints;
     dealii::SparsityPattern           sparsity;
     dealii::SparseMatrix<double>      tangent;
-    dealii::Vector<double>            system_rhs;
-    DirectSolver                      factorization;
-    RigidMotionSprings                springs;
-    ContactPort                       port;
+    /** Whether the assembly under way adds to the tangent (clear()). */
+    bool                   assembling_tangent = true;
+    dealii::Vector<double> system_rhs;
+    DirectSolver           factorization;
+    RigidMotionSprings     springs;
+    ContactPort            port;
   };
 
 

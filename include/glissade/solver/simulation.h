@@ -29,7 +29,7 @@ namespace glissade
   class Simulation
   {
   public:
-    explicit Simulation(const SceneDescription &scene);
+    explicit Simulation(const SceneDescription &description);
 
     /**
      * The whole load program, with output and the checkpoints the scene
@@ -123,12 +123,13 @@ namespace glissade
     newton(const double t_start, const double t);
 
     /**
-     * Every body's residual and tangent, one task per body: the residual's
-     * norm over all bodies and the largest force scale; false if an
-     * assembly met an inadmissible state (an inverted element).
+     * Every body's residual and tangent (the residual alone if
+     * with_tangent is false), one task per body: the residual's norm over
+     * all bodies and the largest force scale; false if an assembly met an
+     * inadmissible state (an inverted element).
      */
     bool
-    assemble_bodies(double &residual, double &scale);
+    assemble_bodies(double &residual, double &scale, bool with_tangent = true);
 
     /** What made an assembly fail, for failure_cause. */
     std::string
