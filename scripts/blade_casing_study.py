@@ -19,11 +19,8 @@ measured omega_1. Writes sweep.csv beside the runs.
 """
 import argparse
 import concurrent.futures
-import csv
 import math
 import os
-import subprocess
-import sys
 
 import numpy as np
 
@@ -32,6 +29,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from atomic_png import save_atomically  # noqa: E402
+from scene_run import run_scene  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PRM = os.path.join(HERE, "..", "prm", "blade_casing.prm")
@@ -45,21 +43,7 @@ def euler_bernoulli_omega_1():
 
 
 def run(glissade, directory, settings):
-    command = [glissade, PRM, "--set", f"Output/Directory={directory}",
-               "--set", "Output/VTU interval=0", "--set",
-               "Output/Progress=false"]
-    for setting in settings:
-        command += ["--set", setting]
-    # Several runs side by side: one thread each (BLAS and deal.II's
-    # threads would otherwise fight over the cores).
-    environment = dict(os.environ, OPENBLAS_NUM_THREADS="1",
-                       DEAL_II_NUM_THREADS="1")
-    result = subprocess.run(command, capture_output=True, text=True,
-                            env=environment)
-    if result.returncode != 0:
-        sys.exit(f"blade_casing_study: glissade failed in {directory}:\n"
-                 + result.stdout[-2000:] + result.stderr[-2000:])
-    return list(csv.DictReader(open(os.path.join(directory, "history.csv"))))
+    return run_scene(glissade, PRM, directory, settings, "blade_casing_study")
 
 
 def free_vibration(glissade, output):

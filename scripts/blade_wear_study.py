@@ -33,8 +33,6 @@ import concurrent.futures
 import csv
 import math
 import os
-import subprocess
-import sys
 
 import numpy as np
 
@@ -43,6 +41,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from atomic_png import save_atomically  # noqa: E402
+from scene_run import run_scene  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PRM = os.path.join(HERE, "..", "prm", "blade_casing_wear.prm")
@@ -75,19 +74,7 @@ def spin(omega):
 
 
 def run(glissade, directory, settings):
-    command = [glissade, PRM, "--set", f"Output/Directory={directory}",
-               "--set", "Output/VTU interval=0", "--set",
-               "Output/Progress=false"]
-    for setting in settings:
-        command += ["--set", setting]
-    environment = dict(os.environ, OPENBLAS_NUM_THREADS="1",
-                       DEAL_II_NUM_THREADS="1")
-    result = subprocess.run(command, capture_output=True, text=True,
-                            env=environment)
-    if result.returncode != 0:
-        sys.exit(f"blade_wear_study: glissade failed in {directory}:\n"
-                 + result.stdout[-2000:] + result.stderr[-2000:])
-    return list(csv.DictReader(open(os.path.join(directory, "history.csv"))))
+    return run_scene(glissade, PRM, directory, settings, "blade_wear_study")
 
 
 def spun_up_radius(glissade, output, omega):

@@ -29,20 +29,6 @@ using namespace glissade_tests;
 
 namespace
 {
-  /** The largest contact work of a step over a run, as it goes. */
-  struct ContactWorkWatch
-  {
-    double largest = 0., previous = 0., energies = 0.;
-    void
-    record(const EnergyAccount &e)
-    {
-      largest  = std::max(largest, e.contact_work - previous);
-      previous = e.contact_work;
-      energies =
-        std::max({energies, e.kinetic + e.strain, std::abs(e.work_of_loads)});
-    }
-  };
-
   /** k^2 = I / (m R^2) of a disk's mass as the scheme holds it. */
   double
   radius_of_gyration_squared(const Body &disk, const double radius)

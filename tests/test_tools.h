@@ -4,6 +4,7 @@
 // of figures against references, and scenes and closed forms that several
 // tests use.
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -31,6 +32,25 @@ namespace glissade_tests
               << " (tolerance " << tolerance << ")" << std::endl;
     check(deviation <= tolerance, what + " is out of tolerance");
   }
+
+  /**
+   * The largest contact work of a step over a dynamic run, as it goes
+   * (record() the EnergyAccount after each step), and the largest of the
+   * energies it is to be compared with.
+   */
+  struct ContactWorkWatch
+  {
+    double largest = 0., previous = 0., energies = 0.;
+    template <class EnergyAccount>
+    void
+    record(const EnergyAccount &e)
+    {
+      largest  = std::max(largest, e.contact_work - previous);
+      previous = e.contact_work;
+      energies =
+        std::max({energies, e.kinetic + e.strain, std::abs(e.work_of_loads)});
+    }
+  };
 
   /**
    * Two runs that solve the same equations by two linear-algebra paths (or

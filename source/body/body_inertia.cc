@@ -269,13 +269,20 @@ namespace glissade
 
 
 
+  Vector<double>
+  BodyInertia::unit_rotation(const Body &body, const Point<2> &centre) const
+  {
+    return field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
+      return c == 0 ? -(X[1] - centre[1]) : X[0] - centre[0];
+    });
+  }
+
+
+
   double
   BodyInertia::moment_of_inertia(const Body &body, const Point<2> &centre) const
   {
-    const Vector<double> w =
-      field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
-        return c == 0 ? -(X[1] - centre[1]) : X[0] - centre[0];
-      });
+    const Vector<double> w = unit_rotation(body, centre);
     return apply_mass(w) * w;
   }
 
@@ -284,11 +291,7 @@ namespace glissade
   double
   BodyInertia::angular_momentum(const Body &body, const Point<2> &centre) const
   {
-    const Vector<double> w =
-      field_at_dofs(body, [&](const Point<2> &X, const unsigned int c) {
-        return c == 0 ? -(X[1] - centre[1]) : X[0] - centre[0];
-      });
-    return apply_mass(w) * v;
+    return apply_mass(unit_rotation(body, centre)) * v;
   }
 
 

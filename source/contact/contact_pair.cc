@@ -78,7 +78,7 @@ namespace glissade
                   slave.space());
                 slave_nodes.push_back(node);
               }
-            slave_faces.push_back(face);
+            faces.push_back(face);
           }
 
     slave_outward_normal =
@@ -103,35 +103,43 @@ namespace glissade
 
 
 
-  double
-  ContactPair::normal_force_cap(const ContactNode &node) const
+  std::vector<double>
+  ContactPair::tributary_areas() const
+  {
+    const unsigned int    n = slave_nodes.size();
+    std::vector<Point<2>> x(n);
+    for (unsigned int k = 0; k < n; ++k)
+      x[k] = slave_nodes[k].reference_position +
+             Tensor<1, 2>({slave_body.displacement()(slave_nodes[k].dofs[0]),
+                           slave_body.displacement()(slave_nodes[k].dofs[1])});
+    const bool ring = slave_body.hypothesis() == PlaneHypothesis::axisymmetric;
+    std::vector<double> area(n, 0.);
+    for (const auto &[a, b] : faces)
+      {
+        const double length = x[a].distance(x[b]);
+        for (const auto &[k, other] : {std::make_pair(a, b), {b, a}})
+          area[k] += ring ?
+                       2. * M_PI * length * (2. * x[k][0] + x[other][0]) / 6. :
+                       0.5 * length * slave_body.thickness();
+      }
+    return area;
+  }
+
+
+
+  std::vector<double>
+  ContactPair::normal_force_caps() const
   {
     const AbradableCoating *coating = master_surface->coating();
     if (coating == nullptr)
-      return std::numeric_limits<double>::infinity();
-    // The node's tributary area, half of each adjacent slave face now (a
-    // ring 2 pi x_r ds for a body of revolution), times the yield pressure:
-    // the force the local problem's reaction may reach, which the outputs
+      return std::vector<double>(slave_nodes.size(),
+                                 std::numeric_limits<double>::infinity());
+    // The force the local problem's reaction may reach, which the outputs
     // report times their scale.
-    const unsigned int k        = &node - slave_nodes.data();
-    const auto         position = [&](const unsigned int j) {
-      const ContactNode &n = slave_nodes[j];
-      return n.reference_position +
-             Tensor<1, 2>({slave_body.displacement()(n.dofs[0]),
-                           slave_body.displacement()(n.dofs[1])});
-    };
-    const bool ring = slave_body.hypothesis() == PlaneHypothesis::axisymmetric;
-    double     area = 0.;
-    for (const auto &face : slave_faces)
-      for (const unsigned int side : {0u, 1u})
-        if (face[side] == k)
-          {
-            const Point<2> x = position(k), other = position(face[1 - side]);
-            const double   length = x.distance(other);
-            area += ring ? 2. * M_PI * length * (2. * x[0] + other[0]) / 6. :
-                           0.5 * length * slave_body.thickness();
-          }
-    return coating->yield_pressure() * area / reported_force_scale;
+    std::vector<double> cap = tributary_areas();
+    for (double &c : cap)
+      c *= coating->yield_pressure() / reported_force_scale;
+    return cap;
   }
 
 
@@ -141,9 +149,10 @@ namespace glissade
   {
     if (master_surface->coating() == nullptr)
       return;
-    for (const ContactNode &node : slave_nodes)
-      if (node.active &&
-          node.reaction[1] >= normal_force_cap(node) * (1. - 1e-9))
+    const std::vector<double> cap = normal_force_caps();
+    for (unsigned int k = 0; k < slave_nodes.size(); ++k)
+      if (const ContactNode &node = slave_nodes[k];
+          node.active && node.reaction[1] >= cap[k] * (1. - 1e-9))
         {
           Point<2> start = node.reference_position, end = start;
           for (unsigned int d = 0; d < 2; ++d)

@@ -34,20 +34,8 @@ namespace glissade
 
   ContactSurfaceOutput::ContactSurfaceOutput(const ContactPair &pair)
     : pair(pair)
-  {
-    const Body                          &slave = pair.slave();
-    const auto                          &ids   = pair.slave_boundary_ids();
-    std::map<unsigned int, unsigned int> node_of_vertex;
-    for (unsigned int k = 0; k < pair.nodes().size(); ++k)
-      node_of_vertex[pair.nodes()[k].vertex] = k;
-    for (const auto &cell : slave.triangulation().active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            ids.count(cell->face(f)->boundary_id()) > 0)
-          faces.push_back(
-            {{node_of_vertex.at(cell->face(f)->vertex_index(0)),
-              node_of_vertex.at(cell->face(f)->vertex_index(1))}});
-  }
+    , faces(pair.slave_faces())
+  {}
 
 
 
@@ -63,30 +51,20 @@ namespace glissade
     const unsigned int n     = nodes.size();
 
     // Current positions, and the tributary length: half of each adjacent
-    // slave face.
+    // slave face; the tributary area (ContactPair::tributary_areas()).
     std::vector<Point<2>> x(n);
     for (unsigned int k = 0; k < n; ++k)
       x[k] = nodes[k].reference_position +
              Tensor<1, 2>({slave.displacement()(nodes[k].dofs[0]),
                            slave.displacement()(nodes[k].dofs[1])});
-    // The tributary area is the integral of the node's hat function over
-    // the current adjacent faces, so that a uniform pressure's nodal
-    // forces divided by it give the pressure back: thickness times half
-    // of each face, or for a body of revolution the rings 2 pi x_r ds,
-    // 2 pi L (2 x_k + x_other) / 6 per face (forces are for the full
-    // turn).
-    std::vector<double> length(n, 0.), area(n, 0.);
-    const bool ring = slave.hypothesis() == PlaneHypothesis::axisymmetric;
+    std::vector<double> length(n, 0.);
     for (const auto &[a, b] : faces)
       {
         const double face = x[a].distance(x[b]);
         length[a] += 0.5 * face;
         length[b] += 0.5 * face;
-        for (const auto &[k, other] : {std::make_pair(a, b), {b, a}})
-          area[k] += ring ?
-                       2. * M_PI * face * (2. * x[k][0] + x[other][0]) / 6. :
-                       0.5 * face * slave.thickness();
       }
+    const std::vector<double> area = pair.tributary_areas();
     const auto per_area = [&](const unsigned int k, const double force) {
       return area[k] > 0. ? force / area[k] : 0.;
     };

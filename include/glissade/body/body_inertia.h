@@ -243,6 +243,10 @@ namespace glissade
                   const std::function<double(const dealii::Point<2> &,
                                              unsigned int)> &field) const;
 
+    /** The velocity field e_3 x (X - centre) of a unit rotation. */
+    dealii::Vector<double>
+    unit_rotation(const Body &body, const dealii::Point<2> &centre) const;
+
     /** M x, the mass applied to a global vector. */
     dealii::Vector<double>
     apply_mass(const dealii::Vector<double> &x) const;

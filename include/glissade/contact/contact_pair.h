@@ -195,13 +195,31 @@ namespace glissade
     std::array<dealii::Vector<double>, 2>
     contact_forces() const;
 
+    /** The slave faces, as pairs of indices into nodes(). */
+    const std::vector<std::array<unsigned int, 2>> &
+    slave_faces() const
+    {
+      return faces;
+    }
+
     /**
-     * The cap on a slave node's normal reaction in the local problem: its
-     * tributary area times an abradable coating's yield pressure (over the
-     * reported scale); infinity without a coating.
+     * Each slave node's tributary area in the current configuration: the
+     * integral of its hat function over its adjacent faces, so that the
+     * nodal forces of a uniform pressure divided by it give the pressure
+     * back (thickness times half of each face; for a body of revolution
+     * the rings 2 pi L (2 x_k + x_other) / 6 of each face, forces being
+     * for the full turn).
      */
-    double
-    normal_force_cap(const ContactNode &node) const;
+    std::vector<double>
+    tributary_areas() const;
+
+    /**
+     * The cap on each slave node's normal reaction in the local problem:
+     * its tributary area times an abradable coating's yield pressure (over
+     * the reported scale); infinity without a coating.
+     */
+    std::vector<double>
+    normal_force_caps() const;
 
     /**
      * After a converged step: the coating worn along the paths of the
@@ -232,7 +250,7 @@ namespace glissade
   private:
     double reported_force_scale = 1.;
     /** The slave faces, as indices into the nodes. */
-    std::vector<std::array<unsigned int, 2>> slave_faces;
+    std::vector<std::array<unsigned int, 2>> faces;
 
     /**
      * Projects one slave node at the current state and linearises it;

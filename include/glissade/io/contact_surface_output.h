@@ -41,6 +41,6 @@ namespace glissade
   private:
     const ContactPair &pair;
     /** The slave faces as pairs of indices into pair.nodes(). */
-    std::vector<std::array<unsigned int, 2>> faces;
+    const std::vector<std::array<unsigned int, 2>> &faces;
   };
 } // namespace glissade

@@ -209,14 +209,15 @@ namespace glissade
           {body_index(&pair->slave()),
            pair->master() ? body_index(pair->master()) :
                             numbers::invalid_unsigned_int}};
-        for (auto &node : pair->nodes())
-          if (node.active)
+        const std::vector<double> cap = pair->normal_force_caps();
+        for (unsigned int k = 0; k < pair->nodes().size(); ++k)
+          if (ContactNode &node = pair->nodes()[k]; node.active)
             {
               const ContactLinearization &l = node.linearization;
               active.push_back(&node);
               nodes.friction.push_back(
                 cone_slope(pair->settings().friction, l.vertex_cone));
-              nodes.normal_cap.push_back(pair->normal_force_cap(node));
+              nodes.normal_cap.push_back(cap[k]);
               nodes.initial.push_back(
                 {{l.slip + node.law_shift[0], l.gap + node.law_shift[1]}});
               nodes.forces.push_back({&l.tangential_force, b});
