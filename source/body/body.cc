@@ -242,6 +242,7 @@ namespace glissade
       where);
 
     element_space = ElementSpaceRegistry::create(description.element_space);
+    evaluators    = std::make_unique<EvaluatorPool>(*element_space);
     const bool axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
     if (axisymmetric)
@@ -406,7 +407,7 @@ namespace glissade
     Vector<double>     internal_forces(dofs.n_dofs());
     Vector<double>     viscous_forces(inertia_terms ? dofs.n_dofs() : 0);
     bool               admissible         = true;
-    const auto         boundary_evaluator = element_space->create_evaluator();
+    const auto         boundary_evaluator = evaluators->borrow();
     const unsigned int n_local            = cell_integration->dofs_per_cell();
     const auto         integrate =
       [&](const auto &cell_or_position, Scratch &scratch, Contribution &data) {
@@ -425,7 +426,7 @@ namespace glissade
                       dofs.end(),
                       integrate,
                       add,
-                      Scratch(*element_space, n_local),
+                      Scratch(*evaluators, n_local),
                       Contribution(n_local));
     else
       {
@@ -435,7 +436,7 @@ namespace glissade
                         own_cells().end(),
                         integrate,
                         add,
-                        Scratch(*element_space, n_local),
+                        Scratch(*evaluators, n_local),
                         Contribution(n_local));
         linear_system->sum_right_hand_side_over_processes();
         processes::sum(internal_forces.begin(), internal_forces.size());

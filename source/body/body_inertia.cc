@@ -140,6 +140,26 @@ namespace glissade
                 m(i, i) = without_mass[i] ? 0. : m(i, i) * (1. + moved / kept);
           }
       }
+    // The cells' masses as one sparse matrix, their non-zero entries
+    // alone (a lumped mass is diagonal): products with M are a step's
+    // most frequent operation after the assembly.
+    {
+      DynamicSparsityPattern pattern(body.n_dofs());
+      for (unsigned int c = 0; c < cell_dofs.size(); ++c)
+        for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
+          for (unsigned int j = 0; j < cell_dofs[c].size(); ++j)
+            if (cell_mass[c](i, j) != 0.)
+              pattern.add(cell_dofs[c][i], cell_dofs[c][j]);
+      mass_sparsity.copy_from(pattern);
+      mass_matrix.reinit(mass_sparsity);
+      for (unsigned int c = 0; c < cell_dofs.size(); ++c)
+        for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
+          for (unsigned int j = 0; j < cell_dofs[c].size(); ++j)
+            if (cell_mass[c](i, j) != 0.)
+              mass_matrix.add(cell_dofs[c][i],
+                              cell_dofs[c][j],
+                              cell_mass[c](i, j));
+    }
     v.reinit(body.n_dofs());
     a.reinit(body.n_dofs());
     old_forces.reinit(body.n_dofs());
@@ -506,8 +526,9 @@ namespace glissade
   BodyInertia::add_cell_terms(const unsigned int                          cell,
                               const std::vector<types::global_dof_index> &dofs,
                               const Vector<double>                       &u,
-                              FullMatrix<double> &cell_matrix,
-                              Vector<double>     &cell_rhs) const
+                              FullMatrix<double>  &cell_matrix,
+                              Vector<double>      &cell_rhs,
+                              std::vector<double> &work) const
   {
     // (no step yet: the assembly of the initial state, whose residual
     // gives the initial acceleration)
@@ -528,16 +549,17 @@ namespace glissade
     const FullMatrix<double> &m   = cell_mass[cell];
     const unsigned int        n   = dofs.size();
     // M (a(u) + a_M v(u)) = M ((c_a + a_M c_v) (u - u~) + a_M v~)
-    Vector<double> x(n);
+    const double factor = c_a + a_M * c_v;
+    work.resize(n);
     for (unsigned int j = 0; j < n; ++j)
-      x(j) = (c_a + a_M * c_v) * (u(dofs[j]) - u_predicted(dofs[j])) +
-             a_M * v_predicted(dofs[j]);
+      work[j] = factor * (u(dofs[j]) - u_predicted(dofs[j])) +
+                a_M * v_predicted(dofs[j]);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         if (m(i, j) != 0.)
           {
-            cell_rhs(i) -= m(i, j) * x(j);
-            cell_matrix(i, j) += (c_a + a_M * c_v) * m(i, j);
+            cell_rhs(i) -= m(i, j) * work[j];
+            cell_matrix(i, j) += factor * m(i, j);
           }
     if (frame)
       {
@@ -696,10 +718,7 @@ namespace glissade
   BodyInertia::apply_mass(const Vector<double> &x) const
   {
     Vector<double> y(x.size());
-    for (unsigned int c = 0; c < cell_dofs.size(); ++c)
-      for (unsigned int i = 0; i < cell_dofs[c].size(); ++i)
-        for (unsigned int j = 0; j < cell_dofs[c].size(); ++j)
-          y(cell_dofs[c][i]) += cell_mass[c](i, j) * x(cell_dofs[c][j]);
+    mass_matrix.vmult(y, x);
     // (every process calls it: the processes' shares summed)
     if (shared_out)
       processes::sum(y.begin(), y.size());

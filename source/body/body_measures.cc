@@ -181,10 +181,19 @@ namespace glissade
       {
         if (shared_out && !body.is_own_cell(cell))
           continue;
-        evaluator->reinit(cell);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < local.size(); ++i)
           values[i] = u(local[i]);
+        // (small strain: 1/2 u_e . K_e u_e, the same quadrature without
+        // evaluating the shape functions again)
+        if (const FullMatrix<double> *K = body.kept_cell_stiffness(cell))
+          {
+            for (unsigned int i = 0; i < local.size(); ++i)
+              for (unsigned int j = 0; j < local.size(); ++j)
+                energy += 0.5 * values[i] * (*K)(i, j) * values[j];
+            continue;
+          }
+        evaluator->reinit(cell);
         const Material &material =
           body.materials().of_cell(cell->material_id());
         for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)

@@ -11,10 +11,10 @@ namespace glissade
 {
   using namespace dealii;
 
-  CellIntegration::Scratch::Scratch(const ElementSpace &space,
-                                    const unsigned int  n_local)
-    : space(space)
-    , evaluator(space.create_evaluator())
+  CellIntegration::Scratch::Scratch(EvaluatorPool     &evaluators,
+                                    const unsigned int n_local)
+    : evaluators(evaluators)
+    , evaluator(evaluators.borrow())
     , grad(n_local)
     , dE(n_local)
     , D_dE(n_local)
@@ -28,7 +28,7 @@ namespace glissade
 
 
   CellIntegration::Scratch::Scratch(const Scratch &other)
-    : Scratch(other.space, other.grad.size())
+    : Scratch(other.evaluators, other.grad.size())
   {}
 
 
@@ -112,8 +112,12 @@ namespace glissade
     // A dynamic scheme's inertia (BodyInertia: read only, so shared by
     // the threads).
     if (inertia)
-      inertia->add_cell_terms(
-        cell->active_cell_index(), data.local_dofs, u, cell_matrix, cell_rhs);
+      inertia->add_cell_terms(cell->active_cell_index(),
+                              data.local_dofs,
+                              u,
+                              cell_matrix,
+                              cell_rhs,
+                              scratch.inertia_work);
   }
 
 
@@ -282,8 +286,11 @@ namespace glissade
       kept = cell_matrix;
     else
       {
-        // F_int = K_e u_e, exactly (linear elasticity).
-        cell_matrix = kept;
+        // F_int = K_e u_e, exactly (linear elasticity). (Entry by entry:
+        // FullMatrix's assignment allocates its storage anew.)
+        for (unsigned int i = 0; i < n_local; ++i)
+          for (unsigned int j = 0; j < n_local; ++j)
+            cell_matrix(i, j) = kept(i, j);
         for (unsigned int i = 0; i < n_local; ++i)
           scratch.cell_values(i) = u(data.local_dofs[i]);
         kept.vmult(scratch.cell_product, scratch.cell_values);

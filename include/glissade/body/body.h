@@ -12,6 +12,7 @@
 #include <glissade/body/distributed_loads.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/fe/element_space.h>
+#include <glissade/fe/evaluator_pool.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
 
@@ -103,6 +104,14 @@ namespace glissade
     n_dofs() const;
     const BodyMaterials &
     materials() const;
+    /** Small strain: a cell's kept stiffness K_e (CellIntegration), or
+     *  null. */
+    const dealii::FullMatrix<double> *
+    kept_cell_stiffness(
+      const dealii::DoFHandler<2>::active_cell_iterator &cell) const
+    {
+      return cell_integration->kept_stiffness(cell->active_cell_index());
+    }
     /** Plane strain, plane stress or axisymmetric (Material/Hypothesis). */
     PlaneHypothesis
     hypothesis() const;
@@ -224,14 +233,16 @@ namespace glissade
     BoundaryNames                             named_boundaries;
     double                                    reference_size = 1.;
     std::unique_ptr<ElementSpace>             element_space;
-    dealii::DoFHandler<2>                     dofs;
-    dealii::AffineConstraints<double>         element_constraints;
-    std::unique_ptr<BodyMaterials>            materials_of_cells;
-    std::unique_ptr<BoundaryConditions>       boundary_conditions;
-    std::unique_ptr<DistributedLoads>         loads;
-    std::unique_ptr<CellIntegration>          cell_integration;
-    std::unique_ptr<BodyLinearSystem>         linear_system;
-    std::unique_ptr<BodyInertia>              inertia_terms;
+    // (after the space: its evaluators point at its element)
+    std::unique_ptr<EvaluatorPool>      evaluators;
+    dealii::DoFHandler<2>               dofs;
+    dealii::AffineConstraints<double>   element_constraints;
+    std::unique_ptr<BodyMaterials>      materials_of_cells;
+    std::unique_ptr<BoundaryConditions> boundary_conditions;
+    std::unique_ptr<DistributedLoads>   loads;
+    std::unique_ptr<CellIntegration>    cell_integration;
+    std::unique_ptr<BodyLinearSystem>   linear_system;
+    std::unique_ptr<BodyInertia>        inertia_terms;
 
     double                 time = 0.;
     std::string            problem;

@@ -102,14 +102,16 @@ namespace glissade
     /**
      * The inertia terms of one cell at the displacement u: the cell's
      * residual loses M (a(u) + a_M v(u)) and its tangent gains (1 / (beta
-     * dt^2) + a_M gamma / (beta dt)) M.
+     * dt^2) + a_M gamma / (beta dt)) M. `work` is the caller's room for
+     * the cell's accelerations (no allocation per cell).
      */
     void
     add_cell_terms(const unsigned int                                  cell,
                    const std::vector<dealii::types::global_dof_index> &dofs,
                    const dealii::Vector<double>                       &u,
                    dealii::FullMatrix<double> &cell_matrix,
-                   dealii::Vector<double>     &cell_rhs) const;
+                   dealii::Vector<double>     &cell_rhs,
+                   std::vector<double>        &work) const;
 
     /** Stiffness damping's a_K (Time integration/Stiffness damping). */
     double
@@ -255,8 +257,11 @@ namespace glissade
     std::vector<std::vector<dealii::types::global_dof_index>> cell_dofs;
     /** Each cell's mass matrix (diagonal when lumped or redistributed). */
     std::vector<dealii::FullMatrix<double>> cell_mass;
-    dealii::Vector<double>                  v, a;
-    dealii::Vector<double>                  u_start, u_predicted, v_predicted;
+    /** The same masses summed into one matrix (apply_mass). */
+    dealii::SparsityPattern      mass_sparsity;
+    dealii::SparseMatrix<double> mass_matrix;
+    dealii::Vector<double>       v, a;
+    dealii::Vector<double>       u_start, u_predicted, v_predicted;
     /** The body's mesh is shared out over the processes: the masses are
      *  this process's cells', and products with M are summed. */
     bool shared_out = false;

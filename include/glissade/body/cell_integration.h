@@ -10,6 +10,7 @@
 #include <glissade/description/scene_description.h>
 #include <glissade/fe/cell_evaluator.h>
 #include <glissade/fe/element_space.h>
+#include <glissade/fe/evaluator_pool.h>
 #include <glissade/material/body_materials.h>
 
 #include <memory>
@@ -40,11 +41,11 @@ namespace glissade
      */
     struct Scratch
     {
-      Scratch(const ElementSpace &space, const unsigned int n_local);
+      Scratch(EvaluatorPool &evaluators, const unsigned int n_local);
       Scratch(const Scratch &other);
 
-      const ElementSpace                        &space;
-      std::unique_ptr<CellEvaluator>             evaluator;
+      EvaluatorPool                             &evaluators;
+      BorrowedEvaluator                          evaluator;
       std::vector<dealii::Tensor<1, 2>>          grad;
       std::vector<dealii::SymmetricTensor<2, 2>> dE, D_dE;
       // (axisymmetric: each dof's hoop strain variation dE_33 and the hoop
@@ -55,6 +56,8 @@ namespace glissade
       // (small strain: the cell's displacement or velocity dofs, and K_e
       // times them)
       dealii::Vector<double> cell_values, cell_product;
+      // (a dynamic body: the cell's accelerations, BodyInertia)
+      std::vector<double> inertia_work;
     };
 
     /** What one cell hands to the copier, which adds it to the body. */
@@ -99,6 +102,20 @@ namespace glissade
               const BodyInertia *inertia,
               Scratch           &scratch,
               CellContribution  &data);
+
+    /**
+     * Small strain: the stiffness K_e of the cell with this active index,
+     * once an assembly has integrated it; null at large strain or before.
+     * 1/2 u_e . K_e u_e is then the cell's strain energy, the quadrature
+     * of 1/2 eps : D_0 : eps with the same rule.
+     */
+    const dealii::FullMatrix<double> *
+    kept_stiffness(const unsigned int active_cell_index) const
+    {
+      if (!small_strain || kept_linear_stiffness[active_cell_index].empty())
+        return nullptr;
+      return &kept_linear_stiffness[active_cell_index];
+    }
 
   private:
     /** Stiffness damping's a_K, dv/du and the material at rest (D_0). */

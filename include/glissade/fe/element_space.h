@@ -10,8 +10,11 @@
 #include <glissade/fe/cell_evaluator.h>
 
 #include <array>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace glissade
@@ -107,5 +110,26 @@ namespace glissade
                        const std::array<bool, 2>       &components,
                        const bool                       all_derivatives,
                        std::vector<DofRelation>        &relations) const;
+
+  private:
+    /**
+     * The dofs of one component on one boundary and the points their
+     * values are interpolated at, found once (a loop over every cell) and
+     * kept: boundary_relations runs at every assembly.
+     */
+    using BoundarySupport =
+      std::vector<std::pair<dealii::types::global_dof_index, dealii::Point<2>>>;
+    const BoundarySupport &
+    boundary_support(const dealii::DoFHandler<2>     &dof_handler,
+                     const dealii::types::boundary_id boundary,
+                     const unsigned int               component) const;
+
+    mutable std::map<std::tuple<const dealii::DoFHandler<2> *,
+                                dealii::types::global_dof_index,
+                                dealii::types::boundary_id,
+                                unsigned int>,
+                     BoundarySupport>
+                       boundary_support_cache;
+    mutable std::mutex boundary_support_mutex;
   };
 } // namespace glissade
