@@ -3,7 +3,7 @@
 // (tests/input/block_on_rough_floor.prm, block_on_rough_slab.prm):
 // - a block on a 10-degree slope sticks where mu > tan(a): its
 //   displacement along the floor stays below 1e-3 of a free slide's, its
-//   momentum (a vibration) below a step's friction impulse and not growing;
+//   momentum (a vibration) below 1e-3 of a free slide's and not growing;
 // - it slides where mu < tan(a): its momentum is m g (sin a - mu cos a) t
 //   within 0.5 %, and p + mu p_n is that at every step to a constant (the
 //   friction is mu times the normal impulse, vibration and all), which
@@ -104,7 +104,7 @@ namespace
                     const double                    distance_tolerance = 0.005)
   {
     const double pi = numbers::PI, a = 10. * pi / 180., g = 1., m = 0.5, T = 2.,
-                 dt = 0.01, mu_stick = 0.3;
+                 dt                     = 0.01;
     const double      free_momentum     = m * g * std::sin(a) * T;
     const double      free_displacement = 0.5 * g * std::sin(a) * T * T;
     const std::string where             = label + " on the " + master;
@@ -126,9 +126,11 @@ namespace
                 << " (free slide " << free_displacement << ")" << std::endl;
       // (its momentum is its vibration from the weight put on at t = 0,
       // which the step, longer than the block's periods, turns into a mode
-      // near the step's Nyquist frequency: below a step's friction
-      // impulse, where a slide would reach m g (sin a - mu cos a) t)
-      check(std::max(p_first, p_second) <= mu_stick * m * g * std::cos(a) * dt,
+      // near the step's Nyquist frequency; a node that rang away from the
+      // floor and came back behind it had tilted the block, which friction
+      // then held: 6e-3 of a free slide's momentum under Moreau-Jean with
+      // the mass kept)
+      check(std::max(p_first, p_second) <= 1e-3 * free_momentum,
             where + ": the sticking block moves");
       check(p_second <= std::max(1.5 * p_first, 1e-6 * free_momentum),
             where + ": the sticking block's momentum grows");

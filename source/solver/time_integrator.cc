@@ -306,9 +306,8 @@ namespace glissade
      * and that do not move away. With U = H v_n the relative velocity at
      * the start, the end velocity's law is the position law shifted: U_N,n+1
      * >= 0 is g(u) - g_n - (1 - theta) dt U_N,n >= 0 to first order.
-     * Coulomb's law holds on the step's slip. A node that does not close is
-     * out of the step (it may go behind the master within it, by less than
-     * dt times its speed; the next step stops it).
+     * Coulomb's law holds on the step's slip. A node that does not close
+     * keeps Signorini's law on its end position, g >= min(g_n, 0).
      *
      * The velocity law needs the contact nodes' mass (Contact mass =
      * kept): a node without mass has no velocity of its own (the scheme's
@@ -377,9 +376,18 @@ namespace glissade
                   }
                 if (start_gap + (1. - theta) * dt * U_N > 0.)
                   {
-                    node.active   = false;
-                    node.reaction = {{0., 0.}};
-                    node.status   = BiPotentialSolver::NodeStatus::open;
+                    // A node that does not close by the theta point keeps
+                    // Signorini's law on its end position, g >= min(g_n,
+                    // 0): it may open, and it may close within the step
+                    // but not pass the master (or, behind it, go further).
+                    // Its impulse's work on the step's motion, P (g -
+                    // g_n), is then -P g_n <= 0 or zero. (Left out of the
+                    // step, as Moreau's index set leaves it, a node whose
+                    // start velocity rang away from the master at theta =
+                    // 1/2 went behind it by dt times its speed and stayed
+                    // there: a block resting on a rough floor tilted by
+                    // 1e-4 and was held so by friction.)
+                    node.law_shift = {{0., -std::min(start_gap, 0.)}};
                     continue;
                   }
                 // The impulse works on the step's mean velocity, theta
