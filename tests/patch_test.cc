@@ -175,7 +175,9 @@ namespace
     // Gauss rule richer than the assembly's, against u = (F - I) X.
     const bool                  plane_stress = (hypothesis == "plane stress");
     const SymmetricTensor<2, 3> exact_sigma =
-      law == "neo-Hookean"   ? neo_hookean_cauchy(F, plane_stress) :
+      // (Law = energy's default formula is the neo-Hookean energy)
+      law == "neo-Hookean" || law == "energy" ?
+        neo_hookean_cauchy(F, plane_stress) :
       law == "Mooney-Rivlin" ? mooney_rivlin_cauchy(F) :
                                svk_plane_stress_cauchy(F);
     const auto          evaluator = body.space().create_evaluator(5);
@@ -283,4 +285,22 @@ GLISSADE_TEST(patch_ring_large_strain_mooney_rivlin_q2)
 {
   run_patch(
     "q2", large_strain_gradient(), "Mooney-Rivlin", "plane strain", 4, true);
+}
+
+// A law given by its strain energy alone (Law = energy, its default formula
+// the neo-Hookean energy; energy_law_test.cc): the neo-Hookean closed form,
+// plane strain on a distorted Q1 mesh and on a Q2 ring, plane stress on Q1.
+GLISSADE_TEST(patch_large_strain_energy_law_q1)
+{
+  run_patch("q1", large_strain_gradient(), "energy", "plane strain", 4);
+}
+
+GLISSADE_TEST(patch_ring_large_strain_energy_law_q2)
+{
+  run_patch("q2", large_strain_gradient(), "energy", "plane strain", 4, true);
+}
+
+GLISSADE_TEST(patch_large_strain_plane_stress_energy_law_q1)
+{
+  run_patch("q1", large_strain_gradient(), "energy", "plane stress", 4);
 }

@@ -17,6 +17,12 @@ namespace glissade
   declare_mooney_rivlin_parameters(ParameterHandler &);
   std::any
   parse_mooney_rivlin_parameters(const ParameterHandler &, const std::string &);
+  std::unique_ptr<HyperelasticLaw>
+  make_energy_formula_law(double lambda, double mu, const std::any &);
+  void
+  declare_energy_law_parameters(ParameterHandler &);
+  std::any
+  parse_energy_law_parameters(const ParameterHandler &, const std::string &);
 
 
 
@@ -37,6 +43,12 @@ namespace glissade
        make_mooney_rivlin,
        declare_mooney_rivlin_parameters,
        parse_mooney_rivlin_parameters},
+      {"energy",
+       "W(C) given as a formula (Strain energy), its stress and tangent by "
+       "automatic differentiation",
+       make_energy_formula_law,
+       declare_energy_law_parameters,
+       parse_energy_law_parameters},
     };
     return list;
   }
