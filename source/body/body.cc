@@ -41,23 +41,24 @@ namespace glissade
     }
 
     /**
-     * An axisymmetric body: refuses a Hermite space and a mesh with a
-     * vertex at x = r < 0, naming the cell.
+     * An axisymmetric body: refuses a space that cannot take one and a mesh
+     * with a vertex at x = r < 0, naming the cell.
      */
     void
-    check_axisymmetric_body(const BodyDescription  &description,
+    check_axisymmetric_body(const ElementSpace     &space,
                             const Triangulation<2> &mesh,
                             const double            reference_size,
                             const std::string      &where)
     {
-      if (description.element_space == "hermite")
-        throw InputError(
-          where + "/Material/Hypothesis",
-          "axisymmetric bodies are not implemented for Hermite elements: "
-          "their derivative dofs would need the axis condition on the "
-          "derivatives of u_r too (du_r/dz = 0 on the axis), and the hoop "
-          "strain u_r / r of a C1 field near the axis is not what the "
-          "element was built for; use q1, q2, q3, q8 or q12");
+      const std::string why_not = space.capabilities().not_axisymmetric_because;
+      if (!why_not.empty())
+        throw InputError(where + "/Material/Hypothesis",
+                         "axisymmetric bodies are not implemented for '" +
+                           space.name() + "' elements: " + why_not + "; use " +
+                           ElementSpaceRegistry::names_that(
+                             [](const ElementSpace::Capabilities &c) {
+                               return c.not_axisymmetric_because.empty();
+                             }));
       // r >= 0: a cell with a vertex left of the axis would have a negative
       // ring volume there.
       const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
@@ -246,19 +247,23 @@ namespace glissade
     const bool axisymmetric =
       description.material.hypothesis == PlaneHypothesis::axisymmetric;
     if (axisymmetric)
-      check_axisymmetric_body(description, *serial, reference_size, where);
+      check_axisymmetric_body(*element_space, *serial, reference_size, where);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
     // the chords instead.
-    if (labels.second_order && (description.element_space == "q1" ||
-                                description.element_space == "hermite"))
+    if (labels.second_order &&
+        !element_space->capabilities().follows_curved_edges)
       throw InputError(where + "/Element/Space",
                        "'" + description.mesh.file +
                          "' has second-order quadrilaterals, whose curved "
                          "edges a '" +
                          description.element_space +
-                         "' body cannot follow: choose q2, q8, q3 or q12, "
-                         "or save the mesh first-order (gmsh -order 1)");
+                         "' body cannot follow: choose " +
+                         ElementSpaceRegistry::names_that(
+                           [](const ElementSpace::Capabilities &c) {
+                             return c.follows_curved_edges;
+                           }) +
+                         ", or save the mesh first-order (gmsh -order 1)");
     const auto box = GridTools::compute_bounding_box(*serial);
 
     // On several processes a body holds its share of the mesh
@@ -314,6 +319,7 @@ namespace glissade
     serial.reset();
 
     boundary_conditions = std::make_unique<BoundaryConditions>(description,
+                                                               *element_space,
                                                                named_boundaries,
                                                                *mesh);
     loads               = std::make_unique<DistributedLoads>(description,

@@ -5,6 +5,7 @@
 #include <glissade/base/text.h>
 #include <glissade/base/user_function.h>
 #include <glissade/body/boundary_conditions.h>
+#include <glissade/fe/element_space_registry.h>
 #include <glissade/mesh/boundary_normals.h>
 #include <glissade/mesh/mesh_diameter.h>
 #include <glissade/mesh/nearest_vertex.h>
@@ -203,6 +204,7 @@ namespace glissade
 
 
   BoundaryConditions::BoundaryConditions(const BodyDescription  &body,
+                                         const ElementSpace     &space,
                                          const BoundaryNames    &names,
                                          const Triangulation<2> &tria)
   {
@@ -215,12 +217,17 @@ namespace glissade
         item.all_derivatives = d.all_derivatives;
         if (d.direction != DirichletDescription::Direction::cartesian)
           {
-            if (body.element_space != "q1")
-              throw InputError(d.entry,
-                               "the normal (n) and tangential (t) supports "
-                               "are implemented for q1 bodies; body '" +
-                                 body.name + "' uses " + body.element_space +
-                                 " (use x, y or a rotated mesh)");
+            if (!space.capabilities().vertex_dofs_only)
+              throw InputError(
+                d.entry,
+                "the normal (n) and tangential (t) supports are implemented "
+                "for spaces whose dofs are the vertices' alone (" +
+                  ElementSpaceRegistry::names_that(
+                    [](const ElementSpace::Capabilities &c) {
+                      return c.vertex_dofs_only;
+                    }) +
+                  "); body '" + body.name + "' uses " + space.name() +
+                  " (use x, y or a rotated mesh)");
             item.directed_vertices = support_directions(
               item.where, d.direction, tria, body.name, d.entry);
           }

@@ -63,6 +63,22 @@ namespace glissade
 
 
   std::string
+  ElementSpaceRegistry::names_that(
+    const std::function<bool(const ElementSpace::Capabilities &)> &wanted)
+  {
+    std::vector<std::string> names;
+    for (const auto &entry : entries())
+      if (wanted(entry.create()->capabilities()))
+        names.push_back(entry.name);
+    std::string text;
+    for (unsigned int k = 0; k < names.size(); ++k)
+      text += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+    return text;
+  }
+
+
+
+  std::string
   ElementSpaceRegistry::documentation()
   {
     std::string text;

@@ -44,7 +44,9 @@ namespace glissade
   class BoundaryConditions
   {
   public:
+    /** For `body`, whose element space is `space` (what it supports). */
     BoundaryConditions(const BodyDescription          &body,
+                       const ElementSpace             &space,
                        const BoundaryNames            &boundary_names,
                        const dealii::Triangulation<2> &triangulation);
 

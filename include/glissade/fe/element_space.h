@@ -50,6 +50,26 @@ namespace glissade
     virtual std::string
     name() const = 0;
 
+    /**
+     * What a space can do, which the code asks instead of its name (a new
+     * space says what it supports here, and the checks and their messages
+     * follow).
+     */
+    struct Capabilities
+    {
+      /** Empty if the space takes an axisymmetric body; else why not. */
+      std::string not_axisymmetric_because;
+      /** Its geometry is of degree two or more: it follows the curved
+       *  edges of a second-order mesh. */
+      bool follows_curved_edges = false;
+      /** Every dof is a vertex's displacement: a support along a
+       *  boundary's normal or tangent is a relation between two of them. */
+      bool vertex_dofs_only = false;
+    };
+
+    virtual Capabilities
+    capabilities() const = 0;
+
     /** The element whose dofs the DoFHandler distributes. */
     virtual const dealii::FiniteElement<2> &
     finite_element() const = 0;

@@ -34,6 +34,12 @@ namespace glissade
     static std::string
     names_as_pattern();
 
+    /** The names of the spaces whose capabilities `wanted` accepts, as
+     *  "q2, q3 or q8", for the messages that send a user to them. */
+    static std::string
+    names_that(
+      const std::function<bool(const ElementSpace::Capabilities &)> &wanted);
+
     /** "q1: ...; q2: ..." for the parameter documentation. */
     static std::string
     documentation();

@@ -45,6 +45,20 @@ namespace glissade
       return "hermite";
     }
 
+    /** Straight edges (the paper's bilinear geometry), derivative dofs,
+     *  and no axisymmetric body. */
+    Capabilities
+    capabilities() const override
+    {
+      Capabilities c;
+      c.not_axisymmetric_because =
+        "its derivative dofs would need the axis condition on the "
+        "derivatives of u_r too (du_r/dz = 0 on the axis), and the hoop "
+        "strain u_r / r of a C1 field near the axis is not what the element "
+        "was built for";
+      return c;
+    }
+
     const dealii::FiniteElement<2> &
     finite_element() const override
     {

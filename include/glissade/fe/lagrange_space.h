@@ -22,6 +22,17 @@ namespace glissade
     std::string
     name() const override;
 
+    /** Every degree is axisymmetric; degree 1 has straight edges and its
+     *  dofs at the vertices alone. */
+    Capabilities
+    capabilities() const override
+    {
+      Capabilities c;
+      c.follows_curved_edges = degree >= 2;
+      c.vertex_dofs_only     = degree == 1;
+      return c;
+    }
+
     const dealii::FiniteElement<2> &
     finite_element() const override
     {

@@ -37,6 +37,16 @@ namespace glissade
     std::string
     name() const override;
 
+    /** Axisymmetric, and its geometry of degree 2 or 3 follows curved
+     *  edges. */
+    Capabilities
+    capabilities() const override
+    {
+      Capabilities c;
+      c.follows_curved_edges = true;
+      return c;
+    }
+
     const dealii::FiniteElement<2> &
     finite_element() const override
     {
