@@ -159,8 +159,7 @@ namespace glissade
     {
       if (is_constant(exponent))
         {
-          const double p =
-            expression.evaluate_node(exponent, std::vector<double>());
+          const double p = expression.evaluate_node<double>(exponent, nullptr);
           return add(Kind::constant_power, base, 0, p);
         }
       return add(Kind::power, base, exponent);

@@ -161,17 +161,18 @@ namespace glissade
                                            formula_variables,
                                            constants);
       return [expression](const StrainMeasures &s) {
-        return expression->evaluate(std::vector<EnergyNumber>{s.I1,
-                                                              s.I2,
-                                                              s.I3,
-                                                              s.J,
-                                                              s.ln_J,
-                                                              s.C[0],
-                                                              s.C[1],
-                                                              s.C[2],
-                                                              s.C[3],
-                                                              s.C[4],
-                                                              s.C[5]});
+        const EnergyNumber values[] = {s.I1,
+                                       s.I2,
+                                       s.I3,
+                                       s.J,
+                                       s.ln_J,
+                                       s.C[0],
+                                       s.C[1],
+                                       s.C[2],
+                                       s.C[3],
+                                       s.C[4],
+                                       s.C[5]};
+        return expression->evaluate(values);
       };
     }
   } // namespace

@@ -32,10 +32,11 @@ namespace glissade
                      const std::vector<std::string>      &variables,
                      const std::map<std::string, double> &constants);
 
-    /** The formula at the variables' values `values`. */
+    /** The formula at the variables' values `values` (as many as the
+     *  variables). */
     template <typename Number>
     Number
-    evaluate(const std::vector<Number> &values) const
+    evaluate(const Number *values) const
     {
       return evaluate_node(root, values);
     }
@@ -67,8 +68,7 @@ namespace glissade
 
     template <typename Number>
     Number
-    evaluate_node(const unsigned int         index,
-                  const std::vector<Number> &values) const
+    evaluate_node(const unsigned int index, const Number *values) const
     {
       using std::exp;
       using std::log;
