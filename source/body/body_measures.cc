@@ -169,11 +169,14 @@ namespace glissade
   {
     const bool axisymmetric =
       body.hypothesis() == PlaneHypothesis::axisymmetric;
-    const Vector<double> &u         = body.displacement();
-    auto                  evaluator = body.space().create_evaluator();
-    std::vector<types::global_dof_index> local(evaluator->dofs_per_cell());
-    std::vector<double>                  values(local.size());
-    double                               energy = 0.;
+    const Vector<double> &u = body.displacement();
+    // (made at the first cell whose stiffness is not kept: at small strain
+    // none, and this runs at every step)
+    std::unique_ptr<CellEvaluator>       evaluator;
+    std::vector<types::global_dof_index> local(
+      body.dof_handler().get_fe().n_dofs_per_cell());
+    std::vector<double> values(local.size());
+    double              energy = 0.;
     // (a mesh shared out: this process's cells, then the processes' sums;
     // every process asks)
     const bool shared_out = body.mesh_is_distributed();
@@ -193,6 +196,8 @@ namespace glissade
                 energy += 0.5 * values[i] * (*K)(i, j) * values[j];
             continue;
           }
+        if (!evaluator)
+          evaluator = body.space().create_evaluator();
         evaluator->reinit(cell);
         const Material &material =
           body.materials().of_cell(cell->material_id());

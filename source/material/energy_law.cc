@@ -143,6 +143,11 @@ namespace glissade
       std::string                   where;
     };
 
+    /** Law = energy's formula unless the .prm gives one: the neo-Hookean
+     *  energy. */
+    const std::string default_formula =
+      "mu / 2 * (I1 - 3) - mu * lnJ + lambda / 2 * lnJ^2";
+
     const std::vector<std::string> formula_variables =
       {"I1", "I2", "I3", "J", "lnJ", "C11", "C22", "C33", "C12", "C13", "C23"};
 
@@ -192,7 +197,7 @@ namespace glissade
   {
     prm.declare_entry(
       "Strain energy",
-      "mu / 2 * (I1 - 3) - mu * lnJ + lambda / 2 * lnJ^2",
+      default_formula,
       Patterns::Anything(),
       "Law = energy: the strain energy W per unit reference volume, a "
       "formula of I1, I2, I3 (the invariants of C = F^T F), J, lnJ, the "
@@ -267,7 +272,7 @@ namespace glissade
     if (settings.has_value())
       formula = std::any_cast<EnergyFormula>(settings);
     else
-      formula.text = "mu / 2 * (I1 - 3) - mu * lnJ + lambda / 2 * lnJ^2";
+      formula.text = default_formula;
     auto law =
       make_energy_law("energy", energy_of_formula(formula, lambda, mu));
     // A stress at rest would move an unloaded body; a stress or tangent
