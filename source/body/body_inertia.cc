@@ -57,9 +57,11 @@ namespace glissade
 
   BodyInertia::BodyInertia(const Body                              &body,
                            const TimeIntegrationSettings           &settings,
+                           std::shared_ptr<const InertiaScheme>     scheme,
                            const std::set<types::global_dof_index> &massless,
                            const std::string                       &where)
     : settings(settings)
+    , scheme(std::move(scheme))
     , contact_dofs(massless.begin(), massless.end())
   {
     const ElementSpace &space = body.space();
@@ -361,17 +363,17 @@ namespace glissade
           without_mass[i] = true;
         }
 
-    // Newmark with contact dofs that carry mass (Contact mass = kept, or a
-    // Hermite body): the contact impulse's share of each step's
-    // acceleration, M^-1 F_c, is taken out of the next step's predictor, so
-    // the mass is factorised once for it.
+    // A scheme whose predictor takes the acceleration (Newmark's family),
+    // with contact dofs that carry mass (Contact mass = kept, or a Hermite
+    // body): the contact impulse's share of each step's acceleration,
+    // M^-1 F_c, is taken out of the next step's predictor, so the mass is
+    // factorised once for it.
     bool contact_with_mass = false;
     for (const auto dof : contact_dofs)
       contact_with_mass =
         contact_with_mass ||
         (!mass_constraints.is_constrained(dof) && !without_mass[dof]);
-    if (settings.scheme == TimeIntegrationSettings::Scheme::newmark &&
-        contact_with_mass)
+    if (scheme->predictor_takes_acceleration() && contact_with_mass)
       {
         mass_factor = std::make_unique<DirectSolver>();
         mass_factor->use_cholesky(true, {});
@@ -457,21 +459,18 @@ namespace glissade
   void
   BodyInertia::set_start_state_forces(const Vector<double> &f)
   {
-    old_forces.reinit(f.size());
-    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
-      {
-        // Moreau-Jean's (1 - theta) / theta (F_ext - F_int - F_v)_n.
-        old_forces = f;
-        old_forces *= (1. - settings.theta) / settings.theta;
-        return;
-      }
-    // Newmark's dofs without mass: their rows carry no inertia, only the
-    // trapezoidal rule's mean of the forces, 1/2 (f_n + f_n+1) + P / dt =
-    // 0, which the equation of the end state writes as f_n+1 + f_n + F_c =
-    // 0 (F_c = 2 P / dt): their start-state forces are f_n.
-    for (types::global_dof_index i = 0; i < old_forces.size(); ++i)
-      if (without_mass[i])
-        old_forces(i) = f(i);
+    const InertiaScheme::StartState state = {f,
+                                             without_mass,
+                                             [this]() {
+                                               return apply_mass(a_smooth);
+                                             },
+                                             [this]() {
+                                               Vector<double> force =
+                                                 apply_mass(v);
+                                               force *= settings.mass_damping;
+                                               return force;
+                                             }};
+    scheme->start_state_forces(state, old_forces);
   }
 
 
@@ -498,26 +497,14 @@ namespace glissade
     u_start = u_n;
     if (frame)
       frame->set_time(t);
-    if (settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean)
-      {
-        const double theta = settings.theta;
-        u_predicted        = u_n;
-        u_predicted.add(dt, v);
-        v_predicted     = v;
-        c_a             = 1. / (theta * theta * dt * dt);
-        c_v             = 1. / (theta * dt);
-        predicted_force = apply_mass(v_predicted).l2_norm() / dt;
-        return;
-      }
-    const double beta = settings.beta, gamma = settings.gamma;
     // (the smooth acceleration: the contact acts by the step's impulse)
-    u_predicted = u_n;
-    u_predicted.add(dt, v, dt * dt * (0.5 - beta), a_smooth);
-    v_predicted = v;
-    v_predicted.add((1. - gamma) * dt, a_smooth);
-    c_a             = 1. / (beta * dt * dt);
-    c_v             = gamma / (beta * dt);
-    predicted_force = apply_mass(v_predicted).l2_norm() / dt;
+    const InertiaScheme::StepCoefficients c =
+      scheme->predict(u_n, v, a_smooth, dt, u_predicted, v_predicted);
+    c_M              = c.inertia;
+    c_v              = c.velocity;
+    c_a              = c.acceleration;
+    impulse_velocity = c.impulse_velocity;
+    predicted_force  = apply_mass(v_predicted).l2_norm() / dt;
   }
 
 
@@ -548,8 +535,8 @@ namespace glissade
     const double              a_M = settings.mass_damping;
     const FullMatrix<double> &m   = cell_mass[cell];
     const unsigned int        n   = dofs.size();
-    // M (a(u) + a_M v(u)) = M ((c_a + a_M c_v) (u - u~) + a_M v~)
-    const double factor = c_a + a_M * c_v;
+    // M (c_M (u - u~) + a_M v(u)) = M ((c_M + a_M c_v) (u - u~) + a_M v~)
+    const double factor = c_M + a_M * c_v;
     work.resize(n);
     for (unsigned int j = 0; j < n; ++j)
       work[j] = factor * (u(dofs[j]) - u_predicted(dofs[j])) +
@@ -577,9 +564,7 @@ namespace glissade
   void
   BodyInertia::accept_step(const Body &body, EnergyAccount &account)
   {
-    const Vector<double> &u = body.displacement();
-    const bool            moreau_jean =
-      settings.scheme == TimeIntegrationSettings::Scheme::moreau_jean;
+    const Vector<double> &u       = body.displacement();
     const Vector<double> &contact = body.get_contact_forces();
     if (without_mass.empty())
       {
@@ -589,8 +574,8 @@ namespace glissade
         SparseMatrix<double> M;
         prepare_mass_system(body, sparsity, M);
       }
-    // Newmark with contact dofs that carry mass: M^-1 F_c, the contact's
-    // share of the end state's acceleration (zero on the massless dofs,
+    // With contact dofs that carry mass, under a scheme whose predictor
+    // takes the acceleration: q = M^-1 F_c (zero on the massless dofs,
     // whose forces move no mass).
     Vector<double> contact_acceleration(u.size());
     if (mass_factor)
@@ -603,34 +588,34 @@ namespace glissade
         mass_factor->solve(contact_acceleration);
         mass_constraints.distribute(contact_acceleration);
       }
-    const double   kinetic_before = kinetic_energy();
-    Vector<double> v_start        = v;
+    const double kinetic_before = kinetic_energy();
     for (types::global_dof_index i = 0; i < u.size(); ++i)
       {
         v(i) = v_predicted(i) + c_v * (u(i) - u_predicted(i));
-        a(i) = moreau_jean ? (v(i) - v_start(i)) / step :
-                             c_a * (u(i) - u_predicted(i));
+        a(i) = c_a * (u(i) - u_predicted(i));
       }
-    if (!moreau_jean)
+    a_smooth = a;
+    if (mass_factor)
       {
-        // Kane et al.'s contact-implicit Newmark: the contact's impulse P
-        // = dt F_c / 2 changes the velocity by M^-1 P, the smooth forces by
-        // Newmark's rule; the end state's a = c_a (u - u~) counts F_c
-        // whole, so v gains (1/2 - gamma) dt M^-1 F_c and the next
-        // predictor takes the smooth acceleration alone.
-        a_smooth = a;
-        a_smooth -= contact_acceleration;
-        v.add((0.5 - settings.gamma) * step, contact_acceleration);
+        // Kane et al.'s contact-implicit scheme: the contact's impulse P =
+        // w dt F_c changes the velocity by M^-1 P = w dt q, the smooth
+        // forces by the scheme's rule. The end equation's inertia force
+        // balances F_c by u - u~ = q / c_M, which the formulas count in the
+        // end state's a (c_a / c_M q): the next predictor takes the smooth
+        // acceleration alone, and v the impulse's change
+        // (StepCoefficients::impulse_velocity).
+        a_smooth.add(-c_a / c_M, contact_acceleration);
+        v.add(impulse_velocity, contact_acceleration);
       }
 
-    // The converged assembly's unbalanced forces are F_int + M (c_a (u -
+    // The converged assembly's unbalanced forces are F_int + M (c_M (u -
     // u~) + a_M v) + F_v - F_ext - f_old on every dof (f_old: the start
     // state's forces the step carries), its applied loads F_ext + f_old;
     // where a dof is constrained, the equation of motion gives the
     // support's reaction.
     Vector<double> inertia(u.size());
     for (types::global_dof_index i = 0; i < u.size(); ++i)
-      inertia(i) = c_a * (u(i) - u_predicted(i)) +
+      inertia(i) = c_M * (u(i) - u_predicted(i)) +
                    settings.mass_damping *
                      (v_predicted(i) + c_v * (u(i) - u_predicted(i)));
     const Vector<double> inertia_force = apply_mass(inertia);
@@ -686,10 +671,10 @@ namespace glissade
       trapezoid(mass_damping_before, mass_damping) +
       trapezoid(viscous_before, viscous);
     // The contact acts by the step's impulse P, whose force in the
-    // equation of the end state is F_c = P / (w dt) (w: theta, or 1/2 for
-    // Newmark): its work on the step's motion is P . du / dt.
-    const double contact_weight = moreau_jean ? settings.theta : 0.5;
-    const double contact_work   = contact_weight * (contact * du);
+    // equation of the end state is F_c = P / (w dt): its work on the step's
+    // motion is P . du / dt.
+    const double contact_work =
+      scheme->contact_impulse_weight() * (contact * du);
     account.contact_work += contact_work;
     // The scheme's own dissipation: what the kinetic energy lacks of the
     // work of the step's mean smooth force and of the contact impulse

@@ -1,13 +1,15 @@
 // Time integration: quasi-static (the default: the load program's t is a
-// load parameter) or an implicit dynamic scheme on the bodies' inertia.
+// load parameter) or an implicit dynamic scheme on the bodies' inertia. The
+// entries every scheme shares are here; each scheme declares and reads its
+// own (source/time/).
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <glissade/base/input_error.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/scene/section_reader.h>
+#include <glissade/time/time_scheme_registry.h>
 
-#include <cmath>
 #include <string>
 
 namespace glissade
@@ -18,40 +20,14 @@ namespace glissade
   TimeIntegrationSettings::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
-    prm.declare_entry(
-      "Scheme",
-      "quasi-static",
-      Patterns::Selection("quasi-static|newmark|moreau-jean"),
-      "quasi-static: no inertia, the load program's t a load parameter "
-      "(every scene before dynamics). newmark: Newmark's implicit scheme on "
-      "the bodies' inertia (Material/Density), the load program's "
-      "increments the time steps, each solved by Newton with the contact "
-      "step of the quasi-static scheme on the dynamic tangent K + M / "
-      "(beta dt^2); the contact acts by each step's impulse, its law on the "
-      "end positions (Kane et al.'s contact-implicit Newmark), so it never "
-      "does positive work. moreau-jean: Moreau and Jean's theta-method, the "
-      "contact by the step's impulses too (Signorini on the end velocities "
-      "with Contact mass = kept, on the end positions with the mass "
-      "redistributed; Coulomb on the step's slip); theta = 1 damps what the "
-      "step does not resolve (doc/theory.md, 'Dynamics').");
-    prm.declare_entry("Theta",
-                      "0.5",
-                      Patterns::Double(0.5, 1.),
-                      "Moreau-Jean's theta, in [1/2, 1]: 1/2 conserves the "
-                      "energy of a smooth motion, 1 (implicit Euler) damps "
-                      "it.");
-    prm.declare_entry("Newmark beta",
-                      "0.25",
-                      Patterns::Double(0., 0.5),
-                      "Newmark's beta, in (0, 0.5]; 0.25 with gamma = 0.5 "
-                      "is the trapezoidal rule, second order and energy "
-                      "conserving for a linear body.");
-    prm.declare_entry("Newmark gamma",
-                      "0.5",
-                      Patterns::Double(0.5, 1.),
-                      "Newmark's gamma, in [0.5, 1]: above 0.5 the scheme "
-                      "damps high frequencies (first order); unconditionally "
-                      "stable for beta >= (gamma + 1/2)^2 / 4.");
+    prm.declare_entry("Scheme",
+                      "quasi-static",
+                      Patterns::Selection(
+                        TimeSchemeRegistry::names_as_pattern()),
+                      TimeSchemeRegistry::documentation());
+    // (each scheme's own: Newmark beta and gamma, Moreau-Jean theta,
+    // Spectral radius at infinity)
+    TimeSchemeRegistry::declare_parameters(prm);
     prm.declare_entry("Mass",
                       "consistent",
                       Patterns::Selection("consistent|lumped"),
@@ -93,31 +69,18 @@ namespace glissade
   {
     prm.enter_subsection("Time integration");
     const std::string where = prm.file() + ": Time integration/";
+    scheme                  = prm.get("Scheme");
     {
-      const std::string name = prm.get("Scheme");
-      scheme                 = name == "newmark"     ? Scheme::newmark :
-                               name == "moreau-jean" ? Scheme::moreau_jean :
-                                                       Scheme::quasi_static;
+      const TimeSchemeRegistry::Entry &entry =
+        TimeSchemeRegistry::entry(scheme);
+      inertia = entry.has_inertia;
+      if (entry.parse_parameters)
+        scheme_settings = entry.parse_parameters(prm.handler(), where);
     }
-    theta                     = prm.get_double("Theta");
-    beta                      = prm.get_double("Newmark beta");
-    gamma                     = prm.get_double("Newmark gamma");
     lumped_mass               = prm.get("Mass") == "lumped";
     redistribute_contact_mass = prm.get("Contact mass") == "redistributed";
     mass_damping              = prm.get_double("Mass damping");
     stiffness_damping         = prm.get_double("Stiffness damping");
     prm.leave_subsection();
-    if (!(beta > 0.))
-      throw InputError(where + "Newmark beta",
-                       "must be > 0 (beta = 0 is the explicit central "
-                       "difference scheme, which glissade does not "
-                       "implement)");
-    if (beta < 0.25 * std::pow(gamma + 0.5, 2) - 1e-12)
-      throw InputError(where + "Newmark beta",
-                       "is " + std::to_string(beta) +
-                         ": below (gamma + 1/2)^2 / 4 = " +
-                         std::to_string(0.25 * std::pow(gamma + 0.5, 2)) +
-                         " the scheme is only conditionally stable; raise "
-                         "beta or lower Newmark gamma");
   }
 } // namespace glissade

@@ -1,6 +1,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/solver/time_integrator.h>
+#include <glissade/time/time_scheme_registry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +24,7 @@ namespace glissade
         return false;
       }
       void
-      attach(const ContactProblem &) override
+      attach(ContactProblem &) override
       {}
       void
       initialize() override
@@ -39,19 +40,22 @@ namespace glissade
 
 
     /**
-     * A scheme with inertia: each body gets a BodyInertia (the scheme's
-     * formulas are there), whose terms its assembly adds; the contact step
-     * works unchanged on the dynamic tangent. Newmark (the default law on
-     * positions) and Moreau-Jean (the law on velocities) differ in which
-     * nodes a step enforces and on what (begin_contact_step()).
+     * A scheme with inertia: each body gets a BodyInertia that applies the
+     * scheme's formulas (InertiaScheme), whose terms its assembly adds; the
+     * contact step works on the dynamic tangent with the law the scheme
+     * asks of it (TimeScheme::attach, begin_contact_step). What is the
+     * same for every scheme is here: the initial acceleration, the start
+     * gaps of a step, the energy account of each accepted step.
      */
     class WithInertia : public TimeIntegrator
     {
     public:
       WithInertia(const SceneDescription                   &scene,
-                  const std::vector<std::unique_ptr<Body>> &bodies)
+                  const std::vector<std::unique_ptr<Body>> &bodies,
+                  std::shared_ptr<const TimeScheme>         scheme)
         : scene(scene)
         , bodies(bodies)
+        , scheme(std::move(scheme))
       {
         for (const auto &body : bodies)
           body->system().hold_rigid_motions_by_inertia();
@@ -64,9 +68,9 @@ namespace glissade
       }
 
       void
-      attach(const ContactProblem &contact_problem) override
+      attach(ContactProblem &contact_problem) override
       {
-        contact = const_cast<ContactProblem *>(&contact_problem);
+        contact = &contact_problem;
         for (const auto &body : bodies)
           {
             // The dofs the contact pairs touch: the redistributed mass
@@ -78,10 +82,12 @@ namespace glissade
             body->set_inertia(
               std::make_unique<BodyInertia>(*body,
                                             scene.time_integration,
+                                            scheme,
                                             massless,
                                             scene.source + ": Body " +
                                               body->name()));
           }
+        scheme->attach(*contact, scene.time_integration);
       }
 
       void
@@ -111,7 +117,7 @@ namespace glissade
         for (const auto &body : bodies)
           body->inertia()->begin_step(body->displacement(), dt, t);
         record_start_gaps(t_start, dt);
-        begin_contact_step(t_start, dt);
+        scheme->begin_contact_step(*contact, t_start, dt);
       }
 
       void
@@ -179,16 +185,12 @@ namespace glissade
         return &account;
       }
 
-    protected:
-      /** After the detection of a step from t_start of length dt. */
-      virtual void
-      begin_contact_step(const double t_start, const double dt) = 0;
-
+    private:
       const SceneDescription                   &scene;
       const std::vector<std::unique_ptr<Body>> &bodies;
+      const std::shared_ptr<const TimeScheme>   scheme;
       ContactProblem                           *contact = nullptr;
 
-    private:
       /**
        * Each node's gap at the step's start, to the master as it stood
        * then: the detection's gap (the node at u_n) to an obstacle moved
@@ -267,146 +269,6 @@ namespace glissade
 
 
 
-    /**
-     * Newmark's implicit scheme with the contact implicit (Kane, Repetto,
-     * Ortiz & Marsden 1999): the smooth forces by Newmark's rule, the
-     * contact by the step's impulse P, its law on the end positions, every
-     * node within the alert distance (the quasi-static step's). The end
-     * state's equation carries the contact force F_c = 2 P / dt, which the
-     * outputs report halved (the step's mean force P / dt). Its work over
-     * the step, P . du / dt, is then -P_N g_n - mu P_N |slip| <= 0: the
-     * contact never creates energy (doc/theory.md, "Energy").
-     */
-    class Newmark : public WithInertia
-    {
-    public:
-      using WithInertia::WithInertia;
-
-      void
-      attach(const ContactProblem &contact_problem) override
-      {
-        WithInertia::attach(contact_problem);
-        for (const auto &pair : contact->contact_pairs())
-          pair->report_forces_scaled_by(0.5);
-      }
-
-    protected:
-      void
-      begin_contact_step(const double, const double) override
-      {}
-    };
-
-
-
-    /**
-     * Moreau and Jean's theta-method (Jean 1999; Feng, Joli, Cros &
-     * Magnain 2005 with the bi-potential local solver): Signorini's law on
-     * the end normal velocity and the step's impulses, for the nodes whose
-     * gap closes by the step's theta point, g_n + (1 - theta) dt U_N <= 0,
-     * and that do not move away. With U = H v_n the relative velocity at
-     * the start, the end velocity's law is the position law shifted: U_N,n+1
-     * >= 0 is g(u) - g_n - (1 - theta) dt U_N,n >= 0 to first order.
-     * Coulomb's law holds on the step's slip. A node that does not close
-     * keeps Signorini's law on its end position, g >= min(g_n, 0).
-     *
-     * The velocity law needs the contact nodes' mass (Contact mass =
-     * kept): a node without mass has no velocity of its own (the scheme's
-     * u_n+1 = u_n + dt (theta v_n+1 + (1 - theta) v_n) makes its v ring
-     * from step to step at theta = 1/2), and a law on it lets nodes through
-     * the master. With the mass redistributed, the law is Signorini's on
-     * the end positions, as Newmark's, whose impulse does no positive work
-     * either (doc/theory.md, "Energy").
-     */
-    class MoreauJean : public WithInertia
-    {
-    public:
-      MoreauJean(const SceneDescription                   &scene,
-                 const std::vector<std::unique_ptr<Body>> &bodies)
-        : WithInertia(scene, bodies)
-      {}
-
-      void
-      attach(const ContactProblem &contact_problem) override
-      {
-        WithInertia::attach(contact_problem);
-        if (!scene.time_integration.redistribute_contact_mass)
-          contact->use_velocity_law();
-        // The local problem's unknown is the step's impulse over theta
-        // dt; the outputs report the mean force, the impulse over dt.
-        for (const auto &pair : contact->contact_pairs())
-          pair->report_forces_scaled_by(scene.time_integration.theta);
-      }
-
-    protected:
-      void
-      begin_contact_step(const double t_start, const double dt) override
-      {
-        if (contact->position_law())
-          return;
-        const double theta = scene.time_integration.theta;
-        for (const auto &pair : contact->contact_pairs())
-          {
-            const std::array<const Body *, 2> body = {
-              {&pair->slave(), pair->master()}};
-            const auto velocity_along = [&](const DofVector &row) {
-              double value = 0.;
-              for (const DofCoefficient &e : row)
-                if (body[e.body] != nullptr)
-                  value += e.value * body[e.body]->inertia()->velocity()(e.dof);
-              return value;
-            };
-            for (ContactNode &node : pair->nodes())
-              {
-                node.law_shift = {{0., 0.}};
-                if (!node.active)
-                  continue;
-                const ContactLinearization &l   = node.linearization;
-                double                      U_N = velocity_along(l.gap_row);
-                // Relative to a moving obstacle's material under the node;
-                // the gap at the start is to the obstacle as it stood then
-                // (record_start_gaps()).
-                const double start_gap = node.start_gap;
-                if (body[1] == nullptr)
-                  {
-                    Point<2> x = node.reference_position;
-                    for (unsigned int d = 0; d < 2; ++d)
-                      x[d] += pair->slave().displacement()(node.dofs[d]);
-                    U_N -=
-                      node.normal * pair->surface().velocity_at(x, t_start);
-                  }
-                if (start_gap + (1. - theta) * dt * U_N > 0.)
-                  {
-                    // A node that does not close by the theta point keeps
-                    // Signorini's law on its end position, g >= min(g_n,
-                    // 0): it may open, and it may close within the step
-                    // but not pass the master (or, behind it, go further).
-                    // Its impulse's work on the step's motion, P (g -
-                    // g_n), is then -P g_n <= 0 or zero. (Left out of the
-                    // step, as Moreau's index set leaves it, a node whose
-                    // start velocity rang away from the master at theta =
-                    // 1/2 went behind it by dt times its speed and stayed
-                    // there: a block resting on a rough floor tilted by
-                    // 1e-4 and was held so by friction.)
-                    node.law_shift = {{0., -std::min(start_gap, 0.)}};
-                    continue;
-                  }
-                // The impulse works on the step's mean velocity, theta
-                // U_n+1 + (1 - theta) U_n = du / dt. An approaching node
-                // (U_N,n <= 0) takes Jean's law, U_N,n+1 >= 0: the normal
-                // work (1 - theta) P_N U_N,n is <= 0. A node behind the
-                // master that moves away (U_N,n > 0) may not come back
-                // within the step, g - g_n >= 0: its normal work is zero
-                // (on the end velocity its impulse would work positively).
-                // Coulomb's law holds on the step's slip: the friction's
-                // work is - mu P_N |slip| <= 0 (on the end velocity alone,
-                // a slip that reverses within the step would create
-                // energy).
-                node.law_shift = {
-                  {0., -start_gap - (1. - theta) * dt * std::min(U_N, 0.)}};
-              }
-          }
-      }
-    };
   } // namespace
 
 
@@ -415,22 +277,21 @@ namespace glissade
   TimeIntegrator::create(const SceneDescription                   &scene,
                          const std::vector<std::unique_ptr<Body>> &bodies)
   {
-    switch (scene.time_integration.scheme)
-      {
-        case TimeIntegrationSettings::Scheme::newmark:
-          return std::make_unique<Newmark>(scene, bodies);
-        case TimeIntegrationSettings::Scheme::moreau_jean:
-          return std::make_unique<MoreauJean>(scene, bodies);
-        case TimeIntegrationSettings::Scheme::quasi_static:
-          break;
-      }
+    const auto                       &settings = scene.time_integration;
+    std::shared_ptr<const TimeScheme> scheme =
+      TimeSchemeRegistry::entry(settings.scheme)
+        .create(settings.scheme_settings);
+    if (scheme->has_inertia())
+      return std::make_unique<WithInertia>(scene, bodies, scheme);
     for (const auto &body : bodies)
       if (body->description_of_body().turning_frame.active())
         throw InputError(scene.source + ": Body " + body->name() +
                            "/Turning frame/Angular velocity",
                          "a turning frame's forces act on the body's inertia: "
                          "choose a dynamic scheme (Time integration/Scheme = "
-                         "newmark or moreau-jean), or leave the entry empty");
+                         "one of " +
+                           TimeSchemeRegistry::names_with_inertia() +
+                           "), or leave the entry empty");
     return std::make_unique<QuasiStatic>();
   }
 } // namespace glissade

@@ -9,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <glissade/body/energy_account.h>
+#include <glissade/body/inertia_scheme.h>
 #include <glissade/body/turning_frame.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/lac/direct_solver.h>
@@ -26,27 +27,21 @@ namespace glissade
 
   /**
    * A body's inertia under a dynamic scheme (Time integration): its mass,
-   * cell by cell, its velocity and acceleration, and the terms Newmark's
-   * scheme adds to the body's residual and tangent at each Newton
-   * iteration of a time step.
+   * cell by cell, its velocity and acceleration, and the terms the scheme
+   * adds to the body's residual and tangent at each Newton iteration of a
+   * time step.
    *
-   * Moreau-Jean's theta-method, from (u_n, v_n) over a step dt: u_n+1 =
-   * u_n + dt (theta v_n+1 + (1 - theta) v_n) and M (v_n+1 - v_n) = dt
-   * (theta f_n+1 + (1 - theta) f_n) + P, f = F_ext - F_int, divided by
-   * theta dt: the inertia force M (u - u~) / (theta dt)^2 with u~ = u_n +
-   * dt v_n, the start state's forces (1 - theta) / theta f_n as loads
-   * (step_forces()), and the contact force P / (theta dt).
-   *
-   * Newmark, from the state (u_n, v_n, a_n) over a step dt: with the
-   * predictors u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n and v~ = v_n +
-   * (1 - gamma) dt a_n, the end state's acceleration and velocity are
-   * functions of its displacement,
-   *   a(u) = (u - u~) / (beta dt^2),   v(u) = v~ + gamma dt a(u),
-   * and the equation of motion M a + a_M M v + F_int(u) = F_ext + F_c is
-   * the quasi-static one with the inertia force on the left and the
-   * tangent K + (1 / (beta dt^2) + a_M gamma / (beta dt)) M: the contact
-   * step of the quasi-static scheme solves it unchanged (doc/theory.md,
-   * "Dynamics").
+   * The scheme's formulas are its own (InertiaScheme, one file per scheme
+   * in source/time/): a step from (u_n, v_n, a_n) over dt is the equation
+   * of its end state, whose velocity and acceleration are linear in its
+   * displacement about predictors u~, v~, v(u) = v~ + c_v (u - u~) and
+   * a(u) = c_a (u - u~); the equation of motion M (c_M (u - u~) + a_M
+   * v(u)) + F_int(u) + F_v = F_ext + f_carried + F_c is the quasi-static
+   * one with the inertia force on the left and the tangent K + (c_M + a_M
+   * c_v) M: the contact step of the quasi-static scheme solves it
+   * unchanged (doc/theory.md, "Dynamics"). Newmark's c_M = c_a = 1 / (beta
+   * dt^2), c_v = gamma / (beta dt); Moreau-Jean's c_M = 1 / (theta dt)^2
+   * with the start state's forces (1 - theta) / theta f_n carried.
    *
    * The mass is the reference configuration's (total Lagrangian: it never
    * changes): consistent, M_ij = int rho N_i N_j dV over each cell, or
@@ -61,11 +56,13 @@ namespace glissade
   {
   public:
     /**
-     * `massless` are the dofs on a contact boundary (redistributed mass);
-     * `where` names the body for messages.
+     * `scheme` gives the step's formulas; `massless` are the dofs on a
+     * contact boundary (redistributed mass); `where` names the body for
+     * messages.
      */
     BodyInertia(const Body                                      &body,
                 const TimeIntegrationSettings                   &settings,
+                std::shared_ptr<const InertiaScheme>             scheme,
                 const std::set<dealii::types::global_dof_index> &massless,
                 const std::string                               &where);
 
@@ -90,8 +87,10 @@ namespace glissade
                const double                  t);
 
     /**
-     * Forces of the start state that the step's equation carries as loads:
-     * Moreau-Jean's (1 - theta) / theta (F_ext - F_int)_n; none for Newmark.
+     * Forces of the start state that the step's equation carries as loads
+     * (InertiaScheme::start_state_forces): Moreau-Jean's (1 - theta) /
+     * theta (F_ext - F_int)_n; for Newmark none, but on the rows without
+     * mass.
      */
     const dealii::Vector<double> &
     step_forces() const
@@ -101,9 +100,9 @@ namespace glissade
 
     /**
      * The inertia terms of one cell at the displacement u: the cell's
-     * residual loses M (a(u) + a_M v(u)) and its tangent gains (1 / (beta
-     * dt^2) + a_M gamma / (beta dt)) M. `work` is the caller's room for
-     * the cell's accelerations (no allocation per cell).
+     * residual loses M (c_M (u - u~) + a_M v(u)) and its tangent gains
+     * (c_M + a_M c_v) M. `work` is the caller's room for the cell's
+     * accelerations (no allocation per cell).
      */
     void
     add_cell_terms(const unsigned int                                  cell,
@@ -216,10 +215,8 @@ namespace glissade
   private:
     /**
      * The forces of the start state that the next step carries as loads
-     * (step_forces()), from f = F_ext - F_int - F_v of the accepted state:
-     * Moreau-Jean's (1 - theta) / theta f on every dof; Newmark's f on
-     * the free dofs without mass, whose rows the trapezoidal rule writes
-     * as the mean of the step's two ends.
+     * (step_forces()), from f = F_ext - F_int - F_v of the accepted state,
+     * by the scheme's rule (InertiaScheme::start_state_forces).
      */
     void
     set_start_state_forces(const dealii::Vector<double> &f);
@@ -227,8 +224,9 @@ namespace glissade
     /**
      * The mass M assembled and condensed by the body's constraints without
      * their values (mass_constraints), the identity on the rows of the free
-     * dofs without mass (without_mass), and Newmark's mass_factor where
-     * contact dofs carry mass.
+     * dofs without mass (without_mass), and the mass_factor where contact
+     * dofs carry mass under a scheme whose predictor takes the
+     * acceleration.
      */
     void
     prepare_mass_system(const Body                   &body,
@@ -254,6 +252,7 @@ namespace glissade
     apply_mass(const dealii::Vector<double> &x) const;
 
     const TimeIntegrationSettings                             settings;
+    const std::shared_ptr<const InertiaScheme>                scheme;
     std::vector<std::vector<dealii::types::global_dof_index>> cell_dofs;
     /** Each cell's mass matrix (diagonal when lumped or redistributed). */
     std::vector<dealii::FullMatrix<double>> cell_mass;
@@ -270,10 +269,13 @@ namespace glissade
     double                                step = 0.;
     /** |M v~| / dt, the step's inertia force scale (begin_step). */
     double predicted_force = 0.;
-    /** The end state's a and v from its u: a = c_a (u - u~) (Newmark), v =
-     *  v~ + c_v (u - u~) (both schemes). */
-    double c_a = 0., c_v = 0.;
-    /** Moreau-Jean: (1 - theta) / theta (F_ext - F_int)_n. */
+    /** The step's coefficients (InertiaScheme::StepCoefficients): the
+     *  inertia force M c_M (u - u~), the end state's v = v~ + c_v (u - u~)
+     *  and a = c_a (u - u~). */
+    double c_M = 0., c_a = 0., c_v = 0.;
+    /** StepCoefficients::impulse_velocity. */
+    double impulse_velocity = 0.;
+    /** The start state's forces the step carries (step_forces()). */
     dealii::Vector<double> old_forces;
     /** The forces of the last accepted state, for the next step's work:
      *  loads and supports, contact, mass damping, viscous stress, and the
@@ -283,17 +285,18 @@ namespace glissade
     /** The forces of a turning frame (Body <name>/Turning frame), or none. */
     std::unique_ptr<TurningFrame> frame;
     /**
-     * Newmark's acceleration of the smooth forces alone (without the
-     * contact's impulse), which the next step's predictors take.
+     * The acceleration of the smooth forces alone (without the contact's
+     * impulse), which the next step's predictors take.
      */
     dealii::Vector<double> a_smooth;
     /** The dofs the contact pairs touch, and the free dofs without mass. */
     std::vector<dealii::types::global_dof_index> contact_dofs;
     std::vector<bool>                            without_mass;
     /**
-     * Newmark with contact dofs that carry mass: the factorised mass,
-     * condensed by the body's constraints without their values, for M^-1
-     * F_c at each accepted step.
+     * With contact dofs that carry mass, under a scheme whose predictor
+     * takes the acceleration: the factorised mass, condensed by the body's
+     * constraints without their values, for M^-1 F_c at each accepted
+     * step.
      */
     std::unique_ptr<DirectSolver>     mass_factor;
     dealii::AffineConstraints<double> mass_constraints;

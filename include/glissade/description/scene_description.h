@@ -230,18 +230,14 @@ namespace glissade
    */
   struct TimeIntegrationSettings
   {
-    enum class Scheme
-    {
-      quasi_static,
-      newmark,
-      moreau_jean
-    };
-    Scheme scheme = Scheme::quasi_static;
-    /** Moreau-Jean's theta, in [1/2, 1]. */
-    double theta = 0.5;
-    /** Newmark's beta and gamma (1/4, 1/2: the trapezoidal rule). */
-    double beta  = 0.25;
-    double gamma = 0.5;
+    /**
+     * The scheme's name (TimeSchemeRegistry, source/time/), the settings
+     * its own entries gave (read by the scheme's file, as a law's), and
+     * whether it integrates the bodies' inertia.
+     */
+    std::string scheme = "quasi-static";
+    std::any    scheme_settings;
+    bool        inertia = false;
     /** The mass matrix: consistent (every space) or lumped (HRZ). */
     bool lumped_mass = false;
     /**
@@ -261,7 +257,7 @@ namespace glissade
     bool
     dynamic() const
     {
-      return scheme != Scheme::quasi_static;
+      return inertia;
     }
 
     static void

@@ -16,16 +16,19 @@ namespace glissade
    * (Simulation: steps, Newton, cut-back, output) is the same for every
    * scheme, as Lethe's time-stepping classes are beside its solvers.
    *
-   * - QuasiStatic (Time integration/Scheme = quasi-static): t is a load
-   *   parameter and a step is an equilibrium; nothing to do.
-   * - Newmark, Moreau-Jean: every body gets a BodyInertia, whose terms its
-   *   assembly adds; a step begins from the accepted state, and the state
-   *   it converges to is accepted before the next. Both take the contact
-   *   as the step's impulse: Newmark with its law on the end positions
-   *   (Kane et al.'s contact-implicit Newmark), Moreau-Jean on the end
-   *   normal velocity and the step's slip.
+   * - Time integration/Scheme = quasi-static: t is a load parameter and a
+   *   step is an equilibrium; nothing to do.
+   * - A scheme with inertia (newmark, moreau-jean, generalized-alpha,
+   *   hht-alpha: TimeSchemeRegistry): every body gets a BodyInertia that
+   *   applies the scheme's formulas, whose terms its assembly adds; a step
+   *   begins from the accepted state, and the state it converges to is
+   *   accepted before the next. Every scheme takes the contact as the
+   *   step's impulse, with the law it asks of the contact
+   *   (TimeScheme::attach).
    *
-   * A scheme is one class here and one line in create().
+   * A scheme is one file in source/time/ and one line in
+   * time_scheme_registry.cc (doc/adding_a_time_scheme.md); this class is
+   * the same for every one.
    */
   class TimeIntegrator
   {
@@ -52,7 +55,7 @@ namespace glissade
      * adds to its assembly.
      */
     virtual void
-    attach(const ContactProblem &contact) = 0;
+    attach(ContactProblem &contact) = 0;
 
     /** At t = 0 of a fresh run (not a restart): the initial state. */
     virtual void
