@@ -120,14 +120,14 @@ namespace glissade
                              const ElementSpace       &space,
                              const BoundingBox<2>     &box,
                              const double              reference_size,
-                             const bool                axisymmetric)
+                             const bool                of_revolution)
     {
       const auto basis =
         rigid_motion_basis(box.center(), std::max(reference_size, 1e-300));
       const std::vector<RigidMotion> all(basis.begin(), basis.end());
       const auto rows = conditions.support_rows(dofs, space, basis);
       std::vector<RigidMotion> free_motions;
-      if (axisymmetric)
+      if (of_revolution)
         {
           // A body of revolution has one rigid motion, along its axis (a
           // radial translation or a rotation would strain its hoops).
@@ -226,6 +226,8 @@ namespace glissade
   Body::Body(const BodyDescription &description, const std::string &source)
     : description(description)
     , source(source)
+    , body_hypothesis(description.material.hypothesis,
+                      description.material.thickness)
   {
     const std::string where  = source + ": Body " + description.name;
     auto              serial = std::make_unique<Triangulation<2>>();
@@ -244,9 +246,10 @@ namespace glissade
 
     element_space = ElementSpaceRegistry::create(description.element_space);
     evaluators    = std::make_unique<EvaluatorPool>(*element_space);
-    const bool axisymmetric =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric;
-    if (axisymmetric)
+    // (a body of revolution: its radial dofs on the axis are held, and its
+    // only rigid motion is along the axis)
+    const bool of_revolution = body_hypothesis.strains_the_hoop();
+    if (of_revolution)
       check_axisymmetric_body(*element_space, *serial, reference_size, where);
     // A second-order file's curved edges are followed by a mapping of
     // degree two or more; a bilinear or Hermite body would silently see
@@ -284,7 +287,7 @@ namespace glissade
         dofs.reinit(*mesh);
         dofs.distribute_dofs(fe);
         element_space->setup(dofs, element_constraints);
-        if (axisymmetric)
+        if (of_revolution)
           axis_dofs = radial_dofs_on_axis(dofs, *element_space, reference_size);
       }
     else
@@ -292,7 +295,7 @@ namespace glissade
         DoFHandler<2> serial_dofs(*serial);
         serial_dofs.distribute_dofs(fe);
         element_space->setup(serial_dofs, element_constraints);
-        if (axisymmetric)
+        if (of_revolution)
           axis_dofs =
             radial_dofs_on_axis(serial_dofs, *element_space, reference_size);
         nodes_of_whole_mesh = nodes_of(serial_dofs, *element_space);
@@ -326,7 +329,7 @@ namespace glissade
                                                *boundary_conditions,
                                                *materials_of_cells,
                                                where);
-    if (axisymmetric)
+    if (of_revolution)
       boundary_conditions->hold_on_axis(axis_dofs);
 
     solution.reinit(dofs.n_dofs());
@@ -357,7 +360,7 @@ namespace glissade
                                                   *element_space,
                                                   box,
                                                   reference_size,
-                                                  axisymmetric),
+                                                  of_revolution),
                          source,
                          description.name,
                          reference_size),
@@ -577,11 +580,9 @@ namespace glissade
     // displacements) has no force to compare the residual with; the floor
     // is the force a strain of 1e-4 |u| / L would carry over the length L
     // (round-off of a rigid motion stays 1e-12 (L / h) below it).
-    // (axisymmetric: a ring of the body's size stands for the thickness)
-    const double depth =
-      description.material.hypothesis == PlaneHypothesis::axisymmetric ?
-        2. * M_PI * reference_size :
-        description.material.thickness;
+    // (a body of revolution: a ring of the body's size stands for the
+    // thickness)
+    const double depth = body_hypothesis.out_of_plane_size(reference_size);
     const double floor = 1e-4 * materials_of_cells->largest_young_modulus() *
                          depth * solution.linfty_norm();
     return std::max({internal_force_norm,

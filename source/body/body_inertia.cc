@@ -72,10 +72,9 @@ namespace glissade
                          body.name() + "' uses " + space.name() +
                          ", whose derivative dofs have no lumped mass: use "
                          "Mass = consistent");
-    const bool axisymmetric =
-      body.hypothesis() == PlaneHypothesis::axisymmetric;
-    auto                      evaluator = space.create_evaluator();
-    const unsigned int        n         = evaluator->dofs_per_cell();
+    const Hypothesis         &hypothesis = body.hypothesis();
+    auto                      evaluator  = space.create_evaluator();
+    const unsigned int        n          = evaluator->dofs_per_cell();
     std::vector<unsigned int> component(n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = evaluator->displacement_component(i);
@@ -105,8 +104,7 @@ namespace glissade
           {
             const double dV =
               evaluator->JxW(q) *
-              (axisymmetric ? 2. * M_PI * evaluator->quadrature_point(q)[0] :
-                              body.thickness());
+              hypothesis.out_of_plane_measure(evaluator->quadrature_point(q));
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
                 if (component[i] == component[j])

@@ -167,9 +167,8 @@ namespace glissade
   double
   strain_energy(const Body &body)
   {
-    const bool axisymmetric =
-      body.hypothesis() == PlaneHypothesis::axisymmetric;
-    const Vector<double> &u = body.displacement();
+    const Hypothesis     &hypothesis = body.hypothesis();
+    const Vector<double> &u          = body.displacement();
     // (made at the first cell whose stiffness is not kept: at small strain
     // none, and this runs at every step)
     std::unique_ptr<CellEvaluator>       evaluator;
@@ -203,12 +202,13 @@ namespace glissade
           body.materials().of_cell(cell->material_id());
         for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
           {
-            const double r = evaluator->quadrature_point(q)[0];
-            const double hoop =
-              axisymmetric ? evaluator->value(values, q)[0] / r : 0.;
+            const Point<2> X = evaluator->quadrature_point(q);
+            const double   hoop =
+              hypothesis.strains_the_hoop() ?
+                  hypothesis.hoop_ratio(evaluator->value(values, q)[0], X) :
+                  0.;
             energy += material.energy(evaluator->gradient(values, q), hoop) *
-                      evaluator->JxW(q) *
-                      (axisymmetric ? 2. * M_PI * r : body.thickness());
+                      evaluator->JxW(q) * hypothesis.out_of_plane_measure(X);
           }
       }
     if (shared_out)

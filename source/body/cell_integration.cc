@@ -48,8 +48,7 @@ namespace glissade
                                    const MaterialDescription &material,
                                    const unsigned int         n_cells)
     : materials(materials)
-    , thickness(material.thickness)
-    , axisymmetric(material.hypothesis == PlaneHypothesis::axisymmetric)
+    , hypothesis(material.hypothesis, material.thickness)
     , small_strain(material.kinematics == Kinematics::small_strain)
     , kept_linear_stiffness(small_strain ? n_cells : 0)
   {
@@ -145,17 +144,19 @@ namespace glissade
     const Tensor<2, 2> F = small_strain ?
                              Tensor<2, 2>(unit_symmetric_tensor<2>()) :
                              unit_symmetric_tensor<2>() + H;
-    // Axisymmetric: the hoop stretch F_33 = 1 + u_r / r, r the reference
-    // radius of the point (> 0 at every quadrature point of a mesh in
-    // r >= 0), and the volume of the ring 2 pi r dA.
-    double       hoop = 0.;
-    const double r    = evaluator.quadrature_point(q)[0];
-    if (axisymmetric)
+    // A body of revolution: the hoop stretch F_33 = 1 + u_r / r, r the
+    // reference radius of the point (> 0 at every quadrature point of a
+    // mesh in r >= 0), and the volume of the ring 2 pi r dA.
+    double         hoop = 0.;
+    const Point<2> X    = evaluator.quadrature_point(q);
+    const double   r    = X[0];
+    if (hypothesis.strains_the_hoop())
       {
+        double u_r = 0.;
         for (unsigned int i = 0; i < n_local; ++i)
           if (component[i] == 0)
-            hoop += u(data.local_dofs[i]) * evaluator.shape_value(i, q);
-        hoop /= r;
+            u_r += u(data.local_dofs[i]) * evaluator.shape_value(i, q);
+        hoop = hypothesis.hoop_ratio(u_r, X);
       }
     const double J = determinant(unit_symmetric_tensor<2>() + H) * (1. + hoop);
     if (!(J > 0.) || !std::isfinite(J) || !(1. + hoop > 0.))
@@ -185,14 +186,14 @@ namespace glissade
           data.rejection = why.str();
         return;
       }
-    const double dV =
-      evaluator.JxW(q) * (axisymmetric ? 2. * M_PI * r : thickness);
+    const double dV = evaluator.JxW(q) * hypothesis.out_of_plane_measure(X);
     add_stress_terms(q, F, hoop, r, dV, response, scratch, data);
     if (damping.a_K > 0. && !small_strain)
       add_viscous_stress_terms(
         damping.a_K,
         damping.velocity_factor,
-        ViscousStressPoint{damping.at_rest, F, 1. + hoop, r, axisymmetric, dV},
+        ViscousStressPoint{
+          damping.at_rest, F, 1. + hoop, r, hypothesis.strains_the_hoop(), dV},
         evaluator,
         q,
         component,
@@ -236,7 +237,7 @@ namespace glissade
             dE[i][a][b] = 0.5 * (F[c][a] * grad[i][b] + F[c][b] * grad[i][a]);
         D_dE[i] = response.tangent * dE[i];
         cell_rhs(i) -= (P[c] * grad[i]) * dV;
-        if (axisymmetric)
+        if (hypothesis.strains_the_hoop())
           {
             // dE_33 = F_33 du_r / r; the hoop stress works on it.
             dE33[i] = c == 0 ? (small_strain ? 1. : 1. + hoop) *
@@ -256,7 +257,7 @@ namespace glissade
             double k = dE[j] * D_dE[i];
             if (component[i] == component[j] && !small_strain)
               k += S_grad_i * grad[j];
-            if (axisymmetric)
+            if (hypothesis.strains_the_hoop())
               {
                 k += dE33[j] * dS33[i];
                 // d(dE_33)/du_r = N_i N_j / r^2 (radial dofs)

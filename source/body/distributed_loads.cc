@@ -17,9 +17,8 @@ namespace glissade
                                      const std::string        &where)
     : conditions(conditions)
     , materials(materials)
-    , thickness(description.material.thickness)
-    , axisymmetric(description.material.hypothesis ==
-                   PlaneHypothesis::axisymmetric)
+    , hypothesis(description.material.hypothesis,
+                 description.material.thickness)
     , small_strain(description.material.kinematics == Kinematics::small_strain)
   {
     if (!description.gravity.empty())
@@ -81,10 +80,10 @@ namespace glissade
               {
                 const Point<2>     X  = evaluator.quadrature_point(q);
                 const Tensor<1, 2> N0 = evaluator.normal_vector(q);
-                // (axisymmetric: the ring of the reference surface,
+                // (a body of revolution: the ring of the reference surface,
                 // 2 pi R dS; a traction is per unit reference area)
-                const double dA = evaluator.JxW(q) *
-                                  (axisymmetric ? 2. * M_PI * X[0] : thickness);
+                const double dA =
+                  evaluator.JxW(q) * hypothesis.out_of_plane_measure(X);
                 if (!load.is_pressure)
                   {
                     // Dead traction per unit reference length.
@@ -110,8 +109,10 @@ namespace glissade
                   {F[1][1] * N0[0] - F[1][0] * N0[1],
                    -F[0][1] * N0[0] + F[0][0] * N0[1]});
                 const double hoop_stretch =
-                  axisymmetric && !small_strain ?
-                    1. + evaluator.value(cell_values, q)[0] / X[0] :
+                  !small_strain && hypothesis.strains_the_hoop() ?
+                    1. +
+                      hypothesis.hoop_ratio(evaluator.value(cell_values, q)[0],
+                                            X) :
                     1.;
                 for (unsigned int i = 0; i < n_local; ++i)
                   {
@@ -129,7 +130,7 @@ namespace glissade
                         else if (ci == 0 && cj == 1)
                           d = g[1] * N0[0] - g[0] * N0[1];
                         d *= hoop_stretch;
-                        if (axisymmetric && cj == 0)
+                        if (hypothesis.strains_the_hoop() && cj == 0)
                           d +=
                             cof_F_N0[ci] * evaluator.shape_value(j, q) / X[0];
                         cell_matrix(i, j) += p * Ni * d * dA;
@@ -159,8 +160,7 @@ namespace glissade
     for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
       {
         const Point<2> X = evaluator.quadrature_point(q);
-        const double   dV =
-          evaluator.JxW(q) * (axisymmetric ? 2. * M_PI * X[0] : thickness);
+        const double dV = evaluator.JxW(q) * hypothesis.out_of_plane_measure(X);
         const std::array<double, 2> g = {
           {gravity->value(X, 0), gravity->value(X, 1)}};
         for (unsigned int i = 0; i < evaluator.dofs_per_cell(); ++i)

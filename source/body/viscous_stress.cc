@@ -31,7 +31,7 @@ namespace glissade
     for (unsigned int j = 0; j < n; ++j)
       {
         grad_v[component[j]] += cell_velocity[j] * grad[j];
-        if (point.axisymmetric && component[j] == 0)
+        if (point.strains_the_hoop && component[j] == 0)
           v_r_over_r +=
             cell_velocity[j] * evaluator.shape_value(j, q) / point.radius;
       }
@@ -42,12 +42,12 @@ namespace glissade
         for (unsigned int c = 0; c < 2; ++c)
           rate[a][b] += 0.5 * (F[c][a] * grad_v[c][b] + F[c][b] * grad_v[c][a]);
     const double hoop_rate =
-      point.axisymmetric ? point.hoop_stretch * v_r_over_r : 0.;
+      point.strains_the_hoop ? point.hoop_stretch * v_r_over_r : 0.;
 
     const MaterialPointResponse &D0    = point.at_rest;
     SymmetricTensor<2, 2>        S_v   = a_K * (D0.tangent * rate);
     double                       S_v33 = 0.;
-    if (point.axisymmetric)
+    if (point.strains_the_hoop)
       {
         S_v += a_K * D0.hoop_coupling * hoop_rate;
         S_v33 = a_K * (D0.hoop_coupling * rate + D0.hoop_stiffness * hoop_rate);
@@ -57,7 +57,7 @@ namespace glissade
     for (unsigned int i = 0; i < n; ++i)
       {
         double force = S_v * dE[i];
-        if (point.axisymmetric)
+        if (point.strains_the_hoop)
           force += S_v33 * dE33[i];
         cell_rhs(i) -= force * point.dV;
         cell_viscous_force(i) += force * point.dV;
@@ -69,7 +69,7 @@ namespace glissade
             double k = stiffness * (dE[j] * D_dE_i);
             if (component[i] == component[j])
               k += S_grad_i * grad[j];
-            if (point.axisymmetric)
+            if (point.strains_the_hoop)
               {
                 k += stiffness * (dE33[j] * (D0.hoop_coupling * dE[i]) +
                                   dE33[i] * (D0.hoop_coupling * dE[j]) +

@@ -112,15 +112,13 @@ namespace glissade
       x[k] = slave_nodes[k].reference_position +
              Tensor<1, 2>({slave_body.displacement()(slave_nodes[k].dofs[0]),
                            slave_body.displacement()(slave_nodes[k].dofs[1])});
-    const bool ring = slave_body.hypothesis() == PlaneHypothesis::axisymmetric;
+    const Hypothesis   &hypothesis = slave_body.hypothesis();
     std::vector<double> area(n, 0.);
     for (const auto &[a, b] : faces)
       {
         const double length = x[a].distance(x[b]);
         for (const auto &[k, other] : {std::make_pair(a, b), {b, a}})
-          area[k] += ring ?
-                       2. * M_PI * length * (2. * x[k][0] + x[other][0]) / 6. :
-                       0.5 * length * slave_body.thickness();
+          area[k] += hypothesis.node_share_of_segment(x[k], x[other], length);
       }
     return area;
   }

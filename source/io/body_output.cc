@@ -56,8 +56,7 @@ namespace glissade
     const unsigned int    per_dim = element_space.components_per_displacement();
     StressPostprocessor   stress(body.materials(),
                                per_dim,
-                               body.hypothesis() ==
-                                 PlaneHypothesis::axisymmetric);
+                               body.hypothesis().strains_the_hoop());
     NodalDisplacement     nodal_displacement(per_dim);
     DataOut<2>            data_out;
     data_out.attach_dof_handler(body.dof_handler());

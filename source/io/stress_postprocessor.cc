@@ -9,10 +9,10 @@ namespace glissade
   StressPostprocessor::StressPostprocessor(
     const BodyMaterials &materials,
     const unsigned int   components_per_displacement,
-    const bool           axisymmetric)
+    const bool           strains_the_hoop)
     : materials(materials)
     , per_dim(components_per_displacement)
-    , axisymmetric(axisymmetric)
+    , strains_the_hoop(strains_the_hoop)
   {}
 
 
@@ -28,7 +28,7 @@ namespace glissade
   UpdateFlags
   StressPostprocessor::get_needed_update_flags() const
   {
-    if (axisymmetric)
+    if (strains_the_hoop)
       return update_values | update_gradients | update_quadrature_points;
     return per_dim == 1 ? update_gradients : update_values;
   }
@@ -59,7 +59,7 @@ namespace glissade
           }
         // (u_r / r, and its limit du_r / dr on the axis)
         double hoop = 0.;
-        if (axisymmetric)
+        if (strains_the_hoop)
           {
             const double r = inputs.evaluation_points[p][0];
             hoop = r > 0. ? inputs.solution_values[p][0] / r : H[0][0];

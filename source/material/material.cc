@@ -18,7 +18,7 @@ namespace glissade
                      const PlaneHypothesis            hypothesis,
                      const Kinematics                 kinematics)
     : law(std::move(law))
-    , plane_hypothesis(hypothesis)
+    , third(Hypothesis(hypothesis, 1.).third_direction())
     , kinematics(kinematics)
   {
     SymmetricTensor<2, 3> S;
@@ -126,12 +126,12 @@ namespace glissade
     SymmetricTensor<4, 3> D;
     MaterialPointResponse response;
 
-    switch (plane_hypothesis)
+    switch (third)
       {
-        case PlaneHypothesis::plane_strain:
+        case ThirdDirection::held:
           stress(strain(H, 0.), S, D);
           break;
-        case PlaneHypothesis::plane_stress:
+        case ThirdDirection::free_of_stress:
           {
             const double e33 = solve_out_of_plane(H, S, D);
             response.out_of_plane_stretch =
@@ -140,7 +140,7 @@ namespace glissade
                 1. + e33;
           }
           break;
-        case PlaneHypothesis::axisymmetric:
+        case ThirdDirection::hoop:
           stress(strain(H, hoop_strain(hoop_strain_ratio)), S, D);
           response.out_of_plane_stretch = 1. + hoop_strain_ratio;
           response.hoop_stress          = S[2][2];
@@ -159,7 +159,7 @@ namespace glissade
             for (unsigned int l = k; l < 2; ++l)
               {
                 double value = D[i][j][k][l];
-                if (plane_hypothesis == PlaneHypothesis::plane_stress)
+                if (third == ThirdDirection::free_of_stress)
                   value -= D[i][j][2][2] * D[2][2][k][l] / D[2][2][2][2];
                 response.tangent[i][j][k][l] = value;
               }
@@ -175,9 +175,9 @@ namespace glissade
     SymmetricTensor<2, 3> S;
     SymmetricTensor<4, 3> D;
     double                e33 = 0.;
-    if (plane_hypothesis == PlaneHypothesis::plane_stress)
+    if (third == ThirdDirection::free_of_stress)
       e33 = solve_out_of_plane(H, S, D);
-    else if (plane_hypothesis == PlaneHypothesis::axisymmetric)
+    else if (third == ThirdDirection::hoop)
       e33 = hoop_strain(hoop_strain_ratio);
     const SymmetricTensor<2, 3> E = strain(H, e33);
     return kinematics == Kinematics::large_strain ?
@@ -194,11 +194,11 @@ namespace glissade
     SymmetricTensor<2, 3> S;
     SymmetricTensor<4, 3> D;
     double                e33 = 0.;
-    if (plane_hypothesis == PlaneHypothesis::plane_stress)
+    if (third == ThirdDirection::free_of_stress)
       e33 = solve_out_of_plane(H, S, D);
     else
       {
-        if (plane_hypothesis == PlaneHypothesis::axisymmetric)
+        if (third == ThirdDirection::hoop)
           e33 = hoop_strain(hoop_strain_ratio);
         stress(strain(H, e33), S, D);
       }

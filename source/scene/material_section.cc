@@ -6,6 +6,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/description/scene_description.h>
+#include <glissade/material/hypothesis.h>
 #include <glissade/material/law_registry.h>
 #include <glissade/scene/section_reader.h>
 
@@ -67,10 +68,12 @@ namespace glissade
                         "0.3",
                         Patterns::Double(),
                         "nu, in (-1, 0.5).");
+      std::string hypotheses;
+      for (const auto &[name, kind] : Hypothesis::names())
+        hypotheses += (hypotheses.empty() ? "" : "|") + std::string(name);
       prm.declare_entry("Hypothesis",
                         "plane strain",
-                        Patterns::Selection(
-                          "plane strain|plane stress|axisymmetric"),
+                        Patterns::Selection(hypotheses),
                         "What makes the 2D body a 3D one: plane strain, plane "
                         "stress, or axisymmetric (a body of revolution: x is "
                         "the radius r >= 0, y the axis; forces, reactions "
@@ -133,12 +136,9 @@ namespace glissade
     young_modulus = prm.get_double("Young modulus");
     poisson_ratio = prm.get_double("Poisson ratio");
     density       = prm.get_double("Density");
-    {
-      const std::string name = prm.get("Hypothesis");
-      hypothesis = name == "plane stress" ? PlaneHypothesis::plane_stress :
-                   name == "axisymmetric" ? PlaneHypothesis::axisymmetric :
-                                            PlaneHypothesis::plane_strain;
-    }
+    for (const auto &[name, kind] : Hypothesis::names())
+      if (prm.get("Hypothesis") == name)
+        hypothesis = kind;
     kinematics = prm.get("Kinematics") == "small strain" ?
                    Kinematics::small_strain :
                    Kinematics::large_strain;

@@ -112,8 +112,9 @@ namespace glissade
     {
       return cell_integration->kept_stiffness(cell->active_cell_index());
     }
-    /** Plane strain, plane stress or axisymmetric (Material/Hypothesis). */
-    PlaneHypothesis
+    /** Plane strain, plane stress or a body of revolution
+     *  (Material/Hypothesis), which the integrations ask. */
+    const Hypothesis &
     hypothesis() const;
     /** The out-of-plane thickness (Material/Thickness). */
     double
@@ -227,6 +228,7 @@ namespace glissade
 
     const BodyDescription                     description;
     const std::string                         source;
+    const Hypothesis                          body_hypothesis;
     std::unique_ptr<dealii::Triangulation<2>> mesh;
     unsigned int                              n_mesh_cells = 0;
     WholeMeshNodes                            nodes_of_whole_mesh;
@@ -352,10 +354,10 @@ namespace glissade
 
 
 
-  inline PlaneHypothesis
+  inline const Hypothesis &
   Body::hypothesis() const
   {
-    return description.material.hypothesis;
+    return body_hypothesis;
   }
 
 

@@ -167,8 +167,8 @@ namespace glissade
                              CellContribution             &data) const;
 
     const BodyMaterials &materials;
-    const double         thickness;
-    const bool           axisymmetric;
+    /** The body's plane strain, plane stress or revolution. */
+    const Hypothesis hypothesis;
     /** The virtual strains and the equilibrium on the undeformed body. */
     const bool small_strain;
     /** The displacement component of each shape function. */

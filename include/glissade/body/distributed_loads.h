@@ -71,9 +71,9 @@ namespace glissade
 
     const BoundaryConditions &conditions;
     const BodyMaterials      &materials;
-    const double              thickness;
-    const bool                axisymmetric;
-    const bool                small_strain;
+    /** The body's plane strain, plane stress or revolution. */
+    const Hypothesis hypothesis;
+    const bool       small_strain;
     /** Boundary conditions/Gravity: an acceleration of x, y, t, or none. */
     std::unique_ptr<dealii::Function<2>> gravity;
   };

@@ -38,12 +38,14 @@ namespace glissade
   {
     /** The material's response at rest (D_0 and its hoop terms). */
     const MaterialPointResponse &at_rest;
-    /** The deformation gradient in the plane, and F_33 (axisymmetric). */
+    /** The deformation gradient in the plane, and F_33 (a body of
+     *  revolution). */
     const dealii::Tensor<2, 2> &F;
     double                      hoop_stretch;
-    /** The reference radius of the point (axisymmetric only). */
+    /** The reference radius of the point (a body of revolution only). */
     double radius;
-    bool   axisymmetric;
+    /** Hypothesis::strains_the_hoop() */
+    bool strains_the_hoop;
     /** The volume the point stands for (2 pi r dA or thickness dA). */
     double dV;
   };

@@ -24,7 +24,7 @@ namespace glissade
   public:
     StressPostprocessor(const BodyMaterials &materials,
                         const unsigned int   components_per_displacement,
-                        const bool           axisymmetric = false);
+                        const bool           strains_the_hoop = false);
 
     void
     evaluate_vector_field(
@@ -40,6 +40,7 @@ namespace glissade
   private:
     const BodyMaterials &materials;
     const unsigned int   per_dim;
-    const bool           axisymmetric;
+    /** Hypothesis::strains_the_hoop() of the body. */
+    const bool strains_the_hoop;
   };
 } // namespace glissade

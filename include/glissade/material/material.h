@@ -6,6 +6,7 @@
 #include <glissade/description/kinematics.h>
 #include <glissade/description/plane_hypothesis.h>
 #include <glissade/material/hyperelastic_law.h>
+#include <glissade/material/hypothesis.h>
 
 #include <any>
 #include <memory>
@@ -92,12 +93,6 @@ namespace glissade
     cauchy_stress(const dealii::Tensor<2, 2> &displacement_gradient,
                   const double                hoop_strain_ratio = 0.) const;
 
-    PlaneHypothesis
-    hypothesis() const
-    {
-      return plane_hypothesis;
-    }
-
     bool
     small_strain() const
     {
@@ -132,9 +127,11 @@ namespace glissade
                        dealii::SymmetricTensor<2, 3> &S,
                        dealii::SymmetricTensor<4, 3> &D) const;
 
+    using ThirdDirection = Hypothesis::ThirdDirection;
     std::shared_ptr<const HyperelasticLaw> law;
-    PlaneHypothesis                        plane_hypothesis;
-    Kinematics                             kinematics;
+    /** What the hypothesis makes of E_33 (Hypothesis). */
+    ThirdDirection third;
+    Kinematics     kinematics;
     /** The law's tangent at rest (small strain). */
     dealii::SymmetricTensor<4, 3> tangent_at_rest;
   };
