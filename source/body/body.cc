@@ -246,80 +246,13 @@ namespace glissade
 
     element_space = ElementSpaceRegistry::create(description.element_space);
     evaluators    = std::make_unique<EvaluatorPool>(*element_space);
+    check_space_for_mesh(*serial, labels.second_order, where);
+    const auto box = GridTools::compute_bounding_box(*serial);
     // (a body of revolution: its radial dofs on the axis are held, and its
     // only rigid motion is along the axis)
     const bool of_revolution = body_hypothesis.strains_the_hoop();
-    if (of_revolution)
-      check_axisymmetric_body(*element_space, *serial, reference_size, where);
-    // A second-order file's curved edges are followed by a mapping of
-    // degree two or more; a bilinear or Hermite body would silently see
-    // the chords instead.
-    if (labels.second_order &&
-        !element_space->capabilities().follows_curved_edges)
-      throw InputError(where + "/Element/Space",
-                       "'" + description.mesh.file +
-                         "' has second-order quadrilaterals, whose curved "
-                         "edges a '" +
-                         description.element_space +
-                         "' body cannot follow: choose " +
-                         ElementSpaceRegistry::names_that(
-                           [](const ElementSpace::Capabilities &c) {
-                             return c.follows_curved_edges;
-                           }) +
-                         ", or save the mesh first-order (gmsh -order 1)");
-    const auto box = GridTools::compute_bounding_box(*serial);
-
-    // On several processes a body holds its share of the mesh
-    // (distribute_mesh), its dofs numbered as one process numbers them; the
-    // serial mesh and its dofs are let go once what needs the whole mesh is
-    // known (the element constraints, the axis, the nodes). (a mesh whose
-    // boundary ids include the one of the cut faces stays whole)
-    const auto boundary_ids = serial->get_boundary_ids();
-    const bool distribute =
-      processes::count() > 1 &&
-      std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
-        boundary_ids.end();
-    const FiniteElement<2>              &fe = element_space->finite_element();
-    std::vector<types::global_dof_index> axis_dofs;
-    if (!distribute)
-      {
-        mesh = std::move(serial);
-        dofs.reinit(*mesh);
-        dofs.distribute_dofs(fe);
-        element_space->setup(dofs, element_constraints);
-        if (of_revolution)
-          axis_dofs = radial_dofs_on_axis(dofs, *element_space, reference_size);
-      }
-    else
-      {
-        DoFHandler<2> serial_dofs(*serial);
-        serial_dofs.distribute_dofs(fe);
-        element_space->setup(serial_dofs, element_constraints);
-        if (of_revolution)
-          axis_dofs =
-            radial_dofs_on_axis(serial_dofs, *element_space, reference_size);
-        nodes_of_whole_mesh = nodes_of(serial_dofs, *element_space);
-        mesh                = distribute_mesh(*serial,
-                               named_points(description),
-                               processes::communicator());
-        dofs.reinit(*mesh);
-        dofs.distribute_dofs(fe);
-        number_dofs_as_serial(dofs, serial_dofs);
-        // (deal.II's distributed vectors, which DataOut makes, want each
-        // process's dofs a contiguous range of numbers, which shares by
-        // ranges of cells give (distribute_mesh); should a mesh not, every
-        // process keeps the whole mesh rather than wait for ever)
-        if (processes::maximum(
-              dofs.locally_owned_dofs().is_contiguous() ? 0 : 1) > 0)
-          {
-            dofs.reinit(*serial);
-            mesh = std::move(serial);
-            dofs.distribute_dofs(fe);
-            nodes_of_whole_mesh = WholeMeshNodes();
-          }
-        element_space->attach(dofs);
-      }
-    serial.reset();
+    const std::vector<types::global_dof_index> axis_dofs =
+      place_mesh_and_dofs(std::move(serial));
 
     boundary_conditions = std::make_unique<BoundaryConditions>(description,
                                                                *element_space,
@@ -365,6 +298,89 @@ namespace glissade
                          description.name,
                          reference_size),
       processes::count() > 1 ? &own_cells() : nullptr);
+  }
+
+
+
+  void
+  Body::check_space_for_mesh(const Triangulation<2> &serial,
+                             const bool              second_order,
+                             const std::string      &where) const
+  {
+    if (body_hypothesis.strains_the_hoop())
+      check_axisymmetric_body(*element_space, serial, reference_size, where);
+    // A second-order file's curved edges are followed by a mapping of
+    // degree two or more; a bilinear or Hermite body would silently see
+    // the chords instead.
+    if (second_order && !element_space->capabilities().follows_curved_edges)
+      throw InputError(where + "/Element/Space",
+                       "'" + description.mesh.file +
+                         "' has second-order quadrilaterals, whose curved "
+                         "edges a '" +
+                         description.element_space +
+                         "' body cannot follow: choose " +
+                         ElementSpaceRegistry::names_that(
+                           [](const ElementSpace::Capabilities &c) {
+                             return c.follows_curved_edges;
+                           }) +
+                         ", or save the mesh first-order (gmsh -order 1)");
+  }
+
+
+
+  std::vector<types::global_dof_index>
+  Body::place_mesh_and_dofs(std::unique_ptr<Triangulation<2>> serial)
+  {
+    // On several processes a body holds its share of the mesh
+    // (distribute_mesh), its dofs numbered as one process numbers them; the
+    // serial mesh and its dofs are let go once what needs the whole mesh is
+    // known (the element constraints, the axis, the nodes). (a mesh whose
+    // boundary ids include the one of the cut faces stays whole)
+    const bool of_revolution = body_hypothesis.strains_the_hoop();
+    const auto boundary_ids  = serial->get_boundary_ids();
+    const bool distribute =
+      processes::count() > 1 &&
+      std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
+        boundary_ids.end();
+    const FiniteElement<2>              &fe = element_space->finite_element();
+    std::vector<types::global_dof_index> axis_dofs;
+    if (!distribute)
+      {
+        mesh = std::move(serial);
+        dofs.reinit(*mesh);
+        dofs.distribute_dofs(fe);
+        element_space->setup(dofs, element_constraints);
+        if (of_revolution)
+          axis_dofs = radial_dofs_on_axis(dofs, *element_space, reference_size);
+        return axis_dofs;
+      }
+    DoFHandler<2> serial_dofs(*serial);
+    serial_dofs.distribute_dofs(fe);
+    element_space->setup(serial_dofs, element_constraints);
+    if (of_revolution)
+      axis_dofs =
+        radial_dofs_on_axis(serial_dofs, *element_space, reference_size);
+    nodes_of_whole_mesh = nodes_of(serial_dofs, *element_space);
+    mesh                = distribute_mesh(*serial,
+                           named_points(description),
+                           processes::communicator());
+    dofs.reinit(*mesh);
+    dofs.distribute_dofs(fe);
+    number_dofs_as_serial(dofs, serial_dofs);
+    // (deal.II's distributed vectors, which DataOut makes, want each
+    // process's dofs a contiguous range of numbers, which shares by ranges
+    // of cells give (distribute_mesh); should a mesh not, every process
+    // keeps the whole mesh rather than wait for ever)
+    if (processes::maximum(dofs.locally_owned_dofs().is_contiguous() ? 0 : 1) >
+        0)
+      {
+        dofs.reinit(*serial);
+        mesh = std::move(serial);
+        dofs.distribute_dofs(fe);
+        nodes_of_whole_mesh = WholeMeshNodes();
+      }
+    element_space->attach(dofs);
+    return axis_dofs;
   }
 
 

@@ -214,6 +214,25 @@ namespace glissade
     serialize_state(Archive &archive);
 
   private:
+    /**
+     * The constructor's checks of the element space against the mesh and
+     * the hypothesis: a space that cannot take a body of revolution, or
+     * follow a second-order file's curved edges.
+     */
+    void
+    check_space_for_mesh(const dealii::Triangulation<2> &serial,
+                         bool                            second_order,
+                         const std::string              &where) const;
+
+    /**
+     * The mesh and its dofs, from the whole mesh `serial`: kept whole on
+     * one process, shared out on several (the serial mesh's dofs let go
+     * once the element constraints, the axis and the nodes are known).
+     * Returns the radial dofs on the axis of a body of revolution.
+     */
+    std::vector<dealii::types::global_dof_index>
+    place_mesh_and_dofs(std::unique_ptr<dealii::Triangulation<2>> serial);
+
     /** The cells this process integrates in a run on several processes. */
     const std::vector<dealii::DoFHandler<2>::active_cell_iterator> &
     own_cells();
