@@ -15,7 +15,7 @@
 #include <glissade/io/plotting.h>
 #include <glissade/io/pvd_index.h>
 #include <glissade/lac/mumps_factorization.h>
-#include <glissade/solver/newton_criterion.h>
+#include <glissade/solver/newton_loop.h>
 #include <glissade/solver/simulation.h>
 #include <glissade/solver/time_integrator.h>
 
@@ -106,7 +106,13 @@ namespace glissade
     contact_problem =
       std::make_unique<ContactProblem>(scene, all_bodies, timer);
     integrator->attach(*contact_problem);
-    output = std::make_unique<SceneOutput>(scene.output,
+    newton_loop = std::make_unique<NewtonLoop>(scene.newton,
+                                               all_bodies,
+                                               *contact_problem,
+                                               timer,
+                                               stats,
+                                               shows_progress());
+    output      = std::make_unique<SceneOutput>(scene.output,
                                            all_bodies,
                                            *contact_problem,
                                            timer);
@@ -150,289 +156,15 @@ namespace glissade
   bool
   Simulation::newton(const double t_start, const double t)
   {
-    const NewtonSettings &settings = scene.newton;
     for (auto &b : all_bodies)
       b->set_time(t);
     // Detection at the start of the load step, from the current state.
     contact_problem->begin_step(t_start, t);
     integrator->begin_step(t_start, t);
-
-    residual_history.clear();
-    failure_cause.clear();
-    double size = 0.;
-    for (auto &b : all_bodies)
-      size = std::max(size, b->size());
-    NewtonCriterion criterion(settings.residual_tolerance,
-                              settings.displacement_tolerance,
-                              size,
-                              n_dofs());
-
-    // At small strain every body's tangent is the same matrix through the
-    // increment (K_e kept, the inertia's and damping's terms fixed by the
-    // step, pressures on the undeformed body): a correction after the
-    // first is exact with the factorisation the first made. Where each
-    // body is solved alone (the condensed contact method) the iterations
-    // after the first then assemble the residual alone, which tests
-    // convergence and drives that correction: a quasi-static or dynamic
-    // step makes one tangent instead of three (Body::residual_alone_is_
-    // cheap). The tangent is assembled again where a factorisation follows
-    // (a node that went behind the master).
-    bool affine_bodies = true;
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      affine_bodies = affine_bodies &&
-                      all_bodies[b]->residual_alone_is_cheap() &&
-                      !contact_problem->solves_body(b);
-
-    bool factorized_last_iteration = false;
-    for (unsigned int iteration = 0; iteration <= settings.max_iterations;
-         ++iteration)
-      {
-        double     residual = 0., scale = 0.;
-        const bool with_tangent = !affine_bodies || iteration == 0;
-        const bool admissible = assemble_bodies(residual, scale, with_tangent);
-        // (on several processes: each decision below is taken alike by all
-        // of them only if they hold the same numbers)
-        processes::check_identical(residual, "the Newton residual");
-        if (!admissible || !std::isfinite(residual))
-          {
-            failure_cause = assembly_failure();
-            return false;
-          }
-        criterion.add_residual(iteration, residual, scale);
-        const double scaled = scale > 0. ? residual / scale : residual;
-        residual_history.push_back(scaled);
-
-        // At least one correction per step (NewtonCriterion): at iteration
-        // 0 the prescribed displacements of the new time are not applied.
-        const bool converged = criterion.converged();
-        // A converged state with a slave node behind the master that was
-        // not active (beyond the alert distance at the start of the
-        // increment) is not a solution: iterate on with that node.
-        const unsigned int newly_active =
-          converged && !contact_problem->empty() &&
-              contact_problem->position_law() ?
-            contact_problem->activate_penetrating_nodes() :
-            0;
-        if (converged && newly_active == 0)
-          {
-            iterations_of_step += iteration;
-            stats.newton_iterations += iteration;
-            return true;
-          }
-        if (newly_active > 0 && debug_log::at(1))
-          debug_log::stream()
-            << "  it " << iteration << ": " << newly_active
-            << " slave nodes went behind the master; now active" << std::endl;
-        if (iteration == settings.max_iterations)
-          break;
-        if (criterion.diverges())
-          {
-            failure_cause = "Newton diverges: the residual grew by more than "
-                            "1e8 over its first value";
-            return false;
-          }
-
-        // A correction that only confirms a converged state for the
-        // displacement test is solved with the last factorisation
-        // (NewtonCriterion::confirms_only), once per factorisation; the
-        // contact's own terms are those of the current state all the same.
-        // Affine bodies keep the first iteration's factorisation through
-        // the increment (exact for them).
-        const bool previous_tangent =
-          settings.last_correction_with_previous_tangent && newly_active == 0 &&
-          ((factorized_last_iteration && criterion.confirms_only()) ||
-           (affine_bodies && iteration > 0));
-        factorized_last_iteration = !previous_tangent;
-        if (!with_tangent && !previous_tangent)
-          {
-            // (the same state: the same residual, now with its tangent)
-            double again = 0., again_scale = 0.;
-            if (!assemble_bodies(again, again_scale, true))
-              {
-                failure_cause = assembly_failure();
-                return false;
-              }
-          }
-
-        // Predictor: the contact-free step of every body; then the contact
-        // correction on the condensed system; then the update.
-        std::vector<Vector<double>> du(all_bodies.size());
-        if (!predict(previous_tangent, du))
-          return false;
-        if (!contact_problem->empty() && !contact_problem->correct(du))
-          {
-            failure_cause =
-              "the contact problem: " + contact_problem->last_result().message;
-            if (shows_progress())
-              std::cout << "    contact: "
-                        << contact_problem->last_result().message << std::endl;
-            return false;
-          }
-        double last_increment = 0., displacement_norm = 0.;
-        update_bodies(du, last_increment, displacement_norm);
-        criterion.add_correction(last_increment, displacement_norm);
-        if (!contact_problem->empty())
-          contact_problem->update_state();
-        if (debug_log::at(1))
-          log_iteration(
-            iteration, scaled, du, last_increment, displacement_norm);
-        if (!std::isfinite(last_increment))
-          {
-            failure_cause = "the Newton correction is not finite (a singular "
-                            "tangent: a body or a rigid-body mode without "
-                            "support?)";
-            return false;
-          }
-      }
-    stats.newton_iterations += settings.max_iterations;
-    failure_cause = "no convergence in Newton/Maximum iterations = " +
-                    std::to_string(settings.max_iterations);
-    return false;
-  }
-
-
-
-  bool
-  Simulation::assemble_bodies(double    &residual,
-                              double    &scale,
-                              const bool with_tangent)
-  {
-    TimerOutput::Scope scope(timer, timing::assembly);
-    // (the last iteration's contact algebra and factorisations' workspace
-    // are free: their pages go back before the new tangent is made)
-    return_freed_memory();
-    // The bodies are independent until the contact correction: one task
-    // each, on both cores (the same arithmetic as one after the other). The
-    // factorisations stay in sequence: they call the threaded BLAS, and two
-    // at once took 1.7 times as long (doc/performance.md).
-    // What a body's assembly throws (a boundary datum that is not finite:
-    // an input error naming it) is rethrown here, the first body's first,
-    // as the sequential loop would have.
-    std::vector<char>               assembled(all_bodies.size());
-    std::vector<std::exception_ptr> thrown(all_bodies.size());
-    Threads::TaskGroup<void>        tasks;
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      tasks += Threads::new_task([&, b]() {
-        try
-          {
-            assembled[b] = all_bodies[b]->assemble(with_tangent);
-          }
-        catch (...)
-          {
-            thrown[b] = std::current_exception();
-          }
-      });
-    tasks.join_all();
-    for (const std::exception_ptr &e : thrown)
-      if (e)
-        std::rethrow_exception(e);
-    bool   admissible       = true;
-    double residual_squared = 0.;
-    scale                   = 0.;
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      {
-        admissible = assembled[b] && admissible;
-        residual_squared += std::pow(all_bodies[b]->residual_norm(), 2);
-        scale = std::max(scale, all_bodies[b]->force_scale());
-      }
-    residual = std::sqrt(residual_squared);
-    return admissible;
-  }
-
-
-
-  std::string
-  Simulation::assembly_failure() const
-  {
-    std::string cause;
-    for (auto &b : all_bodies)
-      if (!b->assembly_problem().empty())
-        cause += (cause.empty() ? "" : "; ") + b->assembly_problem();
-    if (cause.empty())
-      cause = "the residual overflows double precision (loads or prescribed "
-              "displacements too large for the bodies' stiffness?)";
-    return cause;
-  }
-
-
-
-  bool
-  Simulation::predict(const bool                   previous_tangent,
-                      std::vector<Vector<double>> &du)
-  {
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      {
-        // (with the sparse contact method, the contact step solves the
-        // bodies in contact together)
-        if (contact_problem->solves_body(b))
-          continue;
-        try
-          {
-            TimerOutput::Scope scope(timer, timing::factorization);
-            if (previous_tangent)
-              ++stats.n_reused_factorizations;
-            else
-              all_bodies[b]->system().factorize();
-            // (the condensed method and a body out of contact read the
-            // factor alone until the next assembly, which makes the tangent
-            // again: with the previous factor too)
-            all_bodies[b]->system().release_tangent();
-          }
-        catch (const std::runtime_error &e)
-          {
-            // A singular tangent: a structural limit point (free rigid-body
-            // motions are refused before computing, or regularised where
-            // contact holds them).
-            failure_cause = "the tangent of body '" + all_bodies[b]->name() +
-                            "' cannot be factorised: " + e.what();
-            return false;
-          }
-        TimerOutput::Scope scope(timer, timing::predictor);
-        all_bodies[b]->system().solve(all_bodies[b]->system().right_hand_side(),
-                                      du[b]);
-      }
-    // (the factorisations' workspace, before the contact algebra's blocks)
-    return_freed_memory();
+    if (!newton_loop->solve())
+      return false;
+    iterations_of_step += newton_loop->iterations();
     return true;
-  }
-
-
-
-  void
-  Simulation::update_bodies(const std::vector<Vector<double>> &du,
-                            double                            &increment_norm,
-                            double &displacement_norm)
-  {
-    double increment_squared = 0., displacement_squared = 0.;
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      {
-        all_bodies[b]->update(du[b]);
-        increment_squared += du[b].norm_sqr();
-        displacement_squared += all_bodies[b]->displacement().norm_sqr();
-      }
-    increment_norm    = std::sqrt(increment_squared);
-    displacement_norm = std::sqrt(displacement_squared);
-  }
-
-
-
-  void
-  Simulation::log_iteration(const unsigned int                 iteration,
-                            const double                       scaled_residual,
-                            const std::vector<Vector<double>> &du,
-                            const double                       increment_norm,
-                            const double displacement_norm) const
-  {
-    for (unsigned int b = 0; b < all_bodies.size(); ++b)
-      debug_log::stream() << "    body " << b << " |du| " << du[b].l2_norm()
-                          << " max " << du[b].linfty_norm() << " |u| "
-                          << all_bodies[b]->displacement().l2_norm()
-                          << std::endl;
-    debug_log::stream() << "  it " << iteration << " |R|/F " << scaled_residual
-                        << " |du| " << increment_norm << " |u| "
-                        << displacement_norm << " active "
-                        << contact_problem->n_active() << " sweeps "
-                        << contact_problem->last_result().sweeps << std::endl;
   }
 
 
@@ -494,12 +226,13 @@ namespace glissade
                 << scene.load_program.max_cut_back_depth
                 << " cut-backs. Scaled residuals |R|/max(|F_int|, |F_ext|) "
                    "of the last attempt:";
-        for (const double r : residual_history)
+        for (const double r : newton_loop->residuals())
           message << ' ' << std::setprecision(3) << r;
-        if (residual_history.empty())
+        if (newton_loop->residuals().empty())
           message << " none (its first assembly failed)";
-        if (!failure_cause.empty())
-          message << ". Cause of the last attempt's failure: " << failure_cause;
+        if (!newton_loop->failure_cause().empty())
+          message << ". Cause of the last attempt's failure: "
+                  << newton_loop->failure_cause();
         // (the state is the last converged one again: what it shows)
         for (const auto &pair : contact_problem->contact_pairs())
           if (const std::string fold = describe_folding_corner(*pair);
@@ -715,7 +448,7 @@ namespace glissade
     std::cout << "increment " << std::setw(5) << increment << "/" << n_total
               << "  t = " << std::setw(10) << t << "  Newton iterations "
               << std::setw(2) << iterations << "  |R|/F = " << std::scientific
-              << std::setprecision(2) << residual_history.back()
+              << std::setprecision(2) << newton_loop->residuals().back()
               << std::defaultfloat << std::setprecision(6)
               << (contact_problem->empty() ?
                     std::string() :

@@ -6,6 +6,7 @@
 #include <glissade/io/history_writer.h>
 #include <glissade/io/run_report.h>
 #include <glissade/io/scene_output.h>
+#include <glissade/solver/newton_loop.h>
 #include <glissade/solver/time_integrator.h>
 
 #include <functional>
@@ -87,7 +88,7 @@ namespace glissade
     const std::vector<double> &
     last_residuals() const
     {
-      return residual_history;
+      return newton_loop->residuals();
     }
 
     const HistoryWriter &
@@ -117,46 +118,10 @@ namespace glissade
     timing_table() const;
 
   private:
-    /** One Newton solve from the stored state (at t_start) to t; false if it
-     * failed. */
+    /** One Newton solve from the stored state (at t_start) to t, by the
+     *  NewtonLoop; false if it failed. */
     bool
     newton(const double t_start, const double t);
-
-    /**
-     * Every body's residual and tangent (the residual alone if
-     * with_tangent is false), one task per body: the residual's norm over
-     * all bodies and the largest force scale; false if an assembly met an
-     * inadmissible state (an inverted element).
-     */
-    bool
-    assemble_bodies(double &residual, double &scale, bool with_tangent = true);
-
-    /** What made an assembly fail, for failure_cause. */
-    std::string
-    assembly_failure() const;
-
-    /**
-     * The contact-free step du of every body that the contact step does
-     * not solve (factorising its tangent unless previous_tangent); false,
-     * with failure_cause, if a tangent cannot be factorised.
-     */
-    bool
-    predict(const bool                           previous_tangent,
-            std::vector<dealii::Vector<double>> &du);
-
-    /** Applies du to every body: the norms of du and of the displacement. */
-    void
-    update_bodies(const std::vector<dealii::Vector<double>> &du,
-                  double                                    &increment_norm,
-                  double                                    &displacement_norm);
-
-    /** A Newton iteration's lines of the debug log. */
-    void
-    log_iteration(const unsigned int                         iteration,
-                  const double                               scaled_residual,
-                  const std::vector<dealii::Vector<double>> &du,
-                  const double                               increment_norm,
-                  const double displacement_norm) const;
 
     bool
     advance(const double t_start, const double t_end, const unsigned int depth);
@@ -236,8 +201,6 @@ namespace glissade
     void
     serialize_state(Archive &archive);
 
-    /** Why the last Newton attempt failed, in words (empty if it did not). */
-    std::string            failure_cause;
     const SceneDescription scene;
     /** Every timed part of the run (never printed by itself). */
     dealii::TimerOutput                timer;
@@ -248,7 +211,8 @@ namespace glissade
     std::unique_ptr<HistoryWriter>  history;
     /** The VTU, PVD and contact files written as the run goes. */
     std::unique_ptr<SceneOutput> output;
-    std::vector<double>          residual_history;
+    /** The Newton iterations of a step (its residuals, why it failed). */
+    std::unique_ptr<NewtonLoop> newton_loop;
     /** Counters; times restored from a checkpoint (0 in a fresh run). */
     RunStatistics stats;
     /**
