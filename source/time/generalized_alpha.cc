@@ -17,15 +17,16 @@ namespace glissade
 
   namespace
   {
-    /** The method's four parameters. */
+    /** The method's four parameters (Newmark's: alpha_m = alpha_f = 0). */
     struct AlphaParameters
     {
       double alpha_m = 0., alpha_f = 0., beta = 0.25, gamma = 0.5;
     };
 
     /**
-     * The generalised-alpha method: Newmark's update of u and v from a_n+1,
-     * the equation of motion at the intermediate point
+     * The generalised-alpha method, of which Newmark's scheme is the member
+     * alpha_m = alpha_f = 0 (newmark.cc makes it so): Newmark's update of u and
+     * v from a_n+1, the equation of motion at the intermediate point
      *
      *   M a_n+1-alpha_m + C v_n+1-alpha_f + F_int,n+1-alpha_f =
      *   F_ext,n+1-alpha_f,   x_n+1-alpha = (1 - alpha) x_n+1 + alpha x_n,
@@ -79,7 +80,14 @@ namespace glissade
         const double c_a = 1. / (p.beta * dt * dt);
         const double c_M = (1. - p.alpha_m) / (1. - p.alpha_f) * c_a;
         const double c_v = p.gamma / (p.beta * dt);
-        return {c_M, c_v, c_a, contact_impulse_weight() * dt - c_v / c_M};
+        // (w dt - c_v / c_M, written so that Newmark's is (1/2 - gamma) dt
+        // to the bit)
+        return {c_M,
+                c_v,
+                c_a,
+                (contact_impulse_weight() -
+                 p.gamma * ((1. - p.alpha_f) / (1. - p.alpha_m))) *
+                  dt};
       }
 
       double
@@ -98,11 +106,15 @@ namespace glissade
       start_state_forces(const StartState &state,
                          Vector<double>   &carried) const override
       {
+        // (Newmark's rows with mass carry nothing of the start state)
         const double scale = 1. / (1. - p.alpha_f);
-        carried            = state.forces;
+        carried.reinit(state.forces.size());
         if (p.alpha_f != 0.)
-          carried.add(-1., state.mass_damping_force());
-        carried *= p.alpha_f * scale;
+          {
+            carried = state.forces;
+            carried.add(-1., state.mass_damping_force());
+            carried *= p.alpha_f * scale;
+          }
         if (p.alpha_m != 0.)
           carried.add(-p.alpha_m * scale, state.mass_times_acceleration());
         carried_by_rows_without_mass(state, carried);
@@ -184,6 +196,18 @@ namespace glissade
                          "(alpha = 1/3); use Scheme = generalized-alpha "
                          "for a smaller one");
     return hilber_hughes_taylor(rho_inf);
+  }
+
+
+
+  std::unique_ptr<TimeScheme>
+  make_alpha_method(const double alpha_m,
+                    const double alpha_f,
+                    const double beta,
+                    const double gamma)
+  {
+    return std::make_unique<GeneralizedAlphaScheme>(
+      AlphaParameters{alpha_m, alpha_f, beta, gamma});
   }
 
 

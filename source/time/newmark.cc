@@ -23,68 +23,12 @@ namespace glissade
       double beta  = 0.25;
       double gamma = 0.5;
     };
-
-    /**
-     * Newmark's scheme: from the state (u_n, v_n, a_n) over a step dt, with
-     * the predictors u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n and v~ = v_n
-     * + (1 - gamma) dt a_n, the end state's a(u) = (u - u~) / (beta dt^2)
-     * and v(u) = v~ + gamma dt a(u), and the equation of motion that of the
-     * end state. The smooth forces by Newmark's rule, the contact by the
-     * step's impulse P = dt F_c / 2, its law on the end positions, every
-     * node within the alert distance (the quasi-static step's): its work
-     * over the step, P . du / dt, is -P_N g_n - mu P_N |slip| <= 0, so the
-     * contact never creates energy (doc/theory.md, "Energy").
-     */
-    class NewmarkScheme : public TimeScheme
-    {
-    public:
-      explicit NewmarkScheme(const NewmarkSettings &settings)
-        : settings(settings)
-      {}
-
-      StepCoefficients
-      predict(const Vector<double> &u_n,
-              const Vector<double> &v_n,
-              const Vector<double> &a_n,
-              const double          dt,
-              Vector<double>       &u_predicted,
-              Vector<double>       &v_predicted) const override
-      {
-        const double beta = settings.beta, gamma = settings.gamma;
-        u_predicted = u_n;
-        u_predicted.add(dt, v_n, dt * dt * (0.5 - beta), a_n);
-        v_predicted = v_n;
-        v_predicted.add((1. - gamma) * dt, a_n);
-        const double c_a = 1. / (beta * dt * dt);
-        return {c_a, gamma / (beta * dt), c_a, (0.5 - gamma) * dt};
-      }
-
-      double
-      contact_impulse_weight() const override
-      {
-        return 0.5;
-      }
-
-      bool
-      predictor_takes_acceleration() const override
-      {
-        return true;
-      }
-
-      void
-      start_state_forces(const StartState &state,
-                         Vector<double>   &carried) const override
-      {
-        // The rows with mass carry nothing of the start state; those
-        // without mass the trapezoidal rule's mean, f_n+1 + f_n + F_c = 0.
-        carried.reinit(state.forces.size());
-        carried_by_rows_without_mass(state, carried);
-      }
-
-    private:
-      const NewmarkSettings settings;
-    };
   } // namespace
+
+
+
+  std::unique_ptr<TimeScheme>
+  make_alpha_method(double alpha_m, double alpha_f, double beta, double gamma);
 
 
 
@@ -132,10 +76,23 @@ namespace glissade
 
 
 
+  /**
+   * Newmark's scheme: from the state (u_n, v_n, a_n) over a step dt, with
+   * the predictors u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n and v~ = v_n
+   * + (1 - gamma) dt a_n, the end state's a(u) = (u - u~) / (beta dt^2)
+   * and v(u) = v~ + gamma dt a(u), and the equation of motion that of the
+   * end state. The smooth forces by Newmark's rule, the contact by the
+   * step's impulse P = dt F_c / 2, its law on the end positions, every
+   * node within the alert distance (the quasi-static step's): its work
+   * over the step, P . du / dt, is -P_N g_n - mu P_N |slip| <= 0, so the
+   * contact never creates energy (doc/theory.md, "Energy"). Its formulas
+   * are the generalised-alpha method's with alpha_m = alpha_f = 0
+   * (generalized_alpha.cc).
+   */
   std::unique_ptr<TimeScheme>
   make_newmark_scheme(const std::any &settings)
   {
-    return std::make_unique<NewmarkScheme>(
-      std::any_cast<NewmarkSettings>(settings));
+    const auto newmark = std::any_cast<NewmarkSettings>(settings);
+    return make_alpha_method(0., 0., newmark.beta, newmark.gamma);
   }
 } // namespace glissade
