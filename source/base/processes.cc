@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,6 +41,42 @@ namespace glissade
     {
       return dealii::Utilities::MPI::job_supports_mpi() ? MPI_COMM_WORLD :
                                                           MPI_COMM_SELF;
+    }
+
+
+
+    std::string
+    mesh_held_here(const bool mesh_is_distributed, const unsigned int n_cells)
+    {
+      if (!shared_out())
+        return "";
+      return mesh_is_distributed ?
+               ", mesh shared out (" + std::to_string(n_cells) +
+                 " cells held here)" :
+               ", whole mesh on every process";
+    }
+
+
+
+    VtuFiles
+    vtu_files(const std::string &stem)
+    {
+      VtuFiles files;
+      if (!shared_out())
+        {
+          files.own_piece = stem + ".vtu";
+          return files;
+        }
+      for (unsigned int p = 0; p < count(); ++p)
+        {
+          std::ostringstream name;
+          name << stem << "." << std::setw(4) << std::setfill('0') << p
+               << ".vtu";
+          files.pieces.push_back(name.str());
+        }
+      files.own_piece = files.pieces[rank()];
+      files.record    = stem + ".pvtu";
+      return files;
     }
 
 

@@ -27,19 +27,6 @@ namespace glissade
   {
     using BodyCell = DoFHandler<2>::active_cell_iterator;
 
-    /** The cell of WorkStream's item: a cell, or a place in a list of them. */
-    const BodyCell &
-    body_cell_of(const BodyCell &cell)
-    {
-      return cell;
-    }
-
-    const BodyCell &
-    body_cell_of(const std::vector<BodyCell>::const_iterator &place)
-    {
-      return *place;
-    }
-
     /**
      * An axisymmetric body: refuses a space that cannot take one and a mesh
      * with a vertex at x = r < 0, naming the cell.
@@ -297,7 +284,7 @@ namespace glissade
                          source,
                          description.name,
                          reference_size),
-      processes::count() > 1 ? &own_cells() : nullptr);
+      own_cells());
   }
 
 
@@ -339,7 +326,7 @@ namespace glissade
     const bool of_revolution = body_hypothesis.strains_the_hoop();
     const auto boundary_ids  = serial->get_boundary_ids();
     const bool distribute =
-      processes::count() > 1 &&
+      processes::shared_out() &&
       std::find(boundary_ids.begin(), boundary_ids.end(), cut_boundary_id) ==
         boundary_ids.end();
     const FiniteElement<2>              &fe = element_space->finite_element();
@@ -435,42 +422,31 @@ namespace glissade
     const auto         boundary_evaluator = evaluators->borrow();
     const unsigned int n_local            = cell_integration->dofs_per_cell();
     const auto         integrate =
-      [&](const auto &cell_or_position, Scratch &scratch, Contribution &data) {
-        cell_integration->integrate(body_cell_of(cell_or_position),
-                                    solution,
-                                    inertia_terms.get(),
-                                    scratch,
-                                    data);
+      [&](const std::vector<BodyCell>::const_iterator &place,
+          Scratch                                     &scratch,
+          Contribution                                &data) {
+        cell_integration->integrate(
+          *place, solution, inertia_terms.get(), scratch, data);
       };
     const auto add = [&](const Contribution &data) {
       add_cell(
         data, *boundary_evaluator, internal_forces, viscous_forces, admissible);
     };
-    if (processes::count() == 1)
-      WorkStream::run(dofs.begin_active(),
-                      dofs.end(),
-                      integrate,
-                      add,
-                      Scratch(*evaluators, n_local),
-                      Contribution(n_local));
-    else
-      {
-        // On several processes each integrates its share of the cells
-        // (own_cells) and the sums are made whole on every process.
-        WorkStream::run(own_cells().begin(),
-                        own_cells().end(),
-                        integrate,
-                        add,
-                        Scratch(*evaluators, n_local),
-                        Contribution(n_local));
-        linear_system->sum_right_hand_side_over_processes();
-        processes::sum(internal_forces.begin(), internal_forces.size());
-        processes::sum(viscous_forces.begin(), viscous_forces.size());
-        processes::sum(unconstrained_residual.begin(),
-                       unconstrained_residual.size());
-        problem    = processes::first_message(problem);
-        admissible = problem.empty();
-      }
+    // Each process integrates its share of the cells (own_cells: all of
+    // them on one process) and the sums are made whole on every process.
+    WorkStream::run(own_cells().begin(),
+                    own_cells().end(),
+                    integrate,
+                    add,
+                    Scratch(*evaluators, n_local),
+                    Contribution(n_local));
+    linear_system->sum_right_hand_side_over_processes();
+    processes::sum(internal_forces.begin(), internal_forces.size());
+    processes::sum(viscous_forces.begin(), viscous_forces.size());
+    processes::sum(unconstrained_residual.begin(),
+                   unconstrained_residual.size());
+    problem    = processes::first_message(problem);
+    admissible = problem.empty();
     if (inertia_terms)
       inertia_terms->set_viscous_forces(viscous_forces);
 
@@ -520,8 +496,6 @@ namespace glissade
     // as distribute_mesh gives it.
     if (mesh_is_distributed())
       return cell->is_active() && cell->is_locally_owned();
-    if (processes::count() == 1)
-      return cell->is_active();
     const auto [first, end] = processes::share(n_mesh_cells);
     return cell->is_active() && cell->active_cell_index() >= first &&
            cell->active_cell_index() < end;

@@ -19,7 +19,7 @@ namespace glissade
                                      AffineConstraints<double> &&constraints,
                                      const bool                  symmetric,
                                      RigidMotionSprings        &&springs,
-                                     const CellList             *cells_here)
+                                     const CellList             &cells_here)
     : dofs(dofs)
     , space(space)
     , symmetric(symmetric)
@@ -28,24 +28,17 @@ namespace glissade
     , springs(std::move(springs))
     , port(dofs.n_dofs())
   {
-    DynamicSparsityPattern dsp(dofs.n_dofs());
-    if (cells_here == nullptr)
-      DoFTools::make_sparsity_pattern(dofs, dsp, iteration_constraints, false);
-    else
+    // The couplings of this process's cells, as make_sparsity_pattern
+    // makes them for all.
+    DynamicSparsityPattern               dsp(dofs.n_dofs());
+    std::vector<types::global_dof_index> local_dofs;
+    for (const auto &cell : cells_here)
       {
-        // On several processes the tangent holds the integrals of this
-        // process's cells alone, and MUMPS sums the processes' entries:
-        // the couplings of those cells, as make_sparsity_pattern makes
-        // them for all.
-        std::vector<types::global_dof_index> local_dofs;
-        for (const auto &cell : *cells_here)
-          {
-            local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(local_dofs);
-            iteration_constraints.add_entries_local_to_global(local_dofs,
-                                                              dsp,
-                                                              false);
-          }
+        local_dofs.resize(cell->get_fe().n_dofs_per_cell());
+        cell->get_dof_indices(local_dofs);
+        iteration_constraints.add_entries_local_to_global(local_dofs,
+                                                          dsp,
+                                                          false);
       }
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
@@ -113,8 +106,7 @@ namespace glissade
     std::vector<double> diagonal(tangent.m());
     for (types::global_dof_index i = 0; i < tangent.m(); ++i)
       diagonal[i] = tangent.diag_element(i);
-    if (processes::count() > 1)
-      processes::sum(diagonal);
+    processes::sum(diagonal);
     return diagonal;
   }
 
@@ -141,8 +133,8 @@ namespace glissade
   void
   BodyLinearSystem::factorize()
   {
-    // The springs as stiff as an average dof of the whole tangent (on
-    // several processes, added to process 0's share alone).
+    // The springs as stiff as an average dof of the whole tangent (added
+    // once, to one process's share).
     double k = 0.;
     if (!springs.springs().empty())
       {
@@ -151,7 +143,7 @@ namespace glissade
         k /= tangent.m();
       }
     const std::vector<double> assembled =
-      springs.add_to(tangent, k, processes::rank() == 0);
+      springs.add_to(tangent, k, processes::adds_terms_held_once());
     const bool refactored = factorization.factorize(tangent);
     springs.take_from(tangent, assembled);
     if (refactored)

@@ -122,49 +122,35 @@ namespace glissade
                                       DataOutBase::VtkFlags::no_compression :
                                       DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    // On several processes, this process's share of the cells (those it
-    // integrates, Body::is_own_cell).
-    const unsigned int n_processes = processes::count();
-    if (n_processes > 1)
-      data_out.set_cell_selection(
-        [&body](const Triangulation<2>::cell_iterator &cell) {
-          return body.is_own_cell(cell);
-        });
+    // This process's share of the cells (those it integrates,
+    // Body::is_own_cell: all of them on one process).
+    data_out.set_cell_selection(
+      [&body](const Triangulation<2>::cell_iterator &cell) {
+        return body.is_own_cell(cell);
+      });
     data_out.build_patches(element_space.mapping(),
                            degree,
                            DataOut<2>::curved_inner_cells);
 
     std::ostringstream stem;
     stem << body.name() << "-" << std::setw(5) << std::setfill('0') << index;
-    const auto piece = [&](const unsigned int process) {
-      std::ostringstream name;
-      name << stem.str() << "." << std::setw(4) << std::setfill('0') << process
-           << ".vtu";
-      return name.str();
-    };
-    const std::string name =
-      n_processes == 1 ? stem.str() + ".vtu" : piece(processes::rank());
-    AtomicFile file(directory + "/" + name);
+    const processes::VtuFiles files = processes::vtu_files(stem.str());
+    AtomicFile                file(directory + "/" + files.own_piece);
     file.write_and_commit([&](std::ostream &out) { data_out.write_vtu(out); });
-    if (n_processes == 1)
-      return name;
-    std::vector<std::string> pieces;
-    for (unsigned int p = 0; p < n_processes; ++p)
-      pieces.push_back(piece(p));
-    if (processes::writes_files())
+    if (!files.record.empty() && processes::writes_files())
       {
         // (deal.II 9.4 stamps the record with the date whatever the flags
         // say: taken out, so that a scene gives the same bytes every time)
         std::ostringstream text;
-        data_out.write_pvtu_record(text, pieces);
+        data_out.write_pvtu_record(text, files.pieces);
         std::string       record_text = text.str();
         const std::size_t comment     = record_text.find("<!--");
         const std::size_t comment_end = record_text.find("-->\n", comment);
         if (comment != std::string::npos && comment_end != std::string::npos)
           record_text.erase(comment, comment_end + 4 - comment);
-        AtomicFile record(directory + "/" + stem.str() + ".pvtu");
+        AtomicFile record(directory + "/" + files.record);
         record.write_and_commit([&](std::ostream &out) { out << record_text; });
       }
-    return stem.str() + ".pvtu";
+    return files.whole();
   }
 } // namespace glissade

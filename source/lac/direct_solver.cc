@@ -53,7 +53,7 @@ namespace glissade
   bool
   DirectSolver::factorize(const SparseMatrix<double> &matrix)
   {
-    if (processes::count() > 1)
+    if (processes::shared_out())
       return factorize_on_processes(matrix);
     // deal.II stores rows (diagonal first); UMFPACK wants sorted columns.
     // We hand it the rows as the columns of A^T and solve with A^T later.

@@ -1,10 +1,12 @@
 // Checkpoint and restart of a Simulation: the state that the next increment
 // starts from, written with Boost serialization, so that a run stopped
-// half-way continues to the same output files as an uninterrupted one.
+// half-way continues to the same output files as an uninterrupted one; and
+// the stop on SIGINT or SIGTERM, which leaves such a checkpoint.
 
 #include <deal.II/base/timer.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/interruption.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/io/atomic_file.h>
@@ -156,5 +158,39 @@ namespace glissade
                          std::string("is unreadable (") + e.what() + ")");
       }
     return increment;
+  }
+
+
+
+  bool
+  Simulation::checkpoint_due(const unsigned int increment) const
+  {
+    return scene.checkpoint.interval > 0 &&
+           increment % scene.checkpoint.interval == 0;
+  }
+
+
+
+  void
+  Simulation::stop_on_signal(const int          signal,
+                             const unsigned int increment,
+                             const unsigned int n_total,
+                             const double       t,
+                             const bool         last)
+  {
+    // (the state of this increment is in a checkpoint: the periodic one,
+    // or one written now)
+    if (!checkpoint_due(increment))
+      write_checkpoint(increment);
+    output->write_interrupted_state(increment, t, last);
+    write_summary_file("stopped by " + interruption::signal_name(signal) +
+                       " after increment " + std::to_string(increment) +
+                       " of " + std::to_string(n_total) +
+                       "; continue with --restart\n");
+    throw RunInterrupted(
+      interruption::signal_name(signal) +
+      " received: stopped after increment " + std::to_string(increment) +
+      " of " + std::to_string(n_total) + " (t = " + std::to_string(t) +
+      "), its state in " + checkpoint_file());
   }
 } // namespace glissade

@@ -86,18 +86,13 @@ namespace glissade
         // 0's count of the cells it holds)
         const Body &body = *all_bodies.back();
         if (shows_progress())
-          std::cout << "body '" << description.name << "': " << body.n_cells()
-                    << " cells, " << body.n_dofs() << " dofs"
-                    << (processes::count() == 1 ?
-                          "" :
-                        body.mesh_is_distributed() ?
-                          ", mesh shared out (" +
-                            std::to_string(
-                              body.triangulation().n_active_cells()) +
-                            " cells held here)" :
-                          ", whole mesh on every process")
-                    << " (set up, elapsed " << duration(setup.wall_time())
-                    << ")" << std::endl;
+          std::cout
+            << "body '" << description.name << "': " << body.n_cells()
+            << " cells, " << body.n_dofs() << " dofs"
+            << processes::mesh_held_here(body.mesh_is_distributed(),
+                                         body.triangulation().n_active_cells())
+            << " (set up, elapsed " << duration(setup.wall_time()) << ")"
+            << std::endl;
       });
     mistakes.throw_if_any();
     // (a dynamic scheme's inertia holds the rigid motions that no support
@@ -250,48 +245,12 @@ namespace glissade
 
 
   void
-  Simulation::write_last_converged_state(const unsigned int increment)
-  {
-    try
-      {
-        // (every process: each writes its piece of the bodies' VTU)
-        output->write_last_converged_state(increment, current_time);
-        if (!writes_files)
-          return;
-        std::cerr << "glissade: the last converged state (increment "
-                  << increment << ", t = " << current_time << ") is in "
-                  << scene.output.directory << std::endl;
-        output->draw_pictures();
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr << "glissade: the last converged state could not be "
-                     "written: "
-                  << e.what() << std::endl;
-      }
-  }
-
-
-
-  void
-  Simulation::write_summary_file(const std::string &ending) const
-  {
-    if (!writes_files)
-      return;
-    AtomicFile file(scene.output.directory + "/summary.txt");
-    file.stream() << summary() << '\n' << timing_table() << ending;
-    file.commit();
-  }
-
-
-
-  void
   Simulation::keep_factors_where_asked() const
   {
     const LinearSolverSettings &settings = scene.linear_solver;
     if (!settings.factors_out_of_core)
       return;
-    if (processes::count() == 1)
+    if (!processes::shared_out())
       {
         std::cout << "note: " << scene.source
                   << ": Linear solver/Factors out of core applies to runs on "
@@ -434,121 +393,5 @@ namespace glissade
                 << " (t = " << current_time << ") from " << checkpoint_file()
                 << std::endl;
     return restart_increment;
-  }
-
-
-
-  void
-  Simulation::report_increment(const unsigned int increment,
-                               const unsigned int n_total,
-                               const double       t,
-                               const unsigned int iterations,
-                               const std::string &remaining) const
-  {
-    std::cout << "increment " << std::setw(5) << increment << "/" << n_total
-              << "  t = " << std::setw(10) << t << "  Newton iterations "
-              << std::setw(2) << iterations << "  |R|/F = " << std::scientific
-              << std::setprecision(2) << newton_loop->residuals().back()
-              << std::defaultfloat << std::setprecision(6)
-              << (contact_problem->empty() ?
-                    std::string() :
-                    "  active contact nodes " +
-                      std::to_string(contact_problem->n_active()))
-              << "  " << remaining << std::endl;
-  }
-
-
-
-  bool
-  Simulation::checkpoint_due(const unsigned int increment) const
-  {
-    return scene.checkpoint.interval > 0 &&
-           increment % scene.checkpoint.interval == 0;
-  }
-
-
-
-  void
-  Simulation::stop_on_signal(const int          signal,
-                             const unsigned int increment,
-                             const unsigned int n_total,
-                             const double       t,
-                             const bool         last)
-  {
-    // (the state of this increment is in a checkpoint: the periodic one,
-    // or one written now)
-    if (!checkpoint_due(increment))
-      write_checkpoint(increment);
-    output->write_interrupted_state(increment, t, last);
-    write_summary_file("stopped by " + interruption::signal_name(signal) +
-                       " after increment " + std::to_string(increment) +
-                       " of " + std::to_string(n_total) +
-                       "; continue with --restart\n");
-    throw RunInterrupted(
-      interruption::signal_name(signal) +
-      " received: stopped after increment " + std::to_string(increment) +
-      " of " + std::to_string(n_total) + " (t = " + std::to_string(t) +
-      "), its state in " + checkpoint_file());
-  }
-
-
-
-  RunStatistics
-  Simulation::statistics() const
-  {
-    RunStatistics                       total = stats;
-    const std::map<std::string, double> sections =
-      timer.get_summary_data(TimerOutput::total_wall_time);
-    const auto seconds = [&](const char *section) {
-      const auto found = sections.find(section);
-      return found == sections.end() ? 0. : found->second;
-    };
-    total.assembly_seconds += seconds(timing::assembly);
-    total.factorization_seconds += seconds(timing::factorization);
-    total.solve_seconds += seconds(timing::predictor);
-    total.detection_seconds += seconds(timing::detection);
-    total.surface_build_seconds += seconds(timing::surface);
-    total.compliance_seconds += seconds(timing::compliance);
-    total.local_solve_seconds += seconds(timing::local_solve);
-    total.output_seconds += seconds(timing::output);
-    total.checkpoint_seconds += seconds(timing::checkpoints);
-    for (const auto &body : all_bodies)
-      {
-        total.n_cholesky += body->system().direct_solver().n_cholesky;
-        total.n_lu += body->system().direct_solver().n_lu;
-        total.n_unchanged_tangents += body->system().direct_solver().n_reused;
-      }
-    return total;
-  }
-
-
-
-  unsigned int
-  Simulation::n_dofs() const
-  {
-    unsigned int n = 0;
-    for (const auto &b : all_bodies)
-      n += b->n_dofs();
-    return n;
-  }
-
-
-
-  std::string
-  Simulation::summary() const
-  {
-    std::string text =
-      run_summary(statistics(), n_dofs(), !contact_problem->empty());
-    if (const EnergyAccount *energies = integrator->energies())
-      text += "\n" + energy_report(*energies);
-    return text;
-  }
-
-
-
-  std::string
-  Simulation::timing_table() const
-  {
-    return glissade::timing_table(statistics(), !contact_problem->empty());
   }
 } // namespace glissade

@@ -38,6 +38,66 @@ namespace glissade
       return rank() == 0;
     }
 
+    /**
+     * True when the run's work is shared out over several processes: each
+     * then holds its share of the bodies' meshes (distribute_mesh) and
+     * integrates its share of the cells, and the tangents are factorised
+     * by all of them together (MUMPS). The one question the layer answers
+     * where one process and many take different roads; everything else
+     * (sums, shares, gathers) reads the same for one process or many.
+     */
+    inline bool
+    shared_out()
+    {
+      return count() > 1;
+    }
+
+    /**
+     * True on the one process that adds the terms the scene holds once (a
+     * body's rigid-motion springs, the contact's own entries, a known
+     * vector) to its share of a matrix or vector that is then summed over
+     * the processes (by sum, or by MUMPS): every process adds its share,
+     * and the sum counts those terms once.
+     */
+    inline bool
+    adds_terms_held_once()
+    {
+      return rank() == 0;
+    }
+
+    /**
+     * How much of a body's mesh this process holds, for the progress line
+     * that announces the body: "" on one process, else ", mesh shared out
+     * (N cells held here)" or ", whole mesh on every process".
+     */
+    std::string
+    mesh_held_here(const bool mesh_is_distributed, const unsigned int n_cells);
+
+    /**
+     * The files a VTU written by every process's share of the cells goes to
+     * (the stem without extension): one process writes "stem.vtu"; several
+     * write a piece each, "stem.RRRR.vtu", and the writer the record
+     * "stem.pvtu" that names them, which is then the file to cite.
+     */
+    struct VtuFiles
+    {
+      /** The file this process writes. */
+      std::string own_piece;
+      /** Every process's piece, in rank order (empty on one process). */
+      std::vector<std::string> pieces;
+      /** The record of the pieces, "" on one process. */
+      std::string record;
+      /** The file that holds the whole: the record, or the one piece. */
+      const std::string &
+      whole() const
+      {
+        return record.empty() ? own_piece : record;
+      }
+    };
+
+    VtuFiles
+    vtu_files(const std::string &stem);
+
     /** The communicator of the run (MPI_COMM_SELF without MPI). */
     MPI_Comm
     communicator();

@@ -39,17 +39,17 @@ namespace glissade
      * The system on `dofs` under `constraints`: which dofs they constrain
      * never changes during a run (only the prescribed values do), so the
      * sparsity pattern is built once. Cholesky where `symmetric` (no
-     * follower pressure), LU otherwise. On several processes, `cells_here` are
-     * the cells whose integrals this process adds (Body::own_cells): its
-     * tangent is then its share, their couplings alone, and MUMPS sums the
-     * shares; nullptr on one process, where the tangent is whole.
+     * follower pressure), LU otherwise. `cells_here` are the cells whose
+     * integrals this process adds (Body::own_cells): its tangent holds
+     * their couplings alone, and on several processes MUMPS sums the
+     * shares (on one process they are all the cells, the tangent whole).
      */
     BodyLinearSystem(const dealii::DoFHandler<2>        &dofs,
                      const ElementSpace                 &space,
                      dealii::AffineConstraints<double> &&constraints,
                      const bool                          symmetric,
                      RigidMotionSprings                &&springs,
-                     const CellList                     *cells_here);
+                     const CellList                     &cells_here);
 
     /**
      * The constraints of the current iteration (the element's own and the

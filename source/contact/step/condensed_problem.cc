@@ -549,7 +549,7 @@ namespace glissade
         // (the way is chosen from all the loads: every process chooses
         // alike)
         dense[b] = dense_is_cheaper(body);
-        if (processes::count() > 1)
+        if (!products.forms_every_column())
           {
             body.column_dofs.clear();
             body.loads.clear();
@@ -601,7 +601,7 @@ namespace glissade
     // over the processes.
     const int           t = n_given + augmented_row.size();
     std::vector<double> z(t, 0.);
-    if (processes::rank() == 0)
+    if (processes::adds_terms_held_once())
       z = y;
     for (std::size_t j = first_force; j < end_force; ++j)
       if (const double r_j = r[j / 2][j % 2]; r_j != 0.)

@@ -233,11 +233,11 @@ namespace glissade
   {
     matrix = 0.;
     rhs    = 0.;
-    // On several processes each body's tangent is the process's share, and
-    // MUMPS sums the processes' entries: the contact's own entries are
-    // added by process 0 alone. (The right-hand side is MUMPS's on process
-    // 0; every process forms it.)
-    const double contact_share = processes::rank() == 0 ? 1. : 0.;
+    // Each body's tangent is the process's share, and MUMPS sums the
+    // processes' entries: the contact's own entries are added by one
+    // process alone. (The right-hand side is MUMPS's on process 0; every
+    // process forms it.)
+    const double contact_share = processes::adds_terms_held_once() ? 1. : 0.;
     for (const unsigned int b : in_contact)
       {
         const SparseMatrix<double> &K = bodies[b]->system().tangent_matrix();

@@ -114,6 +114,14 @@ namespace glissade
                first_term <= j - n_forces && j - n_forces < end_term;
     }
 
+    /** Whether this process forms every column (it does on one process). */
+    bool
+    forms_every_column() const
+    {
+      return end_force - first_force == n_forces &&
+             end_term - first_term == n_terms;
+    }
+
     /** The column of load j (F's: this process's share only). */
     double *
     column(const std::size_t j)
