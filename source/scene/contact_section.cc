@@ -102,6 +102,38 @@ namespace glissade
                       "",
                       Patterns::Anything(),
                       "The declared contact area on the master body.");
+    declare_settings(prm);
+    prm.declare_entry(
+      "Frame update",
+      "iteration",
+      Patterns::Selection("iteration|increment"),
+      "Kept for old scenes: the active nodes are re-projected at every "
+      "Newton iteration, with the contact's own terms in the tangent. "
+      "'increment' (the frame frozen over an increment) was removed and "
+      "is refused with a message.");
+    // The local solver's settings belong to the scene (section Contact
+    // solver): the active nodes of all pairs form one local problem.
+    // These entries are kept for old scenes.
+    for (const auto &[entry, owner] :
+         {std::pair<const char *, const char *>{"Beta", "Beta"},
+          {"Tolerance", "Tolerance"},
+          {"Maximum sweeps", "Maximum sweeps"}})
+      prm.declare_entry(entry,
+                        "",
+                        Patterns::Anything(),
+                        std::string("Kept for old scenes: empty, or this "
+                                    "pair's value of Contact solver/") +
+                          owner +
+                          ", which replaces the section's (every pair "
+                          "that gives one must give the same).");
+    declare_obstacle(prm);
+  }
+
+
+
+  void
+  ContactDescription::declare_settings(ParameterHandler &prm)
+  {
     prm.declare_entry("Surface",
                       "faceted",
                       Patterns::Selection(SurfaceRegistry::names_as_pattern(
@@ -132,33 +164,17 @@ namespace glissade
                       "start of an increment start it inactive; they join "
                       "the condensed problem only if an iteration would "
                       "take them behind the master.");
-    prm.declare_entry(
-      "Frame update",
-      "iteration",
-      Patterns::Selection("iteration|increment"),
-      "Kept for old scenes: the active nodes are re-projected at every "
-      "Newton iteration, with the contact's own terms in the tangent. "
-      "'increment' (the frame frozen over an increment) was removed and "
-      "is refused with a message.");
     prm.declare_entry("Friction coefficient",
                       "0",
                       Patterns::Double(0.),
                       "Coulomb's mu (0: frictionless).");
-    // The local solver's settings belong to the scene (section Contact
-    // solver): the active nodes of all pairs form one local problem.
-    // These entries are kept for old scenes.
-    for (const auto &[entry, owner] :
-         {std::pair<const char *, const char *>{"Beta", "Beta"},
-          {"Tolerance", "Tolerance"},
-          {"Maximum sweeps", "Maximum sweeps"}})
-      prm.declare_entry(entry,
-                        "",
-                        Patterns::Anything(),
-                        std::string("Kept for old scenes: empty, or this "
-                                    "pair's value of Contact solver/") +
-                          owner +
-                          ", which replaces the section's (every pair "
-                          "that gives one must give the same).");
+  }
+
+
+
+  void
+  ContactDescription::declare_obstacle(ParameterHandler &prm)
+  {
     prm.enter_subsection("Obstacle");
     prm.declare_entry("Type",
                       "line",
@@ -250,15 +266,7 @@ namespace glissade
     master_body    = prm.get("Master body");
     master = master_body == "rigid" ? MasterKind::obstacle : MasterKind::body;
     master_boundary = prm.get("Master boundary");
-    surface         = prm.get("Surface");
-    discretisation  = prm.get("Discretisation");
-    if (master == MasterKind::body)
-      surface_settings = SurfaceRegistry::parse_parameters(
-        prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);
-    force_transfer = prm.get("Force transfer") == "spline" ?
-                       ContactDescription::ForceTransfer::spline :
-                       ContactDescription::ForceTransfer::segment;
-    alert_distance = prm.get_double("Alert distance");
+    parse_settings(prm);
     if (prm.get("Frame update") == "increment")
       throw InputError(
         entry + "/Frame update",
@@ -267,13 +275,6 @@ namespace glissade
         "frame is updated at every Newton iteration and converges "
         "quadratically in the true frame (doc/contact.md); delete this "
         "line");
-    friction = prm.get_double("Friction coefficient");
-    if (friction > 100.)
-      throw InputError(entry + "/Friction coefficient",
-                       "is " + std::to_string(friction) +
-                         ": above 100 the local solver's cone is too "
-                         "sharp to converge in double precision; such "
-                         "a contact sticks for any load, so use 100");
     prm.enter_subsection("Obstacle");
     obstacle = prm.get("Type");
     obstacle_point =
@@ -287,7 +288,45 @@ namespace glissade
                                           obstacle,
                                           entry + "/Obstacle");
     prm.leave_subsection();
+    check_sides(body_names);
+    if (obstacle_motion.size() != 2)
+      throw InputError(entry + "/Obstacle/Motion",
+                       "expected two expressions 'x(t), y(t)'");
+    entry_format::check_expressions(obstacle_motion,
+                                    entry + "/Obstacle/Motion");
+    entry_format::check_expressions({obstacle_rotation},
+                                    entry + "/Obstacle/Rotation");
+  }
 
+
+
+  void
+  ContactDescription::parse_settings(SectionReader &prm)
+  {
+    surface        = prm.get("Surface");
+    discretisation = prm.get("Discretisation");
+    if (master == MasterKind::body)
+      surface_settings = SurfaceRegistry::parse_parameters(
+        prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);
+    force_transfer = prm.get("Force transfer") == "spline" ?
+                       ContactDescription::ForceTransfer::spline :
+                       ContactDescription::ForceTransfer::segment;
+    alert_distance = prm.get_double("Alert distance");
+    friction       = prm.get_double("Friction coefficient");
+    if (friction > 100.)
+      throw InputError(entry + "/Friction coefficient",
+                       "is " + std::to_string(friction) +
+                         ": above 100 the local solver's cone is too "
+                         "sharp to converge in double precision; such "
+                         "a contact sticks for any load, so use 100");
+  }
+
+
+
+  void
+  ContactDescription::check_sides(
+    const std::vector<std::string> &body_names) const
+  {
     const auto known = [&](const std::string &b) {
       return std::find(body_names.begin(), body_names.end(), b) !=
              body_names.end();
@@ -306,12 +345,5 @@ namespace glissade
       throw InputError(entry + "/Slave boundary", "must be given");
     if (master == MasterKind::body && master_boundary.empty())
       throw InputError(entry + "/Master boundary", "must be given");
-    if (obstacle_motion.size() != 2)
-      throw InputError(entry + "/Obstacle/Motion",
-                       "expected two expressions 'x(t), y(t)'");
-    entry_format::check_expressions(obstacle_motion,
-                                    entry + "/Obstacle/Motion");
-    entry_format::check_expressions({obstacle_rotation},
-                                    entry + "/Obstacle/Rotation");
   }
 } // namespace glissade

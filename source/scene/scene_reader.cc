@@ -367,6 +367,7 @@ namespace glissade
         ContactDescription::declare_parameters(prm);
         prm.leave_subsection();
       }
+    AutomaticContact::declare_parameters(prm);
 
     for (const auto &name : body_names)
       {
@@ -415,6 +416,11 @@ namespace glissade
         prm.leave_subsection();
         scene.contacts.push_back(contact);
       });
+    prm.check([&]() {
+      for (auto &contact :
+           AutomaticContact::parse_parameters(prm, body_names, contact_names))
+        scene.contacts.push_back(std::move(contact));
+    });
     for (const auto &name : body_names)
       {
         BodyDescription body;

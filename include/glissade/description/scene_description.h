@@ -443,6 +443,59 @@ namespace glissade
     void
     parse_parameters(SectionReader                  &prm,
                      const std::vector<std::string> &body_names);
+
+    /**
+     * What a pair has beside its two sides (surface, its own entries, force
+     * transfer, discretisation, alert distance, friction): the entries that
+     * the subsection Automatic contact shares with a pair's.
+     */
+    static void
+    declare_settings(dealii::ParameterHandler &prm);
+    /** Reads them; `entry` and `master` are set before. */
+    void
+    parse_settings(SectionReader &prm);
+    /** The sides' checks: bodies that exist, two bodies, boundaries given. */
+    void
+    check_sides(const std::vector<std::string> &body_names) const;
+
+  private:
+    /** The subsection Obstacle of a pair. */
+    static void
+    declare_obstacle(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Contact found among several bodies (Scene/Contact bodies): each listed
+   * body's boundary against every other's, as pairs written by hand would
+   * be, with the settings of the subsection Automatic contact
+   * (source/scene/automatic_contact_section.cc).
+   */
+  struct AutomaticContact
+  {
+    /** A listed body and the boundary of it that may touch the others. */
+    struct Side
+    {
+      std::string body;
+      std::string boundary;
+    };
+    std::vector<Side> sides;
+    /** Two: each body of a couple slave on the other in turn; one: the
+     *  body listed first is the slave. */
+    unsigned int passes = 2;
+
+    /** Scene/Contact bodies and the subsection Automatic contact. */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    /**
+     * The pairs of every couple of listed bodies, named "<slave> on
+     * <master>", with the section's settings; none if no body is listed.
+     * `declared` are the names of the pairs written by hand, which the
+     * generated ones must not take.
+     */
+    static std::vector<ContactDescription>
+    parse_parameters(SectionReader                  &prm,
+                     const std::vector<std::string> &body_names,
+                     const std::vector<std::string> &declared);
   };
 
   /** Everything a .prm file describes. */
