@@ -28,6 +28,7 @@ namespace glissade
     , slave_body(slave)
     , master_body(master)
     , timer(timer)
+    , self_contact(master == &slave)
   {
     const std::string entry = description.entry;
 
@@ -92,6 +93,33 @@ namespace glissade
     discretisation = ContactDiscretisation::create(
       description.discretisation,
       {description, slave, master, *master_surface, slave_nodes, slave_ids});
+    if (self_contact)
+      {
+        if (description.discretisation != "node-to-segment")
+          throw InputError(entry + "/Discretisation",
+                           "self-contact (Master body = Slave body) is "
+                           "implemented for node-to-segment contact, not " +
+                             description.discretisation);
+        // A node may see the surface no deeper behind than half a slave
+        // face: deeper, it would see through the body to its back.
+        double length = 0.;
+        for (const auto &[a, b] : faces)
+          length += slave_nodes[a].reference_position.distance(
+            slave_nodes[b].reference_position);
+        std::map<unsigned int, int>     master_node_of_vertex;
+        const std::vector<unsigned int> chain = master_surface->vertices();
+        for (unsigned int k = 0; k < chain.size(); ++k)
+          master_node_of_vertex[chain[k]] = k;
+        for (ContactNode &node : slave_nodes)
+          {
+            node.facing                        = true;
+            node.facing_view.reach             = description.alert_distance;
+            node.facing_view.penetration_limit = 0.5 * length / faces.size();
+            const auto on_master = master_node_of_vertex.find(node.vertex);
+            node.facing_view.master_node =
+              on_master == master_node_of_vertex.end() ? -1 : on_master->second;
+          }
+      }
     if (master_surface->coating() != nullptr &&
         description.discretisation != "node-to-segment")
       throw InputError(entry + "/Discretisation",
@@ -316,6 +344,45 @@ namespace glissade
     TimerOutput::Scope scope(timer, timing::surface);
     master_surface->update(step_start, step_end);
     discretisation->update();
+    if (self_contact)
+      update_facing_views();
+  }
+
+
+
+  void
+  ContactPair::update_facing_views()
+  {
+    // Each face's normal at the current state, turned outward as the
+    // reference outward normal of its ends says, summed at its two nodes
+    // (weighted by the face's length).
+    const Vector<double> &u        = slave_body.displacement();
+    const auto            position = [&](const ContactNode &node) {
+      return node.reference_position +
+             Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])});
+    };
+    std::vector<Tensor<1, 2>> normal(slave_nodes.size());
+    for (const auto &[a, b] : faces)
+      {
+        const Tensor<1, 2> along =
+          position(slave_nodes[b]) - position(slave_nodes[a]);
+        const Tensor<1, 2> reference_along =
+          slave_nodes[b].reference_position - slave_nodes[a].reference_position;
+        const Tensor<1, 2> reference_outward =
+          slave_outward_normal.at(slave_nodes[a].vertex) +
+          slave_outward_normal.at(slave_nodes[b].vertex);
+        const double       side = reference_along[1] * reference_outward[0] -
+                                  reference_along[0] * reference_outward[1] >=
+                                0. ?
+                                    1. :
+                                    -1.;
+        const Tensor<1, 2> face_normal({side * along[1], -side * along[0]});
+        normal[a] += face_normal;
+        normal[b] += face_normal;
+      }
+    for (unsigned int k = 0; k < slave_nodes.size(); ++k)
+      slave_nodes[k].facing_view.outward_normal =
+        normal[k] / std::max(normal[k].norm(), 1e-300);
   }
 
 

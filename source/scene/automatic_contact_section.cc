@@ -67,7 +67,7 @@ namespace glissade
         throw InputError(where,
                          "lists one body ('" + sides[0].body +
                            "'): contact among bodies needs two or more "
-                           "(self-contact is not implemented)");
+                           "(a body on itself: write its self-contact pair)");
       return sides;
     }
   } // namespace

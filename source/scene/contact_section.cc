@@ -338,9 +338,6 @@ namespace glissade
       throw InputError(entry + "/Master body",
                        "there is no body '" + master_body +
                          "' (or use 'rigid')");
-    if (master_body == slave_body)
-      throw InputError(entry + "/Master body",
-                       "a body cannot be its own master");
     if (slave_boundary.empty())
       throw InputError(entry + "/Slave boundary", "must be given");
     if (master == MasterKind::body && master_boundary.empty())

@@ -261,9 +261,15 @@ namespace glissade
     bool
     project(ContactNode &node, const bool keep_segment = false) const;
 
-    /** The surface at the current state (and the increment's end time). */
+    /** The surface at the current state (and the increment's end time);
+     *  for self-contact, each node's FacingView too. */
     void
     update_surface();
+
+    /** Self-contact: each node's outward normal at the current state, in
+     *  its FacingView. */
+    void
+    update_facing_views();
 
     /**
      * Refuses a rigid obstacle whose normal points, at every slave node,
@@ -292,5 +298,7 @@ namespace glissade
     std::map<unsigned int, dealii::Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */
     double step_start = 0., step_end = 0.;
+    /** The master is the slave's own body (self-contact). */
+    bool self_contact = false;
   };
 } // namespace glissade

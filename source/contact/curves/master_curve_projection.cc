@@ -370,6 +370,41 @@ namespace glissade
 
 
 
+  MasterCurve::Projection
+  MasterCurve::project_among(
+    const Point                                   &x,
+    const double                                   reach,
+    const std::function<bool(unsigned int)>       &allowed,
+    const std::function<bool(const Projection &)> &accept) const
+  {
+    Projection best;
+    if (n_segments() == 0 || !std::isfinite(x[0]) || !std::isfinite(x[1]))
+      return best;
+    std::vector<Candidate> candidates;
+    for (const auto &[box_distance2, segment] :
+         boxes_within(x, reach * reach, {}))
+      {
+        if (best.valid && box_distance2 > best.distance * best.distance)
+          break;
+        if (!allowed(segment))
+          continue;
+        candidates.clear();
+        minimize_on_segment(*this, segment, x, candidates);
+        for (const Candidate &c : candidates)
+          {
+            if (best.valid && !(c.distance < best.distance))
+              continue;
+            const Projection p =
+              projection_from(c.segment, c.s, c.iterations, x);
+            if (p.valid && accept(p))
+              best = p;
+          }
+      }
+    return best;
+  }
+
+
+
   std::vector<std::pair<double, unsigned int>>
   MasterCurve::boxes_within(const Point                     &x,
                             const double                     reach2,

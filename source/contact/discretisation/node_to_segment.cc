@@ -38,7 +38,9 @@ namespace glissade
                   node.segment_switches >= 2,
                   node.at_vertex,
                   node.status == BiPotentialSolver::NodeStatus::stick};
-        const SurfacePoint point = surface.project(x, keep);
+        const SurfacePoint point =
+          node.facing ? surface.project_facing(x, keep, node.facing_view) :
+                        surface.project(x, keep);
         if (!point.valid)
           return false;
         if (keep_segment && node.segment >= 0 && point.segment != node.segment)

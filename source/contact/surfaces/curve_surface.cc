@@ -271,7 +271,61 @@ namespace glissade
           return point_at(x, keep.segment, s);
       }
 
-    const auto p = curve->project({{x[0], x[1]}});
+    return surface_point_of(x, curve->project({{x[0], x[1]}}));
+  }
+
+
+
+  SurfacePoint
+  CurveSurface::project_facing(const Point<2>    &x,
+                               const SegmentHint &keep,
+                               const FacingView  &view) const
+  {
+    if (keep.segment >= 0)
+      {
+        double s = keep.s;
+        if (project_on_segment(x,
+                               keep.segment,
+                               s,
+                               keep.held ? std::max(extension(), 0.5) :
+                                           extension()))
+          return point_at(x, keep.segment, s);
+      }
+    // A node on the chain is the slave of the part of its surface that
+    // comes later along the chain, never of the part before it: two
+    // stretches of one surface that face each other are then held once,
+    // by the nodes of the earlier one, and not twice (each node on the
+    // other's segments, the node-on-node case doubling every constraint,
+    // which leaves the condensed problem singular). Nor of the segments
+    // that meet its own place (the next one on each side included), whose
+    // points face the same way as the node.
+    const int  own        = view.master_node;
+    const int  n_segments = curve->n_segments();
+    const auto allowed    = [&](const unsigned int segment) {
+      return own < 0 ||
+             (int(segment) >= own + 2 &&
+              (!chain.closed || int(segment) + 2 < own + n_segments));
+    };
+    const auto faces_the_node = [&](const MasterCurve::Projection &p) {
+      return p.normal[0] * view.outward_normal[0] +
+                 p.normal[1] * view.outward_normal[1] <
+               0. &&
+             p.gap >= -view.penetration_limit;
+    };
+    return surface_point_of(x,
+                            curve->project_among({{x[0], x[1]}},
+                                                 view.reach +
+                                                   view.penetration_limit,
+                                                 allowed,
+                                                 faces_the_node));
+  }
+
+
+
+  SurfacePoint
+  CurveSurface::surface_point_of(const Point<2>                &x,
+                                 const MasterCurve::Projection &p) const
+  {
     if (!p.valid)
       return SurfacePoint();
     SurfacePoint point = point_at(x, p.segment, p.s);

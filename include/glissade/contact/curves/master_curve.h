@@ -298,6 +298,21 @@ namespace glissade
     void
     set_nearest_node_search(const NearestNodeSearch &search);
 
+    /**
+     * Self-contact's projection: the closest point to x on the segments
+     * whose bounding box lies within `reach` of x and that `allowed` admits,
+     * among the projections that `accept` admits (the part of a body's
+     * surface that faces a node of the same surface); invalid if there is
+     * none. On each segment, steps 3 and 7 of project(); the segments are
+     * searched nearest box first, and those whose box is farther than the
+     * best point found are not searched. O(N) box tests.
+     */
+    Projection
+    project_among(const Point                                   &x,
+                  double                                         reach,
+                  const std::function<bool(unsigned int)>       &allowed,
+                  const std::function<bool(const Projection &)> &accept) const;
+
     /** Index of a node closest to x (lowest index on ties for brute force). */
     unsigned int
     nearest_node(const Point &x) const;

@@ -5,6 +5,7 @@
 
 #include <glissade/contact/discretisation/contact_linearization.h>
 #include <glissade/contact/local_solvers/bipotential_solver.h>
+#include <glissade/contact/surfaces/master_surface.h>
 
 #include <array>
 
@@ -63,6 +64,14 @@ namespace glissade
      * contact tangent at the last projection (rebuilt by every one).
      */
     ContactLinearization linearization;
+
+    /**
+     * Self-contact only (`facing`): what the projection needs to find the
+     * part of the body's surface that faces the node (FacingView), set by
+     * the pair from the current state before each projection.
+     */
+    bool       facing = false;
+    FacingView facing_view;
 
     /**
      * The state a checkpoint holds (Boost serialization): the reactions and

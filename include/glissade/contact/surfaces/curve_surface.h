@@ -37,8 +37,23 @@ namespace glissade
     SurfacePoint
     project(const dealii::Point<2> &x, const SegmentHint &keep) const override;
 
+    /**
+     * The closest point facing x (MasterCurve::project_among), with the
+     * node's own segments and their neighbours left out.
+     */
+    SurfacePoint
+    project_facing(const dealii::Point<2> &x,
+                   const SegmentHint      &keep,
+                   const FacingView       &view) const override;
+
     std::vector<dealii::types::global_dof_index>
     dofs() const override;
+
+    std::vector<unsigned int>
+    vertices() const override
+    {
+      return chain.vertices;
+    }
 
     bool
     is_rigid() const override
@@ -122,6 +137,12 @@ namespace glissade
      */
     SurfacePoint
     corner_point(const dealii::Point<2> &x, unsigned int segment) const;
+
+    /** The surface point of the curve's projection p of x (none if p is
+     *  not valid; at a convex corner, the curve's bisecting normal). */
+    SurfacePoint
+    surface_point_of(const dealii::Point<2>        &x,
+                     const MasterCurve::Projection &p) const;
 
     const Body                  &master;
     const MasterChain            chain;

@@ -122,6 +122,26 @@ namespace glissade
   };
 
   /**
+   * What self-contact (a pair whose master is its slave's own body) asks
+   * of a projection, so that a node finds the part of the surface that
+   * faces it rather than its own segments, or the body's back: the
+   * master point's normal against the node's current outward normal
+   * (n_master . n_slave < 0), no farther than `reach` and no deeper behind
+   * than `penetration_limit` (a node that deep would see through the
+   * body). A node on the master (its place `master_node` on the chain,
+   * else -1) takes only the segments past the next one after its place:
+   * two stretches of one surface that face each other are held once, by
+   * the earlier one's nodes (CurveSurface::project_facing).
+   */
+  struct FacingView
+  {
+    dealii::Tensor<1, 2> outward_normal;
+    int                  master_node       = -1;
+    double               reach             = 0.;
+    double               penetration_limit = 0.;
+  };
+
+  /**
    * A master surface of a contact pair: a deformable body's boundary seen
    * through a smoothing (faceted, B-spline, Hermite edges) or a rigid
    * analytic obstacle. One class per kind, registered in
@@ -156,6 +176,30 @@ namespace glissade
      */
     virtual SurfacePoint
     project(const dealii::Point<2> &x, const SegmentHint &keep = {}) const = 0;
+
+    /**
+     * Self-contact's counterpart of x (FacingView): with a `keep` hint as
+     * project(), else the closest point that faces x. Surfaces on a body's
+     * boundary answer it; the default (a rigid obstacle, never its own
+     * slave) has none.
+     */
+    /**
+     * The mesh vertices along the surface, in its order (a body's boundary
+     * chain); empty for a rigid obstacle.
+     */
+    virtual std::vector<unsigned int>
+    vertices() const
+    {
+      return {};
+    }
+
+    virtual SurfacePoint
+    project_facing(const dealii::Point<2> & /*x*/,
+                   const SegmentHint & /*keep*/,
+                   const FacingView & /*view*/) const
+    {
+      return SurfacePoint();
+    }
 
     /**
      * Every master dof that a point's weights can ever contain (empty for
