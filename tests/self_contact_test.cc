@@ -5,7 +5,9 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
+#include <array>
 #include <cmath>
+#include <memory>
 
 #include "test_tools.h"
 
@@ -22,18 +24,22 @@ namespace
    * itself. Held in x at the two points the plates first touch.
    */
   std::string
-  pinched_ring(const std::string &surface)
+  pinched_ring(const std::string &surface, const bool found = false)
   {
-    std::string prm = "subsection Scene\n set Bodies = ring\n"
-                      " set Contact pairs = top, bottom, inner\nend\n"
-                      "subsection Body ring\n subsection Mesh\n"
-                      "  set Type = ring\n  set Inner radius = 0.7\n"
-                      "  set Outer radius = 1\n  set Subdivisions = 96, 4\n"
-                      " end\n subsection Material\n"
-                      "  set Young modulus = 1000\n  set Poisson ratio = 0.3\n"
-                      " end\n subsection Boundary conditions\n"
-                      "  set Fixed = point(0, 1): x; point(0, -1): x\n"
-                      " end\nend\n";
+    std::string prm =
+      "subsection Scene\n set Bodies = ring\n" +
+      std::string(found ? " set Contact pairs = top, bottom\n"
+                          " set Contact bodies = ring: inner\n" :
+                          " set Contact pairs = top, bottom, inner\n") +
+      "end\n"
+      "subsection Body ring\n subsection Mesh\n"
+      "  set Type = ring\n  set Inner radius = 0.7\n"
+      "  set Outer radius = 1\n  set Subdivisions = 96, 4\n"
+      " end\n subsection Material\n"
+      "  set Young modulus = 1000\n  set Poisson ratio = 0.3\n"
+      " end\n subsection Boundary conditions\n"
+      "  set Fixed = point(0, 1): x; point(0, -1): x\n"
+      " end\nend\n";
     for (const auto &[name, side] :
          {std::pair<std::string, std::string>{"top", "1"}, {"bottom", "-1"}})
       prm += "subsection Contact " + name +
@@ -44,10 +50,11 @@ namespace
              "\n  set Motion = 0, " + (side == "1" ? "-" : "") +
              "0.8*t\n end\nend\n";
     return prm +
-           "subsection Contact inner\n set Slave body = ring\n"
-           " set Slave boundary = inner\n set Master body = ring\n"
-           " set Master boundary = inner\n set Surface = " +
-           surface +
+           (found ? "subsection Automatic contact\n set Self-contact = true\n" :
+                    "subsection Contact inner\n set Slave body = ring\n"
+                    " set Slave boundary = inner\n set Master body = ring\n"
+                    " set Master boundary = inner\n") +
+           " set Surface = " + surface +
            "\n set Alert distance = 0.02\nend\n"
            "subsection Output\n set Progress = false\nend\n"
            "subsection Newton\n set Residual tolerance = 1e-10\n"
@@ -208,4 +215,39 @@ GLISSADE_TEST(self_contact_pinched_ring)
       check(jump > 0. && jump <= after,
             surface + ": the plates' force jumps at first self-contact");
     }
+}
+
+// The same self-contact found by automatic contact (Contact bodies = ring:
+// inner, Self-contact = true): the pair 'ring on itself' gives the ring
+// the displacements and contact forces of the pair written by hand.
+GLISSADE_TEST(self_contact_found_by_automatic_contact)
+{
+  double                                     difference = 0., scale = 0.;
+  std::array<std::unique_ptr<Simulation>, 2> runs;
+  for (const bool found : {false, true})
+    {
+      runs[found] = std::make_unique<Simulation>(
+        SceneReader::read_string(pinched_ring("bspline", found), "ring"));
+      for (unsigned int k = 1; k <= 80; ++k)
+        runs[found]->advance_to(k / 80., "increment " + std::to_string(k));
+    }
+  const ContactPair &found = *runs[1]->contact().contact_pairs()[2];
+  check(found.name() == "ring on itself",
+        "the pair found is named '" + found.name() + "'");
+  for (const bool forces : {false, true})
+    {
+      const Body    &written_ring = runs[0]->body("ring");
+      const Body    &found_ring   = runs[1]->body("ring");
+      Vector<double> d            = forces ? written_ring.get_contact_forces() :
+                                             written_ring.displacement();
+      d -= forces ? found_ring.get_contact_forces() : found_ring.displacement();
+      difference = std::max(difference, d.linfty_norm());
+      scale = std::max(scale, written_ring.get_contact_forces().linfty_norm());
+    }
+  std::cout << "  'ring on itself' active nodes " << found.n_active()
+            << ", largest difference from the pair written " << difference
+            << std::endl;
+  check(found.n_active() >= 20, "no self-contact found");
+  check(difference <= 1e-10 * scale,
+        "automatic self-contact differs from the pair written");
 }

@@ -63,11 +63,6 @@ namespace glissade
                                "body '" + side.body + "' is listed twice");
           sides.push_back(side);
         }
-      if (sides.size() == 1)
-        throw InputError(where,
-                         "lists one body ('" + sides[0].body +
-                           "'): contact among bodies needs two or more "
-                           "(a body on itself: write its self-contact pair)");
       return sides;
     }
   } // namespace
@@ -97,6 +92,12 @@ namespace glissade
                       "in turn (two pairs, no body's side privileged); one: "
                       "the body listed first in Scene/Contact bodies is the "
                       "slave.");
+    prm.declare_entry("Self-contact",
+                      "false",
+                      Patterns::Bool(),
+                      "Each listed body's boundary against itself too: a "
+                      "pair '<body> on itself' (node-to-segment), as a pair "
+                      "whose Master body is its Slave body.");
     ContactDescription::declare_settings(prm);
     prm.leave_subsection();
   }
@@ -118,7 +119,13 @@ namespace glissade
     automatic.sides = read_sides(listed, body_names, where);
 
     prm.enter_subsection("Automatic contact");
-    automatic.passes = prm.get("Passes") == "one" ? 1 : 2;
+    automatic.passes       = prm.get("Passes") == "one" ? 1 : 2;
+    automatic.self_contact = prm.get_bool("Self-contact");
+    if (automatic.sides.size() == 1 && !automatic.self_contact)
+      throw InputError(where,
+                       "lists one body ('" + automatic.sides[0].body +
+                         "'): contact among bodies needs two or more, or "
+                         "Automatic contact/Self-contact = true");
     ContactDescription settings;
     settings.entry  = prm.file() + ": Automatic contact";
     settings.master = ContactDescription::MasterKind::body;
@@ -128,7 +135,8 @@ namespace glissade
     std::vector<ContactDescription> pairs;
     const auto add = [&](const Side &slave, const Side &master) {
       ContactDescription pair = settings;
-      pair.name               = slave.body + " on " + master.body;
+      pair.name               = slave.body + " on " +
+                  (master.body == slave.body ? "itself" : master.body);
       pair.entry =
         prm.file() + ": Automatic contact (pair '" + pair.name + "')";
       pair.slave_body      = slave.body;
@@ -152,6 +160,9 @@ namespace glissade
           if (automatic.passes == 2)
             add(sides[j], sides[i]);
         }
+    if (automatic.self_contact)
+      for (const Side &side : sides)
+        add(side, side);
     return pairs;
   }
 } // namespace glissade

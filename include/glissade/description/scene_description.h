@@ -482,6 +482,8 @@ namespace glissade
     /** Two: each body of a couple slave on the other in turn; one: the
      *  body listed first is the slave. */
     unsigned int passes = 2;
+    /** Each listed body's boundary against itself too ("<b> on itself"). */
+    bool self_contact = false;
 
     /** Scene/Contact bodies and the subsection Automatic contact. */
     static void
