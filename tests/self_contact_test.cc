@@ -2,6 +2,7 @@
 // Checked against the balance laws and the geometry of the deformed body,
 // not against the code's own figures.
 
+#include <glissade/base/input_error.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -250,4 +251,27 @@ GLISSADE_TEST(self_contact_found_by_automatic_contact)
   check(found.n_active() >= 20, "no self-contact found");
   check(difference <= 1e-10 * scale,
         "automatic self-contact differs from the pair written");
+}
+
+// Self-contact under a dynamic scheme is refused, with the pair named: its
+// contact was measured to create energy (the pinched ring under Newmark).
+GLISSADE_TEST(self_contact_refused_under_a_dynamic_scheme)
+{
+  std::string message = "accepted";
+  try
+    {
+      SceneReader::read_string(pinched_ring("bspline") +
+                                 "subsection Time integration\n"
+                                 " set Scheme = newmark\nend\n",
+                               "ring.prm",
+                               {"Body ring/Material/Density=1"});
+    }
+  catch (const InputError &e)
+    {
+      message = e.what();
+    }
+  std::cout << "  " << message << std::endl;
+  check(message.find("Contact inner/Master body: self-contact") !=
+          std::string::npos,
+        "self-contact under Newmark not refused");
 }
