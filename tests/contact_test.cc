@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "body_resultant.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -138,26 +139,8 @@ GLISSADE_TEST(contact_action_reaction)
       const Tensor<1, 2> slave = pair.total_force();
       // The master's share: the contact force vector summed over its value
       // dofs (derivative dofs carry moments, not force).
-      const Body        &lower   = simulation.body("lower");
-      const auto        &f       = lower.get_contact_forces();
-      const auto        &fe      = lower.space().finite_element();
-      const unsigned int per_dim = lower.space().components_per_displacement();
-      Tensor<1, 2>       master;
-      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-      std::vector<bool>                    counted(lower.n_dofs(), false);
-      for (const auto &cell : lower.dof_handler().active_cell_iterators())
-        {
-          cell->get_dof_indices(local);
-          for (unsigned int i = 0; i < local.size(); ++i)
-            {
-              const unsigned int c = fe.system_to_component_index(i).first;
-              if (c % per_dim == 0 && !counted[local[i]])
-                {
-                  counted[local[i]] = true;
-                  master[c / per_dim] += f(local[i]);
-                }
-            }
-        }
+      const Body        &lower  = simulation.body("lower");
+      const Tensor<1, 2> master = resultant(lower, lower.get_contact_forces());
       std::cout << "  " << surface << ": on the slave (" << slave
                 << "), on the master (" << master << ")" << std::endl;
       check((slave + master).norm() <= 1e-12 * slave.norm(),

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <memory>
 
+#include "body_resultant.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -63,26 +64,6 @@ namespace
            "subsection Contact solver\n set Tolerance = 1e-13\nend\n";
   }
 
-  /** The resultant of a force vector on a Q4 body's dofs. */
-  Tensor<1, 2>
-  resultant(const Body &body, const Vector<double> &f)
-  {
-    Tensor<1, 2>                         total;
-    const auto                          &fe = body.space().finite_element();
-    std::vector<bool>                    counted(body.n_dofs(), false);
-    std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-    for (const auto &cell : body.dof_handler().active_cell_iterators())
-      {
-        cell->get_dof_indices(local);
-        for (unsigned int i = 0; i < local.size(); ++i)
-          if (!counted[local[i]])
-            {
-              counted[local[i]] = true;
-              total[fe.system_to_component_index(i).first] += f(local[i]);
-            }
-      }
-    return total;
-  }
 
   /**
    * How far a node of the deformed inner boundary lies behind the polygon

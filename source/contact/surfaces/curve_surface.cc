@@ -257,20 +257,31 @@ namespace glissade
 
 
 
+  bool
+  CurveSurface::project_on_kept_segment(const Point<2>    &x,
+                                        const SegmentHint &keep,
+                                        SurfacePoint      &point) const
+  {
+    if (keep.segment < 0)
+      return false;
+    double s = keep.s;
+    if (!project_on_segment(x,
+                            keep.segment,
+                            s,
+                            keep.held ? std::max(extension(), 0.5) :
+                                        extension()))
+      return false;
+    point = point_at(x, keep.segment, s);
+    return true;
+  }
+
+
+
   SurfacePoint
   CurveSurface::project(const Point<2> &x, const SegmentHint &keep) const
   {
-    if (keep.segment >= 0)
-      {
-        double s = keep.s;
-        if (project_on_segment(x,
-                               keep.segment,
-                               s,
-                               keep.held ? std::max(extension(), 0.5) :
-                                           extension()))
-          return point_at(x, keep.segment, s);
-      }
-
+    if (SurfacePoint point; project_on_kept_segment(x, keep, point))
+      return point;
     return surface_point_of(x, curve->project({{x[0], x[1]}}));
   }
 
@@ -281,16 +292,8 @@ namespace glissade
                                const SegmentHint &keep,
                                const FacingView  &view) const
   {
-    if (keep.segment >= 0)
-      {
-        double s = keep.s;
-        if (project_on_segment(x,
-                               keep.segment,
-                               s,
-                               keep.held ? std::max(extension(), 0.5) :
-                                           extension()))
-          return point_at(x, keep.segment, s);
-      }
+    if (SurfacePoint point; project_on_kept_segment(x, keep, point))
+      return point;
     // A node on the chain is the slave of the part of its surface that
     // comes later along the chain, never of the part before it: two
     // stretches of one surface that face each other are then held once,

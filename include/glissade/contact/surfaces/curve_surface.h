@@ -138,6 +138,16 @@ namespace glissade
     SurfacePoint
     corner_point(const dealii::Point<2> &x, unsigned int segment) const;
 
+    /**
+     * The point of x on the segment a `keep` hint names, if the node may
+     * keep it (MasterSurface::project); false if there is none or it may
+     * not.
+     */
+    bool
+    project_on_kept_segment(const dealii::Point<2> &x,
+                            const SegmentHint      &keep,
+                            SurfacePoint           &point) const;
+
     /** The surface point of the curve's projection p of x (none if p is
      *  not valid; at a convex corner, the curve's bisecting normal). */
     SurfacePoint
