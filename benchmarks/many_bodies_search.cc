@@ -1,13 +1,16 @@
 // Benchmark (not a test): the contact search against the number of bodies
-// under automatic contact (issue 53). n identical annuli in a row, each
-// touching its neighbours, all listed in Scene/Contact bodies with two
-// passes: n (n - 1) pairs. Printed per n: the pairs, the boundary segments,
-// the time of one detection over every pair (ContactProblem::begin_step)
+// under automatic contact (issue 53). n identical annuli on a square grid,
+// each 0.02 from its neighbours (up to four touch within the alert
+// distance), all listed in Scene/Contact bodies with two passes. Printed
+// per n (10, 100, 1,000 by default): the pairs made (those of the couples
+// the broad phase finds within reach; the couples are n (n - 1) / 2), the
+// boundary segments, the time of one detection over every pair
+// (ContactProblem::begin_step: broad phase, then the pairs' projections)
 // and the growth exponent between successive n. A search that grows like
 // the segments (n log n) has an exponent near 1; one that searches every
-// couple's pairs, near 2.
+// couple, near 2.
 //
-//   glissade_many_bodies_benchmark [largest n = 32] [segments per ring = 48]
+//   glissade_many_bodies_benchmark [largest n = 1000] [segments per ring = 48]
 
 #include <deal.II/base/timer.h>
 
@@ -23,10 +26,12 @@ namespace
 {
   using namespace glissade;
 
-  /** n rings in a row, 0.02 apart, each held at its inner edge. */
+  /** n rings on a square grid, 0.02 apart, each held at its inner edge. */
   std::string
-  row_of_rings(const unsigned int n, const unsigned int segments)
+  grid_of_rings(const unsigned int n, const unsigned int segments)
   {
+    const unsigned int columns =
+      static_cast<unsigned int>(std::ceil(std::sqrt(double(n))));
     std::string names, listed, bodies;
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -35,8 +40,9 @@ namespace
         listed += (i ? ", " : "") + name + ": outer";
         bodies += "subsection Body " + name +
                   "\n subsection Mesh\n  set Type = ring\n  set Center = " +
-                  std::to_string(2.02 * i) +
-                  ", 0\n  set Inner radius = 0.5\n  set Outer radius = 1\n"
+                  std::to_string(2.02 * (i % columns)) + ", " +
+                  std::to_string(2.02 * (i / columns)) +
+                  "\n  set Inner radius = 0.5\n  set Outer radius = 1\n"
                   "  set Subdivisions = " +
                   std::to_string(segments) +
                   ", 1\n end\n"
@@ -54,10 +60,10 @@ namespace
 int
 main(int argc, char **argv)
 {
-  const unsigned int largest  = argc > 1 ? std::atoi(argv[1]) : 32;
+  const unsigned int largest  = argc > 1 ? std::atoi(argv[1]) : 1000;
   const unsigned int segments = argc > 2 ? std::atoi(argv[2]) : 48;
   std::printf("contact search under automatic contact: n rings of %u "
-              "boundary segments in a row, two passes\n",
+              "boundary segments on a square grid, two passes\n",
               segments);
   std::printf("%6s %8s %10s %14s %14s %9s\n",
               "rings",
@@ -67,11 +73,11 @@ main(int argc, char **argv)
               "detection (s)",
               "exponent");
   double previous_time = 0., previous_segments = 0.;
-  for (unsigned int n = 2; n <= largest; n *= 2)
+  for (unsigned int n = 10; n <= largest; n *= 10)
     {
       dealii::Timer set_up;
       Simulation    simulation(
-        SceneReader::read_string(row_of_rings(n, segments), "rings"));
+        SceneReader::read_string(grid_of_rings(n, segments), "rings"));
       const double set_up_time = set_up.wall_time();
       // The detection of a step, repeated until it has taken 0.5 s.
       dealii::Timer timer;

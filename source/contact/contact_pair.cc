@@ -262,6 +262,11 @@ namespace glissade
     update_surface();
     for (auto &node : slave_nodes)
       {
+        if (!may_be_near_master(node))
+          {
+            rest_node(node);
+            continue;
+          }
         node.segment          = -1;
         node.segment_switches = 0;
         node.at_vertex        = false;
@@ -274,8 +279,54 @@ namespace glissade
           {
             node.reaction = {{0., 0.}};
             node.status   = BiPotentialSolver::NodeStatus::open;
+            // Its gap stays (outputs, a time scheme's start gap); its rows
+            // are projected again if it joins, and held by every far node
+            // of every pair they would cost memory and copies for nothing
+            // (a B-spline master's rows run over eight nodes and more).
+            node.linearization.release_rows();
           }
       }
+  }
+
+
+
+  void
+  ContactPair::rest(const double step_start_time, const double time)
+  {
+    step_start = step_start_time;
+    step_end   = time;
+    for (auto &node : slave_nodes)
+      rest_node(node);
+  }
+
+
+
+  void
+  ContactPair::rest_node(ContactNode &node)
+  {
+    node.active           = false;
+    node.projected        = false;
+    node.segment          = -1;
+    node.segment_switches = 0;
+    node.at_vertex        = false;
+    node.reaction         = {{0., 0.}};
+    node.status           = BiPotentialSolver::NodeStatus::open;
+    node.law_shift        = {{0., 0.}};
+    node.start_gap        = std::numeric_limits<double>::quiet_NaN();
+    node.linearization.release_rows();
+  }
+
+
+
+  bool
+  ContactPair::may_be_near_master(const ContactNode &node) const
+  {
+    if (!has_search_box)
+      return true;
+    const Vector<double> &u = slave_body.displacement();
+    return search_box.point_inside(
+      node.reference_position +
+      Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])}));
   }
 
 
@@ -420,7 +471,7 @@ namespace glissade
     unsigned int activated = 0;
     for (auto &node : slave_nodes)
       {
-        if (node.active)
+        if (node.active || !may_be_near_master(node))
           continue;
         ContactNode trial = node;
         trial.segment     = -1;

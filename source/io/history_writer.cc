@@ -65,19 +65,18 @@ namespace glissade
   } // namespace
 
 
-  HistoryWriter::HistoryWriter(
-    const std::vector<std::string>                  &items,
-    const std::vector<std::unique_ptr<Body>>        &bodies,
-    const std::vector<std::unique_ptr<ContactPair>> &pairs,
-    const std::string                               &filename,
-    const std::string                               &source,
-    const EnergyAccount                             *energies)
+  HistoryWriter::HistoryWriter(const std::vector<std::string>           &items,
+                               const std::vector<std::unique_ptr<Body>> &bodies,
+                               ContactProblem      &contact,
+                               const std::string   &filename,
+                               const std::string   &source,
+                               const EnergyAccount *energies)
     : filename(filename)
   {
     columns                 = {"increment", "time", "newton_iterations"};
     const std::string entry = source + ": Output/History";
     for (const auto &item : items)
-      add_item(item, bodies, pairs, energies, entry);
+      add_item(item, bodies, contact, energies, entry);
 
     // Names that differ only in what an identifier cannot hold ("a b" and
     // "a_b") would give two columns one header.
@@ -94,12 +93,11 @@ namespace glissade
 
 
   void
-  HistoryWriter::add_item(
-    const std::string                               &item,
-    const std::vector<std::unique_ptr<Body>>        &bodies,
-    const std::vector<std::unique_ptr<ContactPair>> &pairs,
-    const EnergyAccount                             *energies,
-    const std::string                               &entry)
+  HistoryWriter::add_item(const std::string                        &item,
+                          const std::vector<std::unique_ptr<Body>> &bodies,
+                          ContactProblem                           &contact,
+                          const EnergyAccount                      *energies,
+                          const std::string                        &entry)
   {
     // "kind(arguments)": the energies take none, a pair's items name the
     // pair first, a body's items the body.
@@ -118,10 +116,8 @@ namespace glissade
     if (args.empty())
       throw InputError(entry, "'" + item + "' names no body");
 
-    const ContactPair *pair = nullptr;
-    for (const auto &p : pairs)
-      if (p->name() == args[0])
-        pair = p.get();
+    // (an automatic couple's pair is made if it is not yet)
+    const ContactPair *pair = contact.pair_named(args[0]);
     if (kind == "contact_force" && pair != nullptr && args.size() == 1)
       {
         add_contact_force(*pair, args[0]);
@@ -169,12 +165,40 @@ namespace glissade
       add_displacement(*body, args[0], args[1], item, entry);
     else if (kind == "reaction" && args.size() == 2)
       add_reaction(*body, args[0], args[1], entry);
+    else if (kind == "contact_force_on" && args.size() == 1)
+      {
+        // Every pair's force on the body, the pairs made later too (a
+        // couple of automatic contact): on its slave nodes as reported,
+        // and the opposite of a pair's total where the body is the master
+        // (the master's nodal forces are the slave's spread by the shape
+        // functions, whose weights sum to one).
+        for (const std::string q : {"Fx", "Fy", "active_nodes"})
+          columns.push_back(identifier(args[0]) + "_contact_" + q);
+        evaluators.emplace_back([body, &contact](std::vector<double> &row) {
+          Tensor<1, 2> f;
+          unsigned int active = 0;
+          for (const auto &pair : contact.contact_pairs())
+            {
+              if (&pair->slave() == body)
+                {
+                  f += pair->total_force();
+                  active += pair->n_active();
+                }
+              if (pair->master() == body)
+                f -= pair->total_force();
+            }
+          row.push_back(f[0]);
+          row.push_back(f[1]);
+          row.push_back(active);
+        });
+      }
     else
       throw InputError(entry,
                        "cannot read '" + item +
                          "' (known: displacement(body, point(x, y)), "
                          "max_displacement(body), reaction(body, "
-                         "boundary), contact_force(pair), "
+                         "boundary), contact_force_on(body), "
+                         "contact_force(pair), "
                          "contact_node(pair, point(x, y)), wear(pair); dynamic "
                          "schemes: momentum(body), energies())");
   }

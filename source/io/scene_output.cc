@@ -23,15 +23,26 @@ namespace glissade
                            TimerOutput                              &timer)
     : settings(settings)
     , bodies(bodies)
+    , contact(contact)
     , timer(timer)
   {
-    for (const auto &pair : contact.contact_pairs())
+    follow_new_pairs();
+  }
+
+
+
+  void
+  SceneOutput::follow_new_pairs()
+  {
+    const auto &pairs = contact.contact_pairs();
+    for (std::size_t p = contact_outputs.size(); p < pairs.size(); ++p)
       {
-        contact_outputs.emplace_back(*pair);
-        if (pair->surface().is_rigid())
-          obstacles.emplace_back(pair->name(), &pair->surface());
-        if (pair->coating() != nullptr)
-          coatings.push_back({pair.get(), {}, {}, {}});
+        const ContactPair &pair = *pairs[p];
+        contact_outputs.emplace_back(pair);
+        if (pair.surface().is_rigid())
+          obstacles.emplace_back(pair.name(), &pair.surface());
+        if (pair.coating() != nullptr)
+          coatings.push_back({&pair, {}, {}, {}});
       }
     pvd_records.resize(bodies.size() + contact_outputs.size());
   }
@@ -159,6 +170,7 @@ namespace glissade
   SceneOutput::write_contact_tables(const unsigned int increment,
                                     const double       t)
   {
+    follow_new_pairs();
     for (unsigned int p = 0; p < contact_outputs.size(); ++p)
       contact_outputs[p].write(settings.directory,
                                increment,

@@ -5,7 +5,9 @@
 // (ContactDescription, "<slave> on <master>"), with the section's settings,
 // so that everything downstream (detection, the condensed problem, output,
 // history) is the pairs' as they are: a scene with automatic contact gives
-// the figures of the same pairs written out.
+// the figures of the same pairs written out. The pairs of a couple are made
+// by ContactProblem when its bodies come within reach (AutomaticContact::
+// pair()); the ones of a body on itself, here.
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
@@ -104,26 +106,44 @@ namespace glissade
 
 
 
+  ContactDescription
+  AutomaticContact::pair(const unsigned int slave,
+                         const unsigned int master) const
+  {
+    ContactDescription pair = settings;
+    pair.name               = sides[slave].body + " on " +
+                (master == slave ? "itself" : sides[master].body);
+    pair.entry      = file + ": Automatic contact (pair '" + pair.name + "')";
+    pair.slave_body = sides[slave].body;
+    pair.slave_boundary  = sides[slave].boundary;
+    pair.master_body     = sides[master].body;
+    pair.master_boundary = sides[master].boundary;
+    return pair;
+  }
+
+
+
   std::vector<ContactDescription>
   AutomaticContact::parse_parameters(SectionReader                  &prm,
                                      const std::vector<std::string> &body_names,
-                                     const std::vector<std::string> &declared)
+                                     const std::vector<std::string> &declared,
+                                     AutomaticContact               &automatic)
   {
     const std::string where = prm.file() + ": Scene/Contact bodies";
     prm.enter_subsection("Scene");
     const std::string listed = prm.get("Contact bodies");
     prm.leave_subsection();
+    automatic = AutomaticContact();
     if (text::trim(listed).empty())
       return {};
-    AutomaticContact automatic;
-    automatic.sides = read_sides(listed, body_names, where);
+    std::vector<Side> sides = read_sides(listed, body_names, where);
 
     prm.enter_subsection("Automatic contact");
-    automatic.passes       = prm.get("Passes") == "one" ? 1 : 2;
-    automatic.self_contact = prm.get_bool("Self-contact");
-    if (automatic.sides.size() == 1 && !automatic.self_contact)
+    const unsigned int passes       = prm.get("Passes") == "one" ? 1 : 2;
+    const bool         self_contact = prm.get_bool("Self-contact");
+    if (sides.size() == 1 && !self_contact)
       throw InputError(where,
-                       "lists one body ('" + automatic.sides[0].body +
+                       "lists one body ('" + sides[0].body +
                          "'): contact among bodies needs two or more, or "
                          "Automatic contact/Self-contact = true");
     ContactDescription settings;
@@ -132,37 +152,38 @@ namespace glissade
     settings.parse_settings(prm);
     prm.leave_subsection();
 
-    std::vector<ContactDescription> pairs;
-    const auto add = [&](const Side &slave, const Side &master) {
-      ContactDescription pair = settings;
-      pair.name               = slave.body + " on " +
-                  (master.body == slave.body ? "itself" : master.body);
-      pair.entry =
-        prm.file() + ": Automatic contact (pair '" + pair.name + "')";
-      pair.slave_body      = slave.body;
-      pair.slave_boundary  = slave.boundary;
-      pair.master_body     = master.body;
-      pair.master_boundary = master.boundary;
-      if (std::find(declared.begin(), declared.end(), pair.name) !=
-          declared.end())
-        throw InputError(where,
-                         "makes the pair '" + pair.name +
-                           "', which Scene/Contact pairs names too: rename "
-                           "that pair, or leave its bodies out of one list");
-      pair.check_sides(body_names);
-      pairs.push_back(pair);
-    };
-    const auto &sides = automatic.sides;
-    for (std::size_t i = 0; i < sides.size(); ++i)
-      for (std::size_t j = i + 1; j < sides.size(); ++j)
+    // A pair written by hand must not take a name a couple's pair will
+    // have: "a on b" with a and b listed (read_sides checked the sides'
+    // bodies, so the couples' pairs need no check of their own).
+    for (const std::string &name : declared)
+      for (const Side &slave : sides)
+        if (name.rfind(slave.body + " on ", 0) == 0)
+          {
+            const std::string master = name.substr(slave.body.size() + 4);
+            for (const Side &other : sides)
+              if (other.body == master || (master == "itself" && self_contact))
+                throw InputError(where,
+                                 "makes the pair '" + name +
+                                   "', which Scene/Contact pairs names too: "
+                                   "rename that pair, or leave its bodies "
+                                   "out of one list");
+          }
+
+    automatic.sides        = std::move(sides);
+    automatic.passes       = passes;
+    automatic.self_contact = self_contact;
+    automatic.settings     = settings;
+    automatic.file         = prm.file();
+    std::vector<ContactDescription> made_now;
+    if (self_contact)
+      for (unsigned int s = 0; s < automatic.sides.size(); ++s)
         {
-          add(sides[i], sides[j]);
-          if (automatic.passes == 2)
-            add(sides[j], sides[i]);
+          made_now.push_back(automatic.pair(s, s));
+          made_now.back().check_sides(body_names);
         }
-    if (automatic.self_contact)
-      for (const Side &side : sides)
-        add(side, side);
-    return pairs;
+    // One body listed with Self-contact has no couple.
+    if (automatic.sides.size() < 2)
+      automatic.sides.clear();
+    return made_now;
   }
 } // namespace glissade

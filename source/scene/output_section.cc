@@ -66,6 +66,7 @@ namespace glissade
       "Columns of history.csv, ';'-separated: displacement(body, point(x, "
       "y)), max_displacement(body), reaction(body, boundary), "
       "contact_force(pair) (total force on the slave and active nodes), "
+      "contact_force_on(body) (every pair's force on the body), "
       "contact_node(pair, point(x, y)) (r_n, r_t, |f|, gap of the slave node "
       "at that reference position).");
     prm.declare_entry("Progress",

@@ -417,8 +417,8 @@ namespace glissade
         scene.contacts.push_back(contact);
       });
     prm.check([&]() {
-      for (auto &contact :
-           AutomaticContact::parse_parameters(prm, body_names, contact_names))
+      for (auto &contact : AutomaticContact::parse_parameters(
+             prm, body_names, contact_names, scene.automatic_contact))
         scene.contacts.push_back(std::move(contact));
     });
     // Self-contact under a dynamic scheme: measured on a ring pinched at a
@@ -453,6 +453,8 @@ namespace glissade
         for (const auto &c : scene.contacts)
           in_contact =
             in_contact || c.slave_body == name || c.master_body == name;
+        for (const auto &side : scene.automatic_contact.sides)
+          in_contact = in_contact || side.body == name;
         if (body.dirichlet.empty() && !in_contact &&
             !scene.time_integration.dynamic())
           prm.check([&]() {

@@ -29,8 +29,8 @@ namespace glissade
     // Raised when the layout of the file or the numbering of the dofs
     // changes: an old file is refused. (4: the cells of a mesh read from a
     // Gmsh file are walked along a Hilbert curve, which numbers its dofs
-    // anew.)
-    const std::string checkpoint_format = "glissade checkpoint 5";
+    // anew; 6: the names of automatic contact's pairs made so far.)
+    const std::string checkpoint_format = "glissade checkpoint 6";
   } // namespace
 
 
@@ -63,6 +63,17 @@ namespace glissade
     // clang-format on
     if (Archive::is_loading::value)
       stats = totals;
+    // The pairs automatic contact has made, made again before the outputs
+    // and the nodes that go with them are read.
+    std::vector<std::string> made = contact_problem->automatic_pair_names();
+    archive                 &made;
+    if (Archive::is_loading::value)
+      for (const std::string &name : made)
+        if (contact_problem->pair_named(name) == nullptr)
+          throw InputError(checkpoint_file(),
+                           "has the contact pair '" + name +
+                             "', which the scene's automatic contact "
+                             "does not make");
     output->serialize(archive);
     history->serialize_rows(archive);
     for (auto &b : all_bodies)

@@ -114,7 +114,7 @@ namespace glissade
     history =
       std::make_unique<HistoryWriter>(scene.output.history,
                                       all_bodies,
-                                      contact_problem->contact_pairs(),
+                                      *contact_problem,
                                       scene.output.directory + "/history.csv",
                                       scene.source,
                                       integrator->energies());

@@ -75,10 +75,10 @@ namespace glissade
           {
             // The dofs the contact pairs touch: the redistributed mass
             // takes theirs away.
-            std::set<types::global_dof_index> massless;
-            for (const auto &pair : contact->contact_pairs())
-              for (const auto dof : pair->contact_dofs(*body))
-                massless.insert(dof);
+            const std::vector<types::global_dof_index> dofs =
+              contact->contact_dofs(*body);
+            std::set<types::global_dof_index> massless(dofs.begin(),
+                                                       dofs.end());
             body->set_inertia(
               std::make_unique<BodyInertia>(*body,
                                             scene.time_integration,

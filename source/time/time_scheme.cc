@@ -12,8 +12,7 @@ namespace glissade
   {
     // The contact force of the step's equation is F_c = P / (w dt): the
     // outputs report the step's mean force P / dt.
-    for (const auto &pair : contact.contact_pairs())
-      pair->report_forces_scaled_by(contact_impulse_weight());
+    contact.report_forces_scaled_by(contact_impulse_weight());
   }
 
 

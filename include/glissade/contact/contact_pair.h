@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/timer.h>
 
@@ -56,6 +57,30 @@ namespace glissade
     /** Detection for the increment from step_start_time to time. */
     void
     begin_step(const double step_start_time, const double time);
+
+    /**
+     * Restricts the detection (begin_step(), activate_penetrating_nodes())
+     * to the slave nodes inside `box`, where the others cannot be within
+     * the alert distance of the master: they are left inactive and without
+     * a counterpart, as rest() leaves every node. Automatic contact's
+     * broad phase gives the master boundary's box grown by the alert
+     * distance; a pair written by hand searches every node.
+     */
+    void
+    search_only_within(const dealii::BoundingBox<2> &box)
+    {
+      search_box     = box;
+      has_search_box = true;
+    }
+
+    /**
+     * The increment from step_start_time to time without detection: the
+     * bodies are out of each other's reach (ContactProblem's broad phase).
+     * Every node is inactive and has no counterpart (no gap, no start gap);
+     * the master surface is not rebuilt.
+     */
+    void
+    rest(const double step_start_time, const double time);
 
     /**
      * A pair that cannot make sense: at t = 0, slave nodes lie deeper behind
@@ -300,5 +325,16 @@ namespace glissade
     double step_start = 0., step_end = 0.;
     /** The master is the slave's own body (self-contact). */
     bool self_contact = false;
+    /** search_only_within(). */
+    dealii::BoundingBox<2> search_box;
+    bool                   has_search_box = false;
+
+    /** False for a node outside the search box (search_only_within()). */
+    bool
+    may_be_near_master(const ContactNode &node) const;
+
+    /** Leaves a node inactive and without a counterpart (rest()). */
+    static void
+    rest_node(ContactNode &node);
   };
 } // namespace glissade

@@ -468,7 +468,10 @@ namespace glissade
    * Contact found among several bodies (Scene/Contact bodies): each listed
    * body's boundary against every other's, as pairs written by hand would
    * be, with the settings of the subsection Automatic contact
-   * (source/scene/automatic_contact_section.cc).
+   * (source/scene/automatic_contact_section.cc). The pairs of a couple are
+   * made when the bodies come within reach of each other (ContactProblem's
+   * broad phase), not for every couple at the start: n bodies have
+   * n (n - 1) of them.
    */
   struct AutomaticContact
   {
@@ -484,20 +487,39 @@ namespace glissade
     unsigned int passes = 2;
     /** Each listed body's boundary against itself too ("<b> on itself"). */
     bool self_contact = false;
+    /** What every pair has beside its sides. */
+    ContactDescription settings;
+    /** The file, for the entries of messages. */
+    std::string file;
+
+    /** No body is listed. */
+    bool
+    empty() const
+    {
+      return sides.empty();
+    }
+
+    /**
+     * The pair of `slave` on `master` (indices into sides), named
+     * "<slave> on <master>" ("<b> on itself" when they are one side).
+     */
+    ContactDescription
+    pair(const unsigned int slave, const unsigned int master) const;
 
     /** Scene/Contact bodies and the subsection Automatic contact. */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
     /**
-     * The pairs of every couple of listed bodies, named "<slave> on
-     * <master>", with the section's settings; none if no body is listed.
-     * `declared` are the names of the pairs written by hand, which the
-     * generated ones must not take.
+     * Reads them into `automatic` (no side if no body is listed) and
+     * returns the pairs made at once: each body on itself under
+     * Self-contact. `declared` are the names of the pairs written by hand,
+     * which the generated ones must not take.
      */
     static std::vector<ContactDescription>
     parse_parameters(SectionReader                  &prm,
                      const std::vector<std::string> &body_names,
-                     const std::vector<std::string> &declared);
+                     const std::vector<std::string> &declared,
+                     AutomaticContact               &automatic);
   };
 
   /** Everything a .prm file describes. */
@@ -506,13 +528,15 @@ namespace glissade
     std::string                     source; // file name, for messages
     std::vector<BodyDescription>    bodies;
     std::vector<ContactDescription> contacts;
-    LoadProgram                     load_program;
-    TimeIntegrationSettings         time_integration;
-    NewtonSettings                  newton;
-    ContactSolverSettings           contact_solver;
-    OutputSettings                  output;
-    CheckpointSettings              checkpoint;
-    LinearSolverSettings            linear_solver;
+    /** The couples of Scene/Contact bodies, whose pairs contact makes. */
+    AutomaticContact        automatic_contact;
+    LoadProgram             load_program;
+    TimeIntegrationSettings time_integration;
+    NewtonSettings          newton;
+    ContactSolverSettings   contact_solver;
+    OutputSettings          output;
+    CheckpointSettings      checkpoint;
+    LinearSolverSettings    linear_solver;
     /** Hash of every value but the Checkpoint section (see SceneReader). */
     std::string fingerprint;
   };

@@ -3,6 +3,7 @@
 #include <glissade/body/body.h>
 #include <glissade/body/energy_account.h>
 #include <glissade/contact/contact_pair.h>
+#include <glissade/contact/step/contact_problem.h>
 
 #include <chrono>
 #include <functional>
@@ -26,12 +27,12 @@ namespace glissade
   class HistoryWriter
   {
   public:
-    HistoryWriter(const std::vector<std::string>                  &items,
-                  const std::vector<std::unique_ptr<Body>>        &bodies,
-                  const std::vector<std::unique_ptr<ContactPair>> &pairs,
-                  const std::string                               &filename,
-                  const std::string                               &source,
-                  const EnergyAccount *energies = nullptr);
+    HistoryWriter(const std::vector<std::string>           &items,
+                  const std::vector<std::unique_ptr<Body>> &bodies,
+                  ContactProblem                           &contact,
+                  const std::string                        &filename,
+                  const std::string                        &source,
+                  const EnergyAccount                      *energies = nullptr);
 
     /** Adds a row; writes the file if a second has passed since the last
      *  write. */
@@ -89,11 +90,11 @@ namespace glissade
      * names what the scene does not have.
      */
     void
-    add_item(const std::string                               &item,
-             const std::vector<std::unique_ptr<Body>>        &bodies,
-             const std::vector<std::unique_ptr<ContactPair>> &pairs,
-             const EnergyAccount                             *energies,
-             const std::string                               &entry);
+    add_item(const std::string                        &item,
+             const std::vector<std::unique_ptr<Body>> &bodies,
+             ContactProblem                           &contact,
+             const EnergyAccount                      *energies,
+             const std::string                        &entry);
 
     /** energies(): those of a dynamic scheme, a column each. */
     void

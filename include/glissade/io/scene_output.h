@@ -72,6 +72,7 @@ namespace glissade
     void
     serialize(Archive &archive)
     {
+      follow_new_pairs();
       archive &pvd_records;
       // (a checkpoint from before the contact surfaces had PVD files)
       pvd_records.resize(bodies.size() + contact_outputs.size());
@@ -91,9 +92,15 @@ namespace glissade
     void
     write_contact_tables(const unsigned int increment, const double t);
 
+    /** The outputs of the pairs made since the last call (automatic
+     *  contact makes a couple's pairs when its bodies come within reach). */
+    void
+    follow_new_pairs();
+
     /** A copy: the scene a Simulation was made from may be a temporary. */
     const OutputSettings                      settings;
     const std::vector<std::unique_ptr<Body>> &bodies;
+    ContactProblem                           &contact;
     dealii::TimerOutput                      &timer;
     std::vector<ContactSurfaceOutput>         contact_outputs;
     /** The rigid obstacles, by pair name, that the pictures draw. */

@@ -5,6 +5,7 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/step/contact_problem.h>
 #include <glissade/contact/step/held_by_contact.h>
+#include <glissade/contact/surfaces/surface_registry.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -19,7 +20,8 @@ namespace glissade
     const SceneDescription                   &scene,
     const std::vector<std::unique_ptr<Body>> &bodies,
     TimerOutput                              &timer)
-    : bodies(bodies)
+    : automatic(scene.automatic_contact)
+    , bodies(bodies)
     , timer(timer)
   {
     const auto find = [&](const std::string &name) -> Body * {
@@ -42,32 +44,64 @@ namespace glissade
           timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
+        couple_of_pair.push_back(
+          {{numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}});
+        resting.push_back(false);
       });
     mistakes.throw_if_any();
+
+    // Automatic contact: every side's boundary known now (a pair made in
+    // the middle of a run must not find a mistake), and the pairs of the
+    // couples within reach at the start, checked as pairs written are.
+    if (!automatic.empty())
+      {
+        std::vector<BroadPhase::Side> sides;
+        for (unsigned int s = 0; s < automatic.sides.size(); ++s)
+          mistakes.collect([&]() {
+            const auto       &side  = automatic.sides[s];
+            Body             *body  = find(side.body);
+            const std::string entry = automatic.file +
+                                      ": Scene/Contact bodies (body '" +
+                                      side.body + "')";
+            sides.push_back({body, {body->boundary_id(side.boundary, entry)}});
+            // What the side touches as a master holds what it touches as
+            // a slave: its surface's dofs, the vertices' and, on a Hermite
+            // body, their derivatives.
+            side_dofs.push_back(
+              SurfaceRegistry::create({automatic.pair(s, s), body})->dofs());
+          });
+        mistakes.throw_if_any();
+        broad_phase =
+          std::make_unique<BroadPhase>(sides,
+                                       automatic.settings.alert_distance);
+        for (const auto &couple : broad_phase->couples_within_reach())
+          mistakes.collect([&]() {
+            make_couple_pairs(couple, false);
+            for (unsigned int p = pairs.size() - automatic.passes;
+                 p < pairs.size();
+                 ++p)
+              pairs[p]->check_initial_state();
+          });
+        mistakes.throw_if_any();
+      }
     check_free_motions_are_held(bodies, pairs, scene.source);
 
     for (const auto &body : bodies)
-      {
-        std::vector<types::global_dof_index> dofs;
-        for (const auto &pair : pairs)
-          {
-            const auto d = pair->contact_dofs(*body);
-            dofs.insert(dofs.end(), d.begin(), d.end());
-          }
-        if (!dofs.empty())
-          body->system().set_contact_dofs(dofs);
-      }
+      if (const auto dofs = contact_dofs(*body); !dofs.empty())
+        body->system().set_contact_dofs(dofs);
 
     for (const auto &pair : pairs)
       for (const Body *body : {&pair->slave(), pair->master()})
-        if (body != nullptr &&
-            std::find(bodies_in_contact.begin(),
-                      bodies_in_contact.end(),
-                      body_index(body)) == bodies_in_contact.end())
+        if (body != nullptr)
           bodies_in_contact.push_back(body_index(body));
+    for (const auto &side : automatic.sides)
+      bodies_in_contact.push_back(body_index(find(side.body)));
     std::sort(bodies_in_contact.begin(), bodies_in_contact.end());
+    bodies_in_contact.erase(std::unique(bodies_in_contact.begin(),
+                                        bodies_in_contact.end()),
+                            bodies_in_contact.end());
 
-    if (!pairs.empty())
+    if (!pairs.empty() || !automatic.empty())
       {
         // (the active nodes of all pairs form one local problem, solved
         // with the section Contact solver's settings)
@@ -80,8 +114,9 @@ namespace glissade
           BiPotentialSolver::RhoChoice::largest_diagonal_compliance;
       }
     step = ContactStep::create(
-      pairs.empty() ? ContactSolverSettings::Method::condensed :
-                      scene.contact_solver.method,
+      pairs.empty() && automatic.empty() ?
+        ContactSolverSettings::Method::condensed :
+        scene.contact_solver.method,
       {bodies, bodies_in_contact, solver_settings, timer, scene.source});
     for (const auto &pair : pairs)
       if (pair->coating() != nullptr &&
@@ -105,6 +140,152 @@ namespace glissade
 
 
 
+  void
+  ContactProblem::make_couple_pairs(const std::array<unsigned int, 2> &couple,
+                                    const bool resting_now)
+  {
+    const auto find = [&](const std::string &name) -> Body & {
+      for (const auto &b : bodies)
+        if (b->name() == name)
+          return *b;
+      AssertThrow(false, ExcInternalError());
+      return *bodies[0];
+    };
+    std::vector<std::array<unsigned int, 2>> passes = {couple};
+    if (automatic.passes == 2)
+      passes.push_back({{couple[1], couple[0]}});
+    for (const auto &[slave, master] : passes)
+      {
+        const ContactDescription description = automatic.pair(slave, master);
+        pairs.push_back(
+          std::make_unique<ContactPair>(description,
+                                        find(description.slave_body),
+                                        &find(description.master_body),
+                                        timer));
+        pairs.back()->report_forces_scaled_by(reported_force_scale);
+        if (resting_now)
+          pairs.back()->rest(step_start, step_end);
+        couple_of_pair.push_back(couple);
+        resting.push_back(resting_now);
+      }
+    made_couples.insert(std::upper_bound(made_couples.begin(),
+                                         made_couples.end(),
+                                         couple),
+                        couple);
+  }
+
+
+
+  void
+  ContactProblem::follow_broad_phase(const bool mid_step)
+  {
+    if (!broad_phase)
+      return;
+    const auto within_reach = broad_phase->couples_within_reach();
+    for (const auto &couple : within_reach)
+      if (!std::binary_search(made_couples.begin(), made_couples.end(), couple))
+        make_couple_pairs(couple, mid_step);
+    // Mid-step, a pair that comes within reach joins with its nodes as
+    // they are (inactive, no counterpart): activate_penetrating_nodes()
+    // projects them. A pair does not rest before the next detection.
+    // The slave nodes searched: those within the alert distance of the
+    // master's box (the rest of a ring whose side touches another never
+    // is).
+    std::vector<BoundingBox<2>> near(broad_phase->n_sides());
+    std::vector<bool>           near_known(broad_phase->n_sides(), false);
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (const auto &couple = couple_of_pair[p];
+          couple[0] != numbers::invalid_unsigned_int)
+        {
+          const bool in_reach = std::binary_search(within_reach.begin(),
+                                                   within_reach.end(),
+                                                   couple);
+          resting[p]          = mid_step ? resting[p] && !in_reach : !in_reach;
+          if (resting[p])
+            continue;
+          // (the master is the side the pair's slave is not)
+          const unsigned int master =
+            automatic.sides[couple[0]].body == pairs[p]->slave().name() ?
+              couple[1] :
+              couple[0];
+          if (!near_known[master])
+            {
+              near[master] = broad_phase->reach_box(master);
+              near[master].extend(0.5 * automatic.settings.alert_distance);
+              near_known[master] = true;
+            }
+          pairs[p]->search_only_within(near[master]);
+        }
+  }
+
+
+
+  ContactPair *
+  ContactProblem::pair_named(const std::string &name)
+  {
+    for (const auto &pair : pairs)
+      if (pair->name() == name)
+        return pair.get();
+    // "<slave> on <master>" of two listed bodies: their couple's pairs.
+    const auto &sides = automatic.sides;
+    for (unsigned int i = 0; i < sides.size(); ++i)
+      if (name.rfind(sides[i].body + " on ", 0) == 0)
+        for (unsigned int j = 0; j < sides.size(); ++j)
+          if (j != i &&
+              name.substr(sides[i].body.size() + 4) == sides[j].body &&
+              (automatic.passes == 2 || i < j))
+            {
+              make_couple_pairs({{std::min(i, j), std::max(i, j)}}, true);
+              for (const auto &pair : pairs)
+                if (pair->name() == name)
+                  return pair.get();
+            }
+    return nullptr;
+  }
+
+
+
+  std::vector<std::string>
+  ContactProblem::automatic_pair_names() const
+  {
+    std::vector<std::string> names;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (couple_of_pair[p][0] != numbers::invalid_unsigned_int)
+        names.push_back(pairs[p]->name());
+    return names;
+  }
+
+
+
+  std::vector<types::global_dof_index>
+  ContactProblem::contact_dofs(const Body &body) const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &pair : pairs)
+      {
+        const auto d = pair->contact_dofs(body);
+        dofs.insert(dofs.end(), d.begin(), d.end());
+      }
+    for (unsigned int s = 0; s < automatic.sides.size(); ++s)
+      if (automatic.sides[s].body == body.name())
+        dofs.insert(dofs.end(), side_dofs[s].begin(), side_dofs[s].end());
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
+  }
+
+
+
+  void
+  ContactProblem::report_forces_scaled_by(const double scale)
+  {
+    reported_force_scale = scale;
+    for (const auto &pair : pairs)
+      pair->report_forces_scaled_by(scale);
+  }
+
+
+
   unsigned int
   ContactProblem::body_index(const Body *body) const
   {
@@ -120,8 +301,14 @@ namespace glissade
   ContactProblem::begin_step(const double step_start_time, const double time)
   {
     TimerOutput::Scope scope(timer, timing::detection);
-    for (auto &pair : pairs)
-      pair->begin_step(step_start_time, time);
+    step_start = step_start_time;
+    step_end   = time;
+    follow_broad_phase(false);
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (resting[p])
+        pairs[p]->rest(step_start_time, time);
+      else
+        pairs[p]->begin_step(step_start_time, time);
     step->begin_step(*this);
   }
 
@@ -142,9 +329,11 @@ namespace glissade
   ContactProblem::activate_penetrating_nodes()
   {
     TimerOutput::Scope scope(timer, timing::detection);
-    unsigned int       n = 0;
-    for (auto &pair : pairs)
-      n += pair->activate_penetrating_nodes();
+    follow_broad_phase(true);
+    unsigned int n = 0;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (!resting[p])
+        n += pairs[p]->activate_penetrating_nodes();
     return n;
   }
 
@@ -260,21 +449,24 @@ namespace glissade
   {
     {
       TimerOutput::Scope scope(timer, timing::detection);
-      for (auto &pair : pairs)
-        pair->update_geometry();
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        if (!resting[p])
+          pairs[p]->update_geometry();
     }
     // The forces of the reactions at the new state: the residual of the
     // next iteration is then the true one, R(U, r).
     std::vector<Vector<double>> forces(bodies.size());
     for (unsigned int b = 0; b < bodies.size(); ++b)
       forces[b].reinit(bodies[b]->n_dofs());
-    for (auto &pair : pairs)
-      {
-        const auto pair_forces = pair->contact_forces();
-        forces[body_index(&pair->slave())] += pair_forces[0];
-        if (pair->master())
-          forces[body_index(pair->master())] += pair_forces[1];
-      }
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      if (!resting[p])
+        {
+          ContactPair &pair        = *pairs[p];
+          const auto   pair_forces = pair.contact_forces();
+          forces[body_index(&pair.slave())] += pair_forces[0];
+          if (pair.master())
+            forces[body_index(pair.master())] += pair_forces[1];
+        }
     for (unsigned int b = 0; b < bodies.size(); ++b)
       bodies[b]->set_contact_forces(forces[b]);
   }
@@ -294,7 +486,12 @@ namespace glissade
   void
   ContactProblem::restore_state()
   {
+    // A pair made since (a couple that came within reach in the step
+    // being undone) goes back to having found nothing.
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      pairs[p]->nodes() = stored_nodes[p];
+      if (p < stored_nodes.size())
+        pairs[p]->nodes() = stored_nodes[p];
+      else
+        pairs[p]->rest(step_start, step_end);
   }
 } // namespace glissade

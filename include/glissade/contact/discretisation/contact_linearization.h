@@ -72,6 +72,18 @@ namespace glissade
       DofVector load, row;
     };
     std::vector<Term> tangent_terms;
+
+    /** Frees the rows, forces and tangent terms, keeping gap and slip (an
+     *  inactive node's: nothing reads them until it is projected again). */
+    void
+    release_rows()
+    {
+      DofVector().swap(slip_row);
+      DofVector().swap(gap_row);
+      DofVector().swap(tangential_force);
+      DofVector().swap(normal_force);
+      std::vector<Term>().swap(tangent_terms);
+    }
   };
 
   /**

@@ -3,6 +3,7 @@
 #include <glissade/body/body.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/local_solvers/bipotential_solver.h>
+#include <glissade/contact/step/broad_phase.h>
 #include <glissade/contact/step/condensed_problem.h>
 #include <glissade/contact/step/contact_step.h>
 #include <glissade/description/scene_description.h>
@@ -30,10 +31,12 @@ namespace glissade
                    const std::vector<std::unique_ptr<Body>> &bodies,
                    dealii::TimerOutput                      &timer);
 
+    /** No pair, and none to be made (automatic contact makes its pairs
+     *  when bodies come within reach). */
     bool
     empty() const
     {
-      return pairs.empty();
+      return pairs.empty() && automatic.empty();
     }
 
     /** Detection for the increment from step_start_time to time. */
@@ -118,11 +121,40 @@ namespace glissade
       return step->last_result();
     }
 
+    /** Every pair made so far: written, a body on itself, and the
+     *  couples' of automatic contact in the order they were made. */
     std::vector<std::unique_ptr<ContactPair>> &
     contact_pairs()
     {
       return pairs;
     }
+
+    /**
+     * The pair named `name`, or nullptr if there is none. The pair of an
+     * automatic couple not made yet is made (with its couple's other pass),
+     * resting until its bodies come within reach.
+     */
+    ContactPair *
+    pair_named(const std::string &name);
+
+    /** The names of the couples' pairs made so far, in that order (a
+     *  checkpoint makes them again before it reads their nodes). */
+    std::vector<std::string>
+    automatic_pair_names() const;
+
+    /**
+     * Every dof of `body` that contact may ever touch: the pairs' and, for
+     * a body of Scene/Contact bodies, its listed boundary's (which pairs
+     * made later will touch). The bodies eliminate them last; a dynamic
+     * scheme's redistributed mass takes theirs away.
+     */
+    std::vector<dealii::types::global_dof_index>
+    contact_dofs(const Body &body) const;
+
+    /** ContactPair::report_forces_scaled_by for every pair, and for the
+     *  pairs made later. */
+    void
+    report_forces_scaled_by(const double scale);
 
     /**
      * The contact law on the end velocities of a step (Moreau-Jean's, with
@@ -156,6 +188,37 @@ namespace glissade
 
   private:
     bool velocity_law = false;
+
+    /**
+     * Makes the pairs of the couples the broad phase finds within reach at
+     * the current state that are not made yet (resting if `mid_step`: the
+     * step's detection is over) and lets every couple's pairs rest or not
+     * as it finds.
+     */
+    void
+    follow_broad_phase(const bool mid_step);
+
+    /** Makes the pairs of the couple (i, j), i < j: i on j, and j on i with
+     *  two passes. */
+    void
+    make_couple_pairs(const std::array<unsigned int, 2> &couple,
+                      const bool                         resting);
+
+    /** Scene/Contact bodies and its settings (no side if none). */
+    const AutomaticContact automatic;
+    /** Which couples are within reach (nullptr without automatic contact). */
+    std::unique_ptr<BroadPhase> broad_phase;
+    /** Each side's listed boundary's dofs (contact_dofs()). */
+    std::vector<std::vector<dealii::types::global_dof_index>> side_dofs;
+    /** Per pair: its couple (sides i < j), or none for a pair written or
+     *  made at the start (a body on itself); and whether it rests. */
+    std::vector<std::array<unsigned int, 2>> couple_of_pair;
+    std::vector<bool>                        resting;
+    /** The couples whose pairs are made, sorted. */
+    std::vector<std::array<unsigned int, 2>> made_couples;
+    double                                   reported_force_scale = 1.;
+    /** The increment being solved (for pairs made within it). */
+    double step_start = 0., step_end = 0.;
 
     const std::vector<std::unique_ptr<Body>> &bodies;
     dealii::TimerOutput                      &timer;
