@@ -5,6 +5,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
+#include <glissade/base/user_function.h>
 #include <glissade/mesh/cell_order.h>
 #include <glissade/mesh/gmsh_reader.h>
 #include <glissade/mesh/mesh_factory.h>
@@ -38,6 +39,7 @@ namespace glissade
                          "' has second-order quadrilaterals)");
     if (description.distortion > 0.)
       GridTools::distort_random(description.distortion, triangulation, true);
+    take_boundary_parts(description, triangulation, labels, where);
     check_cells_are_not_folded(triangulation, where);
     if (type(description.type).from_file)
       {
@@ -47,6 +49,68 @@ namespace glissade
         order_cells_along_hilbert_curve(triangulation);
       }
     return labels;
+  }
+
+
+
+  void
+  MeshFactory::take_boundary_parts(const MeshDescription &description,
+                                   Triangulation<2>      &triangulation,
+                                   MeshLabels            &labels,
+                                   const std::string     &where)
+  {
+    const std::string entry = where + "/Mesh/Boundary parts";
+    for (const auto &part : description.boundary_parts)
+      {
+        const auto from = labels.boundaries.find(part.boundary);
+        if (from == labels.boundaries.end())
+          throw InputError(entry,
+                           "part '" + part.name +
+                             "': the mesh has no boundary '" + part.boundary +
+                             "'");
+        if (labels.boundaries.count(part.name) > 0)
+          throw InputError(entry,
+                           "part '" + part.name +
+                             "': the mesh has a boundary of that name already");
+        // A new id: above every id in use (254 and 255 are deal.II's and
+        // the processes' own).
+        types::boundary_id id = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              id =
+                std::max<types::boundary_id>(id,
+                                             cell->face(f)->boundary_id() + 1);
+        for (const auto &[name, named] : labels.boundaries)
+          id = std::max<types::boundary_id>(id, named + 1);
+        if (id >= 254)
+          throw InputError(entry,
+                           "part '" + part.name +
+                             "': the mesh has no boundary id left for it");
+        UserFunction condition({part.condition}, entry);
+        unsigned int taken = 0, left = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == from->second)
+              {
+                if (condition.value(cell->face(f)->center(), 0) != 0.)
+                  {
+                    cell->face(f)->set_boundary_id(id);
+                    ++taken;
+                  }
+                else
+                  ++left;
+              }
+        if (taken == 0)
+          throw InputError(entry,
+                           "part '" + part.name + "' takes no face of '" +
+                             part.boundary + "' (" + part.condition +
+                             " is zero at every face's centre)");
+        labels.boundaries[part.name] = id;
+        if (left == 0)
+          labels.boundaries.erase(part.boundary);
+      }
   }
 
 

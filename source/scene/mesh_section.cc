@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/section_reader.h>
@@ -40,6 +41,16 @@ namespace glissade
                       "gmsh: path of the .msh file (relative paths are "
                       "taken from the .prm file's folder).");
     prm.declare_entry(
+      "Boundary parts",
+      "",
+      Patterns::Anything(),
+      "Parts of the mesh's named boundaries under names of their own, for "
+      "a contact area or a support on part of a boundary: 'name: boundary: "
+      "condition; ...', the faces of that boundary whose centre (reference "
+      "coordinates x, y) makes the condition nonzero, as 'inner_top: inner: "
+      "y > 0'. Parts are taken in turn, each from what the earlier ones "
+      "left; a boundary left without faces loses its name.");
+    prm.declare_entry(
       "Distortion",
       "0",
       Patterns::Double(0., 0.4),
@@ -61,7 +72,23 @@ namespace glissade
       subdivisions.push_back(Utilities::string_to_int(n));
     file       = prm.get("File");
     distortion = prm.get_double("Distortion");
-    shape      = MeshFactory::type(type).parse_parameters(prm.handler(), where);
+    {
+      const std::string entry = where + "/Mesh/Boundary parts";
+      for (const auto &fields : entry_format::items(
+             prm.get("Boundary parts"), 3, entry, "name: boundary: condition"))
+        {
+          BoundaryPart part{text::trim(fields[0]),
+                            text::trim(fields[1]),
+                            text::trim(fields[2])};
+          if (part.name.empty() || part.boundary.empty())
+            throw InputError(entry,
+                             "a part needs a name and the boundary it is "
+                             "taken from ('name: boundary: condition')");
+          entry_format::check_expressions({part.condition}, entry);
+          boundary_parts.push_back(part);
+        }
+    }
+    shape = MeshFactory::type(type).parse_parameters(prm.handler(), where);
     prm.leave_subsection();
 
     MeshFactory::type(type).check(*this, where);

@@ -39,6 +39,16 @@ namespace glissade
     std::string               file;
     double                    distortion = 0.;
     /**
+     * A part of a named boundary under a name of its own (Mesh/Boundary
+     * parts): the faces of `boundary` whose centre, in the reference
+     * configuration, makes `condition` (an expression of x and y) nonzero.
+     */
+    struct BoundaryPart
+    {
+      std::string name, boundary, condition;
+    };
+    std::vector<BoundaryPart> boundary_parts;
+    /**
      * The type's shape (Corner 1, Center, radii, ...), read by the type's
      * own entry of MeshFactory::types() and handed back to its create();
      * opaque here.

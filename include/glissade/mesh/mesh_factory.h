@@ -91,6 +91,13 @@ namespace glissade
            const std::string        &where);
 
   private:
+    /** Mesh/Boundary parts: each part's faces under its own name and id. */
+    static void
+    take_boundary_parts(const MeshDescription    &description,
+                        dealii::Triangulation<2> &triangulation,
+                        MeshLabels               &labels,
+                        const std::string        &where);
+
     /** Refuses a mesh with a hanging node (a vertex inside another edge). */
     static void
     check_mesh_is_conforming(const dealii::Triangulation<2> &triangulation,
