@@ -123,6 +123,31 @@ namespace glissade
         add_contact_force(*pair, args[0]);
         return;
       }
+    // A pair written with several slave bodies: the sum of the pairs made
+    // of it (ContactDescription::group).
+    bool group = false;
+    for (const auto &p : contact.contact_pairs())
+      group = group || p->settings().group == args[0];
+    if (kind == "contact_force" && group && args.size() == 1)
+      {
+        for (const std::string q : {"Fx", "Fy", "active_nodes"})
+          columns.push_back(identifier(args[0]) + "_" + q);
+        evaluators.emplace_back(
+          [name = args[0], &contact](std::vector<double> &row) {
+            Tensor<1, 2> f;
+            unsigned int active = 0;
+            for (const auto &p : contact.contact_pairs())
+              if (p->settings().group == name)
+                {
+                  f += p->total_force();
+                  active += p->n_active();
+                }
+            row.push_back(f[0]);
+            row.push_back(f[1]);
+            row.push_back(active);
+          });
+        return;
+      }
     if (kind == "contact_node" && pair != nullptr && args.size() == 2)
       {
         add_contact_node(*pair, args[0], args[1], item, entry);

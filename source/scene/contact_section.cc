@@ -85,7 +85,12 @@ namespace glissade
     prm.declare_entry("Slave body",
                       "",
                       Patterns::Anything(),
-                      "The body whose boundary nodes are the slave nodes.");
+                      "The body whose boundary nodes are the slave nodes. "
+                      "Against a rigid obstacle, several bodies ('a, b, "
+                      "c') or '*' (every body of Scene/Contact bodies): a "
+                      "pair of each, '<body> on <pair>', with this pair's "
+                      "settings; contact_force(<pair>) in the history sums "
+                      "them.");
     prm.declare_entry("Slave boundary",
                       "",
                       Patterns::Anything(),
@@ -331,9 +336,13 @@ namespace glissade
       return std::find(body_names.begin(), body_names.end(), b) !=
              body_names.end();
     };
-    if (!known(slave_body))
-      throw InputError(entry + "/Slave body",
-                       "there is no body '" + slave_body + "'");
+    // (several bodies, or every body of Scene/Contact bodies, '*', against
+    // a rigid obstacle: SceneReader makes a pair of each)
+    if (slave_body != "*")
+      for (const std::string &body : text::split_top_level(slave_body, ','))
+        if (!known(text::trim(body)))
+          throw InputError(entry + "/Slave body",
+                           "there is no body '" + text::trim(body) + "'");
     if (master == MasterKind::body && !known(master_body))
       throw InputError(entry + "/Master body",
                        "there is no body '" + master_body +

@@ -13,6 +13,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/scene/section_reader.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <fstream>
@@ -391,6 +392,63 @@ namespace glissade
 
 
 
+  namespace
+  {
+    /**
+     * A pair whose Slave body lists several bodies ("a, b") or is '*'
+     * (every body of Scene/Contact bodies), against a rigid obstacle: a
+     * pair of each body, "<body> on <pair>", the written pair's name their
+     * group (history's contact_force(<pair>) sums them). Any other pair
+     * as it is.
+     */
+    std::vector<ContactDescription>
+    pairs_of_each_slave_body(const ContactDescription       &contact,
+                             const AutomaticContact         &automatic,
+                             const std::vector<std::string> &declared)
+    {
+      std::vector<std::string> bodies;
+      if (contact.slave_body == "*")
+        for (const auto &side : automatic.sides)
+          bodies.push_back(side.body);
+      else
+        for (const auto &body : text::split_top_level(contact.slave_body, ','))
+          bodies.push_back(text::trim(body));
+      if (contact.slave_body != "*" && bodies.size() == 1)
+        return {contact};
+      const std::string where = contact.entry + "/Slave body";
+      if (contact.master != ContactDescription::MasterKind::obstacle)
+        throw InputError(where,
+                         "lists several bodies: that is for a rigid "
+                         "obstacle (Master body = rigid); between bodies, "
+                         "use Scene/Contact bodies");
+      if (bodies.empty())
+        throw InputError(where,
+                         "is '*', every body of Scene/Contact bodies, "
+                         "which lists none");
+      std::vector<ContactDescription> pairs;
+      for (const auto &body : bodies)
+        {
+          for (const auto &earlier : pairs)
+            if (earlier.slave_body == body)
+              throw InputError(where, "lists '" + body + "' twice");
+          ContactDescription pair = contact;
+          pair.group              = contact.name;
+          pair.slave_body         = body;
+          pair.name               = body + " on " + contact.name;
+          pair.entry              = contact.entry + " (body '" + body + "')";
+          if (std::find(declared.begin(), declared.end(), pair.name) !=
+              declared.end())
+            throw InputError(where,
+                             "makes the pair '" + pair.name +
+                               "', which Scene/Contact pairs names too");
+          pairs.push_back(pair);
+        }
+      return pairs;
+    }
+  } // namespace
+
+
+
   SceneDescription
   SceneReader::parse_parameters(ParameterHandler               &handler,
                                 const std::vector<std::string> &body_names,
@@ -406,6 +464,11 @@ namespace glissade
     prm.check([&]() { scene.contact_solver.parse_parameters(prm); });
     prm.check([&]() { scene.time_integration.parse_parameters(prm); });
     prm.check([&]() { scene.linear_solver.parse_parameters(prm); });
+    std::vector<ContactDescription> made_by_automatic_contact;
+    prm.check([&]() {
+      made_by_automatic_contact = AutomaticContact::parse_parameters(
+        prm, body_names, contact_names, scene.automatic_contact);
+    });
     for (const auto &name : contact_names)
       prm.check([&]() {
         ContactDescription contact;
@@ -414,13 +477,13 @@ namespace glissade
         contact.parse_parameters(prm, body_names);
         scene.contact_solver.take_pair_entries(prm, contact.entry);
         prm.leave_subsection();
-        scene.contacts.push_back(contact);
+        for (auto &pair : pairs_of_each_slave_body(contact,
+                                                   scene.automatic_contact,
+                                                   contact_names))
+          scene.contacts.push_back(std::move(pair));
       });
-    prm.check([&]() {
-      for (auto &contact : AutomaticContact::parse_parameters(
-             prm, body_names, contact_names, scene.automatic_contact))
-        scene.contacts.push_back(std::move(contact));
-    });
+    for (auto &contact : made_by_automatic_contact)
+      scene.contacts.push_back(std::move(contact));
     // Self-contact under a dynamic scheme: measured on a ring pinched at a
     // tenth of the quasi-static test's speed under Newmark, the contact's
     // work per step turned positive once the inner wall was pressed flat

@@ -405,6 +405,12 @@ namespace glissade
   struct ContactDescription
   {
     std::string name;
+    /**
+     * The pair written in the .prm that this one was made from, when its
+     * Slave body lists several bodies against a rigid obstacle (one pair a
+     * body, "<body> on <pair>"); empty for a pair as written.
+     */
+    std::string group;
     std::string slave_body;
     std::string slave_boundary;
     /**
