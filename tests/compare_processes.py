@@ -6,14 +6,15 @@ usage: compare_processes.py ONE_PROCESS_DIR N_PROCESS_DIR [--statuses]
 
 Every CSV file of the one-process folder (history.csv, the contact tables)
 must be in the other folder with the same rows and columns, and:
-- numbers agree to 1e-10 (or T) relative to the largest magnitude of their kind in
-  the file (lengths: coordinates, gaps, slips, displacements; forces: every
+- numbers agree to 1e-10 (or T) relative to the largest magnitude of their
+  kind in the file (lengths: coordinates, gaps, slips, displacements; forces: every
   contact force and reaction; tractions: pressure and shear; momenta;
   energies: kinetic, strain, work, dissipations and their balance; any
   other column: itself), so that
   a quantity that is zero but for round-off (a gap in contact, a
   frictionless tangential force) is judged against the scale of its kind
-  (sums in another order round otherwise: no bit-for-bit claim),
+  (sums in another order round otherwise: no bit-for-bit claim); a field
+  left empty (a node without a counterpart has no gap) is empty in both,
 - `newton_iterations` agree to within one per increment,
 - the active sets (`active`, `*_active_nodes`) are the same, and with
   --statuses the stick/slip statuses too (a frictionless scene's status is
@@ -75,11 +76,17 @@ def kind(column):
     return column
 
 
+def numeric(rows, c):
+    """Whether column c holds numbers, some fields left empty (a contact
+    table's gap where a node has no counterpart)."""
+    return all(number(r[c]) is not None for r in rows if r[c] != "")
+
+
 def kind_scales(header, rows):
     scales = {}
     for c, column in enumerate(header):
-        values = [number(r[c]) for r in rows]
-        if None in values:
+        values = [number(r[c]) for r in rows if r[c] != ""]
+        if not numeric(rows, c):
             continue
         k = kind(column)
         scales[k] = max([scales.get(k, 0.)] + [abs(v) for v in values])
@@ -96,7 +103,12 @@ def compare(name, one, many, statuses):
                 f"({len(rows)} rows against {len(rows_n)})"]
     for c, column in enumerate(header):
         values = [number(r[c]) for r in rows]
-        if column == "status" or None in values:
+        # (an empty field must be empty in both)
+        for k, (a, b) in enumerate(zip(rows, rows_n)):
+            if (a[c] == "") != (b[c] == ""):
+                problems.append(f"{name} row {k + 1} {column}: "
+                                f"'{a[c]}' against '{b[c]}'")
+        if column == "status" or not numeric(rows, c):
             if column == "status" and not statuses:
                 continue
             for k, (a, b) in enumerate(zip(rows, rows_n)):
@@ -108,6 +120,8 @@ def compare(name, one, many, statuses):
         exact = column == "active" or column.endswith("_active_nodes")
         scale = scales[kind(column)]
         for k, (a, b) in enumerate(zip(values, values_n)):
+            if a is None or b is None:
+                continue
             if column == "newton_iterations":
                 wrong = abs(a - b) > 1
             elif exact:
