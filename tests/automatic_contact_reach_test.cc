@@ -6,6 +6,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
+#include <cctype>
 #include <cmath>
 
 #include "body_resultant.h"
@@ -17,6 +18,19 @@ using namespace glissade_tests;
 
 namespace
 {
+  /**
+   * An output directory of the run's own: ctest runs tests side by side
+   * in one folder, and two runs may not share one.
+   */
+  std::vector<std::string>
+  own_directory(const std::string &label)
+  {
+    std::string name = "automatic_reach_";
+    for (const char c : label)
+      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return {"Output/Directory=" + name};
+  }
+
   const std::string settings = " set Surface = bspline\n"
                                " set Alert distance = 0.05\n";
 
@@ -137,9 +151,13 @@ GLISSADE_TEST(automatic_contact_pairs_made_within_reach)
     {
       const std::string label = std::to_string(increments) + " increments";
       Simulation        written(
-        SceneReader::read_string(three_rings("hand", increments), label));
+        SceneReader::read_string(three_rings("hand", increments),
+                                 label,
+                                 own_directory("hand " + label)));
       Simulation found(
-        SceneReader::read_string(three_rings("automatic", increments), label));
+        SceneReader::read_string(three_rings("automatic", increments),
+                                 label,
+                                 own_directory("automatic " + label)));
       check(found.contact().contact_pairs().empty(),
             label + ": pairs made at the start, with every couple apart");
       written.run();
@@ -225,8 +243,10 @@ GLISSADE_TEST(automatic_contact_dynamic_impact)
             "subsection Load program\n set Stage end times = 1.2\n"
             " set Stage increments = 120\nend\n" +
             tolerances;
-          Simulation simulation(
-            SceneReader::read_string(prm, scheme + " impact"));
+          Simulation simulation(SceneReader::read_string(
+            prm,
+            scheme + " impact",
+            own_directory(scheme + std::to_string(automatic))));
           simulation.on_increment = [&](unsigned int, double) {
             const Body &left  = simulation.body("left"),
                        &right = simulation.body("right");

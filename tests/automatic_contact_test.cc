@@ -6,6 +6,7 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
+#include <cctype>
 #include <cmath>
 
 #include "body_resultant.h"
@@ -17,6 +18,19 @@ using namespace glissade_tests;
 
 namespace
 {
+  /**
+   * An output directory of the run's own: ctest runs tests side by side
+   * in one folder, and two runs may not share one.
+   */
+  std::vector<std::string>
+  own_directory(const std::string &label)
+  {
+    std::string name = "automatic_contact_";
+    for (const char c : label)
+      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return {"Output/Directory=" + name};
+  }
+
   /**
    * Two identical annuli (r in [0.1, 1], centres at x = -/+1.01), the left
    * one's inner edge held, the right one's pushed left by 0.06 t: their
@@ -62,8 +76,8 @@ namespace
   std::unique_ptr<Simulation>
   solved(const std::string &prm, const std::string &label)
   {
-    auto simulation =
-      std::make_unique<Simulation>(SceneReader::read_string(prm, label));
+    auto simulation = std::make_unique<Simulation>(
+      SceneReader::read_string(prm, label, own_directory(label)));
     for (unsigned int k = 1; k <= 4; ++k)
       simulation->advance_to(k / 4., "increment " + std::to_string(k));
     return simulation;

@@ -7,6 +7,7 @@
 #include <glissade/solver/simulation.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -19,6 +20,19 @@ using namespace glissade_tests;
 
 namespace
 {
+  /**
+   * An output directory of the run's own: ctest runs tests side by side
+   * in one folder, and two runs may not share one.
+   */
+  std::vector<std::string>
+  own_directory(const std::string &label)
+  {
+    std::string name = "self_contact_";
+    for (const char c : label)
+      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return {"Output/Directory=" + name};
+  }
+
   /**
    * A ring (r in [0.7, 1], 96 x 4 Q4 cells) pinched between two rigid
    * plates that close by 0.8 each, until its inner wall is pressed onto
@@ -146,7 +160,9 @@ GLISSADE_TEST(self_contact_pinched_ring)
   for (const std::string surface : {"bspline", "faceted"})
     {
       Simulation simulation(
-        SceneReader::read_string(pinched_ring(surface), "pinched ring"));
+        SceneReader::read_string(pinched_ring(surface),
+                                 "pinched ring",
+                                 own_directory("pinched " + surface)));
       const auto         &pairs = simulation.contact().contact_pairs();
       std::vector<double> plate_force;
       double              first_contact = -1.;
@@ -220,7 +236,9 @@ GLISSADE_TEST(self_contact_found_by_automatic_contact)
   for (const bool found : {false, true})
     {
       runs[found] = std::make_unique<Simulation>(
-        SceneReader::read_string(pinched_ring("bspline", found), "ring"));
+        SceneReader::read_string(pinched_ring("bspline", found),
+                                 "ring",
+                                 own_directory(found ? "found" : "written")));
       for (unsigned int k = 1; k <= 80; ++k)
         runs[found]->advance_to(k / 80., "increment " + std::to_string(k));
     }
@@ -268,7 +286,8 @@ GLISSADE_TEST(self_contact_inner_wall_as_two_halves)
     {
       Simulation simulation(
         SceneReader::read_string(pinched_ring("faceted", false, slave, master),
-                                 slave + " on " + master));
+                                 slave + " on " + master,
+                                 own_directory(slave + " on " + master)));
       const auto &pairs = simulation.contact().contact_pairs();
       plates.emplace_back();
       for (unsigned int k = 1; k <= 76; ++k)
