@@ -161,7 +161,8 @@ GLISSADE_TEST(automatic_contact_input_errors)
       {
         Simulation simulation(
           SceneReader::read_string(two_rings(scene_contact, sections),
-                                   "scene.prm"));
+                                   "scene.prm",
+                                   own_directory("refused")));
       }
     catch (const InputError &e)
       {
