@@ -6,7 +6,6 @@
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
-#include <cctype>
 #include <cmath>
 
 #include "body_resultant.h"
@@ -18,17 +17,11 @@ using namespace glissade_tests;
 
 namespace
 {
-  /**
-   * An output directory of the run's own: ctest runs tests side by side
-   * in one folder, and two runs may not share one.
-   */
+  /** An output directory of the run's own (own_output_directory). */
   std::vector<std::string>
   own_directory(const std::string &label)
   {
-    std::string name = "automatic_reach_";
-    for (const char c : label)
-      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    return {"Output/Directory=" + name};
+    return own_output_directory("automatic_reach_", label);
   }
 
   const std::string settings = " set Surface = bspline\n"

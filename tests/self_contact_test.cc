@@ -7,7 +7,6 @@
 #include <glissade/solver/simulation.h>
 
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <memory>
 
@@ -20,17 +19,11 @@ using namespace glissade_tests;
 
 namespace
 {
-  /**
-   * An output directory of the run's own: ctest runs tests side by side
-   * in one folder, and two runs may not share one.
-   */
+  /** An output directory of the run's own (own_output_directory). */
   std::vector<std::string>
   own_directory(const std::string &label)
   {
-    std::string name = "self_contact_";
-    for (const char c : label)
-      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    return {"Output/Directory=" + name};
+    return own_output_directory("self_contact_", label);
   }
 
   /**

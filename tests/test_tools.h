@@ -5,6 +5,7 @@
 // tests use.
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -85,6 +86,20 @@ namespace glissade_tests
     check(apart == 0,
           what + ": Newton iterations differ by more than one in some "
                  "increment");
+  }
+
+  /**
+   * The override that gives a run an output directory of its own, named
+   * from `prefix` and `label`: ctest runs tests side by side in one folder,
+   * and two runs may not share one.
+   */
+  inline std::vector<std::string>
+  own_output_directory(const std::string &prefix, const std::string &label)
+  {
+    std::string name = prefix;
+    for (const char c : label)
+      name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+    return {"Output/Directory=" + name};
   }
 
   /** The path of a file in the source tree (set by CMake). */

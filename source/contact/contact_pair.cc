@@ -137,9 +137,7 @@ namespace glissade
     const unsigned int    n = slave_nodes.size();
     std::vector<Point<2>> x(n);
     for (unsigned int k = 0; k < n; ++k)
-      x[k] = slave_nodes[k].reference_position +
-             Tensor<1, 2>({slave_body.displacement()(slave_nodes[k].dofs[0]),
-                           slave_body.displacement()(slave_nodes[k].dofs[1])});
+      x[k] = position(slave_nodes[k]);
     const Hypothesis   &hypothesis = slave_body.hypothesis();
     std::vector<double> area(n, 0.);
     for (const auto &[a, b] : faces)
@@ -321,12 +319,17 @@ namespace glissade
   bool
   ContactPair::may_be_near_master(const ContactNode &node) const
   {
-    if (!has_search_box)
-      return true;
+    return !has_search_box || search_box.point_inside(position(node));
+  }
+
+
+
+  Point<2>
+  ContactPair::position(const ContactNode &node) const
+  {
     const Vector<double> &u = slave_body.displacement();
-    return search_box.point_inside(
-      node.reference_position +
-      Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])}));
+    return node.reference_position +
+           Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])});
   }
 
 
@@ -407,11 +410,6 @@ namespace glissade
     // Each face's normal at the current state, turned outward as the
     // reference outward normal of its ends says, summed at its two nodes
     // (weighted by the face's length).
-    const Vector<double> &u        = slave_body.displacement();
-    const auto            position = [&](const ContactNode &node) {
-      return node.reference_position +
-             Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])});
-    };
     std::vector<Tensor<1, 2>> normal(slave_nodes.size());
     for (const auto &[a, b] : faces)
       {

@@ -329,6 +329,10 @@ namespace glissade
     dealii::BoundingBox<2> search_box;
     bool                   has_search_box = false;
 
+    /** A slave node's position at the current state. */
+    dealii::Point<2>
+    position(const ContactNode &node) const;
+
     /** False for a node outside the search box (search_only_within()). */
     bool
     may_be_near_master(const ContactNode &node) const;

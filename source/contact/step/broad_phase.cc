@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <iterator>
-#include <map>
 #include <utility>
 
 namespace glissade
@@ -20,34 +19,11 @@ namespace glissade
   {
     for (const Side &side : sides)
       {
-        Boundary                             boundary{side.body, {}, {}, {}};
-        std::map<unsigned int, unsigned int> index_of_vertex;
-        for (const auto &cell :
-             side.body->dof_handler().active_cell_iterators())
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                side.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
-              {
-                std::array<unsigned int, 2> face;
-                for (const unsigned int v : {0u, 1u})
-                  {
-                    const auto [at, added] =
-                      index_of_vertex.emplace(cell->face(f)->vertex_index(v),
-                                              boundary.dofs.size());
-                    face[v] = at->second;
-                    if (!added)
-                      continue;
-                    boundary.dofs.push_back(
-                      BoundaryConditions::cell_vertex_dofs(
-                        cell,
-                        GeometryInfo<2>::face_to_cell_vertices(f, v),
-                        side.body->space()));
-                    boundary.reference.push_back(cell->face(f)->vertex(v));
-                  }
-                boundary.faces.push_back(face);
-              }
-        boundaries.push_back(std::move(boundary));
+        bodies.push_back(side.body);
+        chains.push_back(
+          MasterChain::build(*side.body, side.boundary, side.entry));
       }
+    boxes.resize(chains.size());
   }
 
 
@@ -55,17 +31,19 @@ namespace glissade
   BoundingBox<2>
   BroadPhase::reach_box(const unsigned int side) const
   {
-    const Boundary       &boundary = boundaries[side];
-    const Vector<double> &u        = boundary.body->displacement();
-    std::vector<Point<2>> x(boundary.dofs.size());
+    const MasterChain    &chain = chains[side];
+    const Vector<double> &u     = bodies[side]->displacement();
+    std::vector<Point<2>> x(chain.value_dofs.size());
     for (unsigned int k = 0; k < x.size(); ++k)
-      x[k] = boundary.reference[k] +
-             Tensor<1, 2>({u(boundary.dofs[k][0]), u(boundary.dofs[k][1])});
+      x[k] =
+        chain.reference_points[k] +
+        Tensor<1, 2>({u(chain.value_dofs[k][0]), u(chain.value_dofs[k][1])});
+    // (segment k joins node k to node k + 1, the last to the first on a
+    // closed chain)
     double longest_face = 0.;
-    for (const auto &[a, b] : boundary.faces)
-      longest_face = std::max(longest_face, x[a].distance(x[b]));
-    if (x.empty())
-      return BoundingBox<2>();
+    for (unsigned int k = 0; k < chain.faces.size(); ++k)
+      longest_face =
+        std::max(longest_face, x[k].distance(x[(k + 1) % x.size()]));
     BoundingBox<2> box(x);
     box.extend(longest_face + 0.5 * alert_distance);
     return box;
@@ -74,17 +52,19 @@ namespace glissade
 
 
   std::vector<std::array<unsigned int, 2>>
-  BroadPhase::couples_within_reach() const
+  BroadPhase::couples_within_reach()
   {
-    std::vector<std::pair<BoundingBox<2>, unsigned int>> boxes;
-    for (unsigned int s = 0; s < boundaries.size(); ++s)
-      if (!boundaries[s].dofs.empty())
-        boxes.emplace_back(reach_box(s), s);
-    const auto tree = pack_rtree(boxes);
+    std::vector<std::pair<BoundingBox<2>, unsigned int>> leaves;
+    for (unsigned int s = 0; s < chains.size(); ++s)
+      {
+        boxes[s] = reach_box(s);
+        leaves.emplace_back(boxes[s], s);
+      }
+    const auto tree = pack_rtree(leaves);
 
     std::vector<std::array<unsigned int, 2>>             couples;
     std::vector<std::pair<BoundingBox<2>, unsigned int>> overlapping;
-    for (const auto &[box, s] : boxes)
+    for (const auto &[box, s] : leaves)
       {
         overlapping.clear();
         tree.query(boost::geometry::index::intersects(box),

@@ -24,12 +24,6 @@ namespace glissade
     , bodies(bodies)
     , timer(timer)
   {
-    const auto find = [&](const std::string &name) -> Body * {
-      for (const auto &b : bodies)
-        if (b->name() == name)
-          return b.get();
-      return nullptr;
-    };
     // Each pair is built and checked even when another has a mistake: all
     // of them in one message.
     InputErrorList mistakes;
@@ -37,14 +31,14 @@ namespace glissade
       mistakes.collect([&]() {
         auto pair = std::make_unique<ContactPair>(
           c,
-          *find(c.slave_body),
+          *body_named(c.slave_body),
           c.master == ContactDescription::MasterKind::obstacle ?
             nullptr :
-            find(c.master_body),
+            body_named(c.master_body),
           timer);
         pair->check_initial_state();
         pairs.push_back(std::move(pair));
-        couple_of_pair.push_back(
+        sides_of_pair.push_back(
           {{numbers::invalid_unsigned_int, numbers::invalid_unsigned_int}});
         resting.push_back(false);
       });
@@ -59,11 +53,12 @@ namespace glissade
         for (unsigned int s = 0; s < automatic.sides.size(); ++s)
           mistakes.collect([&]() {
             const auto       &side  = automatic.sides[s];
-            Body             *body  = find(side.body);
+            Body             *body  = body_named(side.body);
             const std::string entry = automatic.file +
                                       ": Scene/Contact bodies (body '" +
                                       side.body + "')";
-            sides.push_back({body, {body->boundary_id(side.boundary, entry)}});
+            body->boundary_id(side.boundary, entry);
+            sides.push_back({body, side.boundary, entry});
             // What the side touches as a master holds what it touches as
             // a slave: its surface's dofs, the vertices' and, on a Hermite
             // body, their derivatives.
@@ -95,7 +90,7 @@ namespace glissade
         if (body != nullptr)
           bodies_in_contact.push_back(body_index(body));
     for (const auto &side : automatic.sides)
-      bodies_in_contact.push_back(body_index(find(side.body)));
+      bodies_in_contact.push_back(body_index(body_named(side.body)));
     std::sort(bodies_in_contact.begin(), bodies_in_contact.end());
     bodies_in_contact.erase(std::unique(bodies_in_contact.begin(),
                                         bodies_in_contact.end()),
@@ -144,13 +139,7 @@ namespace glissade
   ContactProblem::make_couple_pairs(const std::array<unsigned int, 2> &couple,
                                     const bool resting_now)
   {
-    const auto find = [&](const std::string &name) -> Body & {
-      for (const auto &b : bodies)
-        if (b->name() == name)
-          return *b;
-      AssertThrow(false, ExcInternalError());
-      return *bodies[0];
-    };
+    // (each pass: its slave side and its master side)
     std::vector<std::array<unsigned int, 2>> passes = {couple};
     if (automatic.passes == 2)
       passes.push_back({{couple[1], couple[0]}});
@@ -159,13 +148,13 @@ namespace glissade
         const ContactDescription description = automatic.pair(slave, master);
         pairs.push_back(
           std::make_unique<ContactPair>(description,
-                                        find(description.slave_body),
-                                        &find(description.master_body),
+                                        *body_named(description.slave_body),
+                                        body_named(description.master_body),
                                         timer));
         pairs.back()->report_forces_scaled_by(reported_force_scale);
         if (resting_now)
           pairs.back()->rest(step_start, step_end);
-        couple_of_pair.push_back(couple);
+        sides_of_pair.push_back({{slave, master}});
         resting.push_back(resting_now);
       }
     made_couples.insert(std::upper_bound(made_couples.begin(),
@@ -188,33 +177,25 @@ namespace glissade
     // Mid-step, a pair that comes within reach joins with its nodes as
     // they are (inactive, no counterpart): activate_penetrating_nodes()
     // projects them. A pair does not rest before the next detection.
-    // The slave nodes searched: those within the alert distance of the
-    // master's box (the rest of a ring whose side touches another never
-    // is).
-    std::vector<BoundingBox<2>> near(broad_phase->n_sides());
-    std::vector<bool>           near_known(broad_phase->n_sides(), false);
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      if (const auto &couple = couple_of_pair[p];
-          couple[0] != numbers::invalid_unsigned_int)
+      if (const auto [slave, master] = sides_of_pair[p];
+          slave != numbers::invalid_unsigned_int)
         {
-          const bool in_reach = std::binary_search(within_reach.begin(),
-                                                   within_reach.end(),
-                                                   couple);
-          resting[p]          = mid_step ? resting[p] && !in_reach : !in_reach;
+          const bool in_reach =
+            std::binary_search(within_reach.begin(),
+                               within_reach.end(),
+                               std::array<unsigned int, 2>{
+                                 {std::min(slave, master),
+                                  std::max(slave, master)}});
+          resting[p] = mid_step ? resting[p] && !in_reach : !in_reach;
           if (resting[p])
             continue;
-          // (the master is the side the pair's slave is not)
-          const unsigned int master =
-            automatic.sides[couple[0]].body == pairs[p]->slave().name() ?
-              couple[1] :
-              couple[0];
-          if (!near_known[master])
-            {
-              near[master] = broad_phase->reach_box(master);
-              near[master].extend(0.5 * automatic.settings.alert_distance);
-              near_known[master] = true;
-            }
-          pairs[p]->search_only_within(near[master]);
+          // The slave nodes searched: those within the alert distance of
+          // the master's box (the rest of a ring whose side touches
+          // another never is).
+          BoundingBox<2> near = broad_phase->box(master);
+          near.extend(0.5 * automatic.settings.alert_distance);
+          pairs[p]->search_only_within(near);
         }
   }
 
@@ -250,7 +231,7 @@ namespace glissade
   {
     std::vector<std::string> names;
     for (unsigned int p = 0; p < pairs.size(); ++p)
-      if (couple_of_pair[p][0] != numbers::invalid_unsigned_int)
+      if (sides_of_pair[p][0] != numbers::invalid_unsigned_int)
         names.push_back(pairs[p]->name());
     return names;
   }
@@ -282,6 +263,17 @@ namespace glissade
     reported_force_scale = scale;
     for (const auto &pair : pairs)
       pair->report_forces_scaled_by(scale);
+  }
+
+
+
+  Body *
+  ContactProblem::body_named(const std::string &name) const
+  {
+    for (const auto &b : bodies)
+      if (b->name() == name)
+        return b.get();
+    return nullptr;
   }
 
 

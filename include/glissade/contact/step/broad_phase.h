@@ -4,8 +4,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <glissade/contact/surfaces/master_chain.h>
+
 #include <array>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -31,41 +32,49 @@ namespace glissade
   class BroadPhase
   {
   public:
-    /** A listed body and the boundary ids of its listed boundary. */
+    /** A listed body and the name of its listed boundary; `entry` names
+     *  it in messages. */
     struct Side
     {
-      const Body                          *body;
-      std::set<dealii::types::boundary_id> boundary_ids;
+      const Body *body;
+      std::string boundary;
+      std::string entry;
     };
 
+    /** Throws an InputError naming a side's entry if its boundary is not
+     *  one chain of faces (MasterChain::build). */
     BroadPhase(const std::vector<Side> &sides, const double alert_distance);
 
-    /** The couples (i, j), i < j, indices into the sides, within reach at
-     *  the bodies' current displacements; sorted. */
+    /**
+     * The couples (i, j), i < j, indices into the sides, within reach at
+     * the bodies' current displacements; sorted. The boxes it compared are
+     * kept (box()).
+     */
     std::vector<std::array<unsigned int, 2>>
-    couples_within_reach() const;
+    couples_within_reach();
 
-    /** The box of a side at the current state, grown as described above. */
-    dealii::BoundingBox<2>
-    reach_box(const unsigned int side) const;
+    /** A side's box, grown as described above, as the last
+     *  couples_within_reach() found it. */
+    const dealii::BoundingBox<2> &
+    box(const unsigned int side) const
+    {
+      return boxes[side];
+    }
 
     unsigned int
     n_sides() const
     {
-      return boundaries.size();
+      return chains.size();
     }
 
   private:
-    /** A side's boundary: its vertices' value dofs and positions, and its
-     *  faces as indices into them. */
-    struct Boundary
-    {
-      const Body                                                 *body;
-      std::vector<std::array<dealii::types::global_dof_index, 2>> dofs;
-      std::vector<dealii::Point<2>>                               reference;
-      std::vector<std::array<unsigned int, 2>>                    faces;
-    };
-    std::vector<Boundary> boundaries;
-    double                alert_distance;
+    /** A side's box at the current state. */
+    dealii::BoundingBox<2>
+    reach_box(const unsigned int side) const;
+
+    std::vector<const Body *>           bodies;
+    std::vector<MasterChain>            chains;
+    std::vector<dealii::BoundingBox<2>> boxes;
+    double                              alert_distance;
   };
 } // namespace glissade

@@ -182,6 +182,11 @@ namespace glissade
     std::string
     held_by_contact_message() const;
 
+    /** The body of that name, or nullptr (the scene reader checked the
+     *  names a pair gives). */
+    Body *
+    body_named(const std::string &name) const;
+
     /** Index of a body in the simulation's list. */
     unsigned int
     body_index(const Body *body) const;
@@ -210,9 +215,9 @@ namespace glissade
     std::unique_ptr<BroadPhase> broad_phase;
     /** Each side's listed boundary's dofs (contact_dofs()). */
     std::vector<std::vector<dealii::types::global_dof_index>> side_dofs;
-    /** Per pair: its couple (sides i < j), or none for a pair written or
-     *  made at the start (a body on itself); and whether it rests. */
-    std::vector<std::array<unsigned int, 2>> couple_of_pair;
+    /** Per pair: its slave and master sides, or none for a pair written
+     *  or made at the start (a body on itself); and whether it rests. */
+    std::vector<std::array<unsigned int, 2>> sides_of_pair;
     std::vector<bool>                        resting;
     /** The couples whose pairs are made, sorted. */
     std::vector<std::array<unsigned int, 2>> made_couples;
