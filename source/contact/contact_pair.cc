@@ -5,6 +5,7 @@
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/contact_pair.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/discretisation/discrete_gradient.h>
 #include <glissade/contact/surfaces/abradable_coating.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/mesh/boundary_normals.h>
@@ -230,7 +231,55 @@ namespace glissade
   bool
   ContactPair::project(ContactNode &node, const bool keep_segment) const
   {
-    return discretisation->project(node, keep_segment);
+    // Under a dynamic scheme the node's normal force will be the mean of
+    // the gap's gradients at the step's start and end: the contact tangent
+    // is that of its end half, taken at half the normal reaction.
+    const bool over_the_step =
+      slave_body.inertia() != nullptr && std::isfinite(node.start_gap_in_dofs);
+    const bool mean_normal = over_the_step && !node.start_normal_force.empty();
+    const double normal_reaction = node.reaction[1];
+    if (mean_normal)
+      node.reaction[1] *= 0.5;
+    const bool projected = discretisation->project(node, keep_segment);
+    node.reaction[1]     = normal_reaction;
+    if (!projected)
+      return false;
+    // Under a dynamic scheme the reaction's forces are discrete gradients
+    // over the step, so that the contact's work on the bodies is what its
+    // law bounds (discrete_gradient.h). A node found within the step has
+    // no start gap: its forces stay the end's gradient.
+    if (over_the_step)
+      {
+        StepMotion motion;
+        motion.increment = [this](const unsigned int            side,
+                                  const types::global_dof_index dof) {
+          const Body &body = side == 0 ? slave_body : *master_body;
+          return body.displacement()(dof) - body.stored_displacement()(dof);
+        };
+        if (master_body != nullptr)
+          motion.translation = [this](const unsigned int            side,
+                                      const types::global_dof_index dof) {
+            const BodyInertia &inertia =
+              *(side == 0 ? slave_body : *master_body).inertia();
+            return std::array<double, 2>{{inertia.unit_translation(0)(dof),
+                                          inertia.unit_translation(1)(dof)}};
+          };
+        motion.one_body               = self_contact;
+        motion.length                 = slave_body.size();
+        const ContactLinearization &l = node.linearization;
+        // (the slip against a rigid obstacle counts its motion, and at a
+        // faceted vertex it is the offset from the vertex: neither is the
+        // dofs' alone)
+        const double slip = master_body != nullptr && l.vertex_cone == 0. ?
+                              l.slip :
+                              std::numeric_limits<double>::quiet_NaN();
+        make_forces_discrete_gradients(node.linearization,
+                                       node.start_normal_force,
+                                       l.gap - node.start_gap_in_dofs,
+                                       slip,
+                                       motion);
+      }
+    return true;
   }
 
 
@@ -270,9 +319,16 @@ namespace glissade
         node.at_vertex        = false;
         if (!node.active)
           node.reaction = {{0., 0.}};
+        // (the state is the step's start: under a dynamic scheme, the gap's
+        // gradient there is half the node's normal force over the step, and
+        // the time integrator records the gap)
+        node.start_gap_in_dofs = std::numeric_limits<double>::quiet_NaN();
+        node.start_normal_force.clear();
         node.projected = project(node);
         node.active    = node.projected &&
                       node.gap <= description.alert_distance && can_react(node);
+        if (node.projected && slave_body.inertia() != nullptr)
+          node.start_normal_force = node.linearization.normal_force;
         if (!node.active)
           {
             node.reaction = {{0., 0.}};
@@ -302,15 +358,17 @@ namespace glissade
   void
   ContactPair::rest_node(ContactNode &node)
   {
-    node.active           = false;
-    node.projected        = false;
-    node.segment          = -1;
-    node.segment_switches = 0;
-    node.at_vertex        = false;
-    node.reaction         = {{0., 0.}};
-    node.status           = BiPotentialSolver::NodeStatus::open;
-    node.law_shift        = {{0., 0.}};
-    node.start_gap        = std::numeric_limits<double>::quiet_NaN();
+    node.active            = false;
+    node.projected         = false;
+    node.segment           = -1;
+    node.segment_switches  = 0;
+    node.at_vertex         = false;
+    node.reaction          = {{0., 0.}};
+    node.status            = BiPotentialSolver::NodeStatus::open;
+    node.law_shift         = {{0., 0.}};
+    node.start_gap         = std::numeric_limits<double>::quiet_NaN();
+    node.start_gap_in_dofs = std::numeric_limits<double>::quiet_NaN();
+    DofVector().swap(node.start_normal_force);
     node.linearization.release_rows();
   }
 

@@ -152,7 +152,10 @@ namespace glissade
       Patterns::Selection("segment|spline"),
       "How a B-spline master receives the reaction: segment hands it to "
       "the two nodes of the underlying straight segment (the paper); "
-      "spline uses the spline's own weights (consistent, symmetric W).");
+      "spline uses the spline's own weights (consistent, symmetric W). "
+      "Under a dynamic scheme it is always spline: segment's forces are "
+      "not the gap's gradient, and their work on a node sliding over a step "
+      "is not the contact law's (doc/theory.md, 'Forces over a step').");
     prm.declare_entry("Discretisation",
                       "node-to-segment",
                       Patterns::Selection(

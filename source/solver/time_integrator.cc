@@ -203,10 +203,12 @@ namespace glissade
         for (const auto &pair : contact->contact_pairs())
           for (ContactNode &node : pair->nodes())
             {
-              node.start_gap = std::numeric_limits<double>::quiet_NaN();
+              node.start_gap         = std::numeric_limits<double>::quiet_NaN();
+              node.start_gap_in_dofs = node.start_gap;
               if (!node.projected)
                 continue;
-              node.start_gap = node.linearization.gap;
+              node.start_gap         = node.linearization.gap;
+              node.start_gap_in_dofs = node.linearization.gap;
               if (pair->master() == nullptr)
                 {
                   Point<2> x = node.reference_position;

@@ -168,6 +168,14 @@ namespace glissade
     std::array<double, 2>
     momentum() const;
 
+    /** The unit translation along c: its value dofs of component c at 1,
+     *  its derivative dofs (a Hermite body's) at 0. */
+    const dealii::Vector<double> &
+    unit_translation(const unsigned int c) const
+    {
+      return translation[c];
+    }
+
     /** 1/2 v . M v */
     double
     kinetic_energy() const;

@@ -8,6 +8,7 @@
 #include <glissade/contact/surfaces/master_surface.h>
 
 #include <array>
+#include <limits>
 
 namespace glissade
 {
@@ -58,6 +59,17 @@ namespace glissade
      * counterpart then.
      */
     double start_gap = 0.;
+    /**
+     * The same gap at the step's start with a rigid obstacle where it stands
+     * at the step's end: the part of the gap's change that the dofs' motion
+     * over the step makes (equal to start_gap against a deformable master).
+     * The forces of the node's normal reaction are a discrete gradient of
+     * the gap over that change (discrete_gradient.h).
+     */
+    double start_gap_in_dofs = std::numeric_limits<double>::quiet_NaN();
+    /** Under a dynamic scheme, the forces of a unit normal reaction at the
+     *  step's start (the gap's gradient there); empty without one. */
+    DofVector start_normal_force;
 
     /**
      * Gap, slip, their derivatives, the forces of the reaction and the
