@@ -56,7 +56,9 @@ namespace glissade
    * it) goes along the step's motion w of the node's dofs with the bodies'
    * common translation taken out, which keeps the forces on the two bodies
    * equal and opposite. Nothing is added where the node did not move
-   * relative to the master (w nil).
+   * relative to the master (w nil). The rows of the linearised gap and
+   * slip become these forces too (W symmetric for the bi-potential
+   * solver; Newton then converges at a rate of the order of |H du|).
    */
   void
   make_forces_discrete_gradients(ContactLinearization &linearization,
