@@ -84,6 +84,30 @@ namespace
 
 
   /**
+   * A self-contact pair's figures: its forces on the body summed (zero:
+   * action and reaction are both on it), what it carries, and its deepest
+   * active slave gap.
+   */
+  struct SelfContactFigures
+  {
+    explicit SelfContactFigures(const ContactPair &pair)
+    {
+      const auto     forces  = pair.contact_forces();
+      Vector<double> on_body = forces[0];
+      on_body += forces[1];
+      sum     = resultant(pair.slave(), on_body);
+      carried = pair.total_force().norm();
+      for (const auto &node : pair.nodes())
+        if (node.active)
+          deepest = std::min(deepest, node.gap);
+    }
+    Tensor<1, 2> sum;
+    double       carried = 0.;
+    double       deepest = 0.;
+  };
+
+
+  /**
    * How far a node of the deformed inner boundary lies behind the polygon
    * of its faces that face it (negative: inside the wall), the nodes next
    * to each face left out: the deepest over every node, from the positions
@@ -171,17 +195,12 @@ GLISSADE_TEST(self_contact_pinched_ring)
                 surface + ": the plates' forces differ at increment " +
                   std::to_string(k));
         }
-      const ContactPair &inner   = *pairs[2];
-      const auto         forces  = inner.contact_forces();
-      Vector<double>     on_ring = forces[0];
-      on_ring += forces[1];
-      const Tensor<1, 2> sum     = resultant(inner.slave(), on_ring);
-      const double       carried = inner.total_force().norm();
-      double             deepest = 0.;
-      for (const auto &node : inner.nodes())
-        if (node.active)
-          deepest = std::min(deepest, node.gap);
-      const double behind = deepest_node_behind_facing_faces(inner);
+      const ContactPair       &inner = *pairs[2];
+      const SelfContactFigures figures(inner);
+      const Tensor<1, 2>      &sum     = figures.sum;
+      const double             carried = figures.carried;
+      const double             deepest = figures.deepest;
+      const double             behind = deepest_node_behind_facing_faces(inner);
       // The first self-contact step's change of the plates' force against
       // the largest change of the three steps after it.
       const unsigned int first = std::lround(first_contact * 80.) - 1;
@@ -336,18 +355,13 @@ GLISSADE_TEST(self_contact_pinched_ring_under_newmark)
   overrides.push_back("Body ring/Material/Density=1");
   Simulation simulation(SceneReader::read_string(prm, "ring.prm", overrides));
   simulation.run();
-  const auto        &pairs   = simulation.contact().contact_pairs();
-  const ContactPair &inner   = *pairs[2];
-  const auto         forces  = inner.contact_forces();
-  Vector<double>     on_ring = forces[0];
-  on_ring += forces[1];
-  const Tensor<1, 2> sum     = resultant(inner.slave(), on_ring);
-  const double       carried = inner.total_force().norm();
-  double             deepest = 0.;
-  for (const auto &node : inner.nodes())
-    if (node.active)
-      deepest = std::min(deepest, node.gap);
-  const double plates = -pairs[0]->total_force()[1];
+  const auto              &pairs = simulation.contact().contact_pairs();
+  const ContactPair       &inner = *pairs[2];
+  const SelfContactFigures figures(inner);
+  const Tensor<1, 2>      &sum     = figures.sum;
+  const double             carried = figures.carried;
+  const double             deepest = figures.deepest;
+  const double             plates  = -pairs[0]->total_force()[1];
 
   Simulation quasi_static(
     SceneReader::read_string(pinched_ring("bspline"),
