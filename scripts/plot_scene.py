@@ -19,15 +19,12 @@ run wrote into its output directory:
 
 Run by glissade with Debian's /usr/bin/python3 (matplotlib); by hand:
 /usr/bin/python3 scripts/plot_scene.py <output directory>."""
-import base64
 import csv
 import glob
 import math
 import os
 import re
-import struct
 import sys
-import zlib
 
 import matplotlib
 
@@ -37,6 +34,7 @@ from matplotlib.collections import PolyCollection  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from atomic_png import save_atomically  # noqa: E402
+from vtu_reader import vtu_arrays  # noqa: E402
 
 directory = sys.argv[1]
 curves = [tuple(a.split(":", 1)) for a in sys.argv[2:]]
@@ -168,44 +166,6 @@ def plot_curves():
     fig.tight_layout()
     save_atomically(fig, os.path.join(directory, "curves.png"), dpi=110)
     plt.close(fig)
-
-
-VTK_TYPES = {"Float32": "f", "Float64": "d", "Int32": "i", "Int64": "q",
-             "UInt8": "B", "UInt32": "I", "UInt64": "Q"}
-
-
-def vtu_arrays(path):
-    """The DataArrays of a VTU file by name ("Points" for the points), as
-    flat lists: ASCII, or deal.II's binary (base64 of a header of UInt32
-    block sizes, then of the zlib-compressed blocks)."""
-    with open(path) as f:
-        text = f.read()
-    compressed = "vtkZLibDataCompressor" in text[:1000]
-    arrays = {}
-    for match in re.finditer(r"<DataArray([^>]*)>(.*?)</DataArray>", text, re.S):
-        attributes, body = match.group(1), match.group(2).strip()
-        kind = re.search(r'type="(\w+)"', attributes).group(1)
-        name = re.search(r'Name="([^"]*)"', attributes)
-        name = name.group(1) if name else "Points"
-        if 'format="ascii"' in attributes:
-            values = [float(v) for v in body.split()]
-        else:
-            code = VTK_TYPES[kind]
-            if compressed:
-                n_blocks = struct.unpack("<I", base64.b64decode(body[:8])[:4])[0]
-                header_chars = 4 * math.ceil(4 * (3 + n_blocks) / 3)
-                header = struct.unpack(f"<{3 + n_blocks}I",
-                                       base64.b64decode(body[:header_chars]))
-                data = base64.b64decode(body[header_chars:])
-                raw, start = b"", 0
-                for size in header[3:]:
-                    raw += zlib.decompress(data[start:start + size])
-                    start += size
-            else:
-                raw = base64.b64decode(body)[4:]
-            values = list(struct.unpack(f"<{len(raw) // struct.calcsize(code)}{code}", raw))
-        arrays[name] = values
-    return arrays
 
 
 def last_dataset(pvd_path):

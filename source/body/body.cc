@@ -275,12 +275,15 @@ namespace glissade
       // unsymmetric)
       without_follower_pressure(*boundary_conditions) &&
         !description.turning_frame.active(),
-      RigidMotionSprings(motions_free_of_supports(*boundary_conditions,
-                                                  dofs,
-                                                  *element_space,
-                                                  box,
-                                                  reference_size,
-                                                  of_revolution),
+      // (an elastic foundation holds every rigid motion)
+      RigidMotionSprings(description.elastic_foundation > 0. ?
+                           std::vector<RigidMotion>() :
+                           motions_free_of_supports(*boundary_conditions,
+                                                    dofs,
+                                                    *element_space,
+                                                    box,
+                                                    reference_size,
+                                                    of_revolution),
                          source,
                          description.name,
                          reference_size),

@@ -1,5 +1,6 @@
 // The loads a body's assembly integrates cell by cell: tractions, follower
-// pressure, weight (include/glissade/body/distributed_loads.h).
+// pressure, weight, elastic foundation
+// (include/glissade/body/distributed_loads.h).
 
 #include <glissade/base/user_function.h>
 #include <glissade/body/distributed_loads.h>
@@ -20,6 +21,7 @@ namespace glissade
     , hypothesis(description.material.hypothesis,
                  description.material.thickness)
     , small_strain(description.material.kinematics == Kinematics::small_strain)
+    , foundation_stiffness(description.elastic_foundation)
   {
     if (!description.gravity.empty())
       gravity =
@@ -44,6 +46,45 @@ namespace glissade
         cell, local_dofs, u, time, evaluator, cell_matrix, cell_rhs);
     if (gravity)
       add_weight(cell, time, evaluator, cell_rhs);
+    if (foundation_stiffness > 0.)
+      add_foundation(cell, local_dofs, u, evaluator, cell_matrix, cell_rhs);
+  }
+
+
+
+  void
+  DistributedLoads::add_foundation(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    const std::vector<types::global_dof_index>         &local_dofs,
+    const Vector<double>                               &u,
+    CellEvaluator                                      &evaluator,
+    FullMatrix<double>                                 &cell_matrix,
+    Vector<double>                                     &cell_rhs) const
+  {
+    // Springs to the reference position: -k u per unit reference volume,
+    // at the cell's quadrature points, so that its tangent is k times the
+    // consistent mass matrix (what GetFEM's mass brick adds).
+    evaluator.reinit(cell);
+    const unsigned int  n_local = evaluator.dofs_per_cell();
+    std::vector<double> cell_values(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      cell_values[i] = u(local_dofs[i]);
+    for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
+      {
+        const Point<2> X    = evaluator.quadrature_point(q);
+        const double   k_dV = foundation_stiffness * evaluator.JxW(q) *
+                            hypothesis.out_of_plane_measure(X);
+        const Tensor<1, 2> displacement = evaluator.value(cell_values, q);
+        for (unsigned int i = 0; i < n_local; ++i)
+          {
+            const unsigned int ci = evaluator.displacement_component(i);
+            const double       Ni = evaluator.shape_value(i, q);
+            cell_rhs(i) -= k_dV * Ni * displacement[ci];
+            for (unsigned int j = 0; j < n_local; ++j)
+              if (evaluator.displacement_component(j) == ci)
+                cell_matrix(i, j) += k_dV * Ni * evaluator.shape_value(j, q);
+          }
+      }
   }
 
 

@@ -80,6 +80,17 @@ namespace glissade
           "Density), a force per unit volume rho g: 'gx, gy' (expressions "
           "in x, y, t), e.g. '0, -9.81'. Empty: none.");
         prm.declare_entry(
+          "Elastic foundation",
+          "0",
+          Patterns::Double(0.),
+          "Springs of this stiffness per unit reference volume (force per "
+          "unit volume and unit displacement, times the Thickness) holding "
+          "every point of the body to where it started: a force -k u. It "
+          "holds a free body before contact does, so that a quasi-static "
+          "scene has one answer (GetFEM's multi-body demo adds the same "
+          "term as a 'mass brick'); its work is counted with the loads'. "
+          "0: none.");
+        prm.declare_entry(
           "Pressure",
           "",
           Patterns::Anything(),
@@ -334,6 +345,7 @@ namespace glissade
                              "'" + g + "': expected 'gx, gy'");
           entry_format::check_expressions(body.gravity, where + "Gravity");
         }
+      body.elastic_foundation = prm.get_double("Elastic foundation");
       prm.leave_subsection();
     }
   } // namespace

@@ -505,10 +505,11 @@ namespace glissade
         prm.enter_subsection("Body " + name);
         body.parse_parameters(prm);
         prm.leave_subsection();
-        // A body that nothing holds (no Dirichlet datum, no contact pair)
-        // has a singular tangent: its rigid-body motions are free. The
-        // factorisation would not always say so (round-off pivots), and the
-        // run would end on an inverted element far from the cause.
+        // A body that nothing holds (no Dirichlet datum, no contact pair,
+        // no elastic foundation) has a singular tangent: its rigid-body motions
+        // are free. The factorisation would not always say so (round-off
+        // pivots), and the run would end on an inverted element far from the
+        // cause.
         bool in_contact = false;
         for (const auto &c : scene.contacts)
           in_contact =
@@ -516,13 +517,15 @@ namespace glissade
         for (const auto &side : scene.automatic_contact.sides)
           in_contact = in_contact || side.body == name;
         if (body.dirichlet.empty() && !in_contact &&
+            !(body.elastic_foundation > 0.) &&
             !scene.time_integration.dynamic())
           prm.check([&]() {
             throw InputError(source + ": Body " + name + "/Boundary conditions",
                              "body '" + name +
                                "' has no support: no Fixed, Prescribed "
-                               "displacement or rotation, and no contact "
-                               "pair, so its rigid-body motions (two "
+                               "displacement or rotation, no contact pair "
+                               "and no Elastic foundation, so its "
+                               "rigid-body motions (two "
                                "translations and a rotation) are free");
           });
         scene.bodies.push_back(body);

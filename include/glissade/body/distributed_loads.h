@@ -19,8 +19,9 @@ namespace glissade
   /**
    * The loads a body's assembly integrates cell by cell: tractions and
    * follower pressure on its boundary faces (Boundary conditions/Traction,
-   * Pressure) and its weight (Gravity). Point loads are nodal forces, which
-   * BoundaryConditions::add_point_loads gives directly.
+   * Pressure), its weight (Gravity) and its elastic foundation, springs
+   * -k u per unit volume (Elastic foundation). Point loads are nodal forces,
+   * which BoundaryConditions::add_point_loads gives directly.
    *
    * They are added in the assembly's sequential copier, cell after cell:
    * their muParser functions hold a time and are not safe to share between
@@ -62,6 +63,17 @@ namespace glissade
       dealii::FullMatrix<double>                                 &cell_matrix,
       dealii::Vector<double> &cell_rhs) const;
 
+    /** The elastic foundation's forces -k u of the cell and their tangent
+     *  k N N^T (a mass matrix times k). */
+    void
+    add_foundation(
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      const std::vector<dealii::types::global_dof_index>         &local_dofs,
+      const dealii::Vector<double>                               &u,
+      CellEvaluator                                              &evaluator,
+      dealii::FullMatrix<double>                                 &cell_matrix,
+      dealii::Vector<double> &cell_rhs) const;
+
     /** The weight rho g of the cell. */
     void
     add_weight(const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
@@ -76,5 +88,7 @@ namespace glissade
     const bool       small_strain;
     /** Boundary conditions/Gravity: an acceleration of x, y, t, or none. */
     std::unique_ptr<dealii::Function<2>> gravity;
+    /** Boundary conditions/Elastic foundation: k, or 0 for none. */
+    const double foundation_stiffness;
   };
 } // namespace glissade

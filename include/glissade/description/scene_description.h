@@ -197,6 +197,10 @@ namespace glissade
     /** An acceleration field of x, y, t acting on the mass (Boundary
      *  conditions/Gravity); empty for none. */
     std::vector<std::string> gravity;
+    /** Springs per unit reference volume holding every point of the body
+     *  to where it started (Boundary conditions/Elastic foundation); 0 for
+     *  none. */
+    double elastic_foundation = 0.;
     /** The frame the body is seen from (Turning frame); inertial if not
      *  active(). */
     TurningFrameDescription turning_frame;

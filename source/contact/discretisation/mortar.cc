@@ -4,6 +4,7 @@
 #include <glissade/body/body.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
 #include <glissade/contact/discretisation/mortar_variables.h>
+#include <glissade/contact/surfaces/composite_surface.h>
 #include <glissade/contact/surfaces/curve_surface.h>
 #include <glissade/description/scene_description.h>
 
@@ -966,6 +967,17 @@ namespace glissade
   create_mortar(const ContactDiscretisation::Context &context)
   {
     const std::string entry = context.description.entry;
+    if (const auto *composite =
+          dynamic_cast<const CompositeSurface *>(&context.surface))
+      throw InputError(entry + "/Master boundary",
+                       "mortar contact integrates over one master curve; "
+                       "the boundary '" +
+                         context.description.master_boundary + "' of body '" +
+                         context.description.master_body + "' has " +
+                         std::to_string(composite->n_curves()) +
+                         " (a body with holes?): use Discretisation = "
+                         "node-to-segment, or name one curve as the master "
+                         "boundary (Mesh/Boundary parts)");
     if (context.master != nullptr &&
         dynamic_cast<const CurveSurface *>(&context.surface) == nullptr)
       throw InputError(entry + "/Surface",

@@ -21,7 +21,7 @@ namespace glissade
       {
         bodies.push_back(side.body);
         chains.push_back(
-          MasterChain::build(*side.body, side.boundary, side.entry));
+          MasterChain::build_all(*side.body, side.boundary, side.entry));
       }
     boxes.resize(chains.size());
   }
@@ -31,20 +31,24 @@ namespace glissade
   BoundingBox<2>
   BroadPhase::reach_box(const unsigned int side) const
   {
-    const MasterChain    &chain = chains[side];
-    const Vector<double> &u     = bodies[side]->displacement();
-    std::vector<Point<2>> x(chain.value_dofs.size());
-    for (unsigned int k = 0; k < x.size(); ++k)
-      x[k] =
-        chain.reference_points[k] +
-        Tensor<1, 2>({u(chain.value_dofs[k][0]), u(chain.value_dofs[k][1])});
-    // (segment k joins node k to node k + 1, the last to the first on a
-    // closed chain)
-    double longest_face = 0.;
-    for (unsigned int k = 0; k < chain.faces.size(); ++k)
-      longest_face =
-        std::max(longest_face, x[k].distance(x[(k + 1) % x.size()]));
-    BoundingBox<2> box(x);
+    const Vector<double> &u = bodies[side]->displacement();
+    std::vector<Point<2>> all;
+    double                longest_face = 0.;
+    for (const MasterChain &chain : chains[side])
+      {
+        std::vector<Point<2>> x(chain.value_dofs.size());
+        for (unsigned int k = 0; k < x.size(); ++k)
+          x[k] = chain.reference_points[k] +
+                 Tensor<1, 2>(
+                   {u(chain.value_dofs[k][0]), u(chain.value_dofs[k][1])});
+        // (segment k joins node k to node k + 1, the last to the first on
+        // a closed chain)
+        for (unsigned int k = 0; k < chain.faces.size(); ++k)
+          longest_face =
+            std::max(longest_face, x[k].distance(x[(k + 1) % x.size()]));
+        all.insert(all.end(), x.begin(), x.end());
+      }
+    BoundingBox<2> box(all);
     box.extend(longest_face + 0.5 * alert_distance);
     return box;
   }

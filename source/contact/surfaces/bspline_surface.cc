@@ -21,7 +21,8 @@ namespace glissade
       BSplineSurface(const SurfaceContext &context)
         : CurveSurface(*context.master,
                        context.description.master_boundary,
-                       context.description.entry + "/Master boundary")
+                       context.description.entry + "/Master boundary",
+                       context.curve)
         , segment_transfer(context.description.force_transfer ==
                            ContactDescription::ForceTransfer::segment)
       {

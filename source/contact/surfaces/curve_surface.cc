@@ -9,9 +9,10 @@ namespace glissade
 
   CurveSurface::CurveSurface(const Body        &master,
                              const std::string &boundary,
-                             const std::string &entry)
+                             const std::string &entry,
+                             const unsigned int curve)
     : master(master)
-    , chain(MasterChain::build(master, boundary, entry))
+    , chain(MasterChain::build(master, boundary, entry, curve))
   {}
 
 

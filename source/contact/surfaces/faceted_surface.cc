@@ -36,7 +36,8 @@ namespace glissade
       FacetedSurface(const SurfaceContext &context)
         : CurveSurface(*context.master,
                        context.description.master_boundary,
-                       context.description.entry + "/Master boundary")
+                       context.description.entry + "/Master boundary",
+                       context.curve)
         , rule(
             context.description.surface_settings.has_value() ?
               std::any_cast<VertexRule>(context.description.surface_settings) :

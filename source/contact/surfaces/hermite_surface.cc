@@ -100,7 +100,8 @@ namespace glissade
     HermiteSurface::HermiteSurface(const SurfaceContext &context)
       : CurveSurface(*context.master,
                      context.description.master_boundary,
-                     context.description.entry + "/Master boundary")
+                     context.description.entry + "/Master boundary",
+                     context.curve)
     {
       const auto *hermite = dynamic_cast<const HermiteSpace *>(&master.space());
       if (hermite == nullptr)

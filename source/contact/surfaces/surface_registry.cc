@@ -1,4 +1,5 @@
 #include <glissade/base/input_error.h>
+#include <glissade/contact/surfaces/composite_surface.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/description/scene_description.h>
 
@@ -102,7 +103,32 @@ namespace glissade
                                 context.description.obstacle;
     for (const auto &entry : entries())
       if (entry.kind == kind && entry.name == name)
-        return entry.create(context);
+        {
+          if (kind == Kind::rigid)
+            return entry.create(context);
+          // A boundary of several curves (a body with holes): a surface
+          // of the pair's kind on each, as one CompositeSurface.
+          const unsigned int n_curves =
+            MasterChain::build_all(*context.master,
+                                   context.description.master_boundary,
+                                   context.description.entry +
+                                     "/Master boundary")
+              .size();
+          if (n_curves == 1)
+            return entry.create(context);
+          std::vector<std::unique_ptr<CurveSurface>> curves;
+          for (unsigned int c = 0; c < n_curves; ++c)
+            {
+              SurfaceContext of_curve                = context;
+              of_curve.curve                         = c;
+              std::unique_ptr<MasterSurface> surface = entry.create(of_curve);
+              Assert(dynamic_cast<CurveSurface *>(surface.get()) != nullptr,
+                     ExcMessage("a deformable surface is a CurveSurface"));
+              curves.emplace_back(
+                static_cast<CurveSurface *>(surface.release()));
+            }
+          return std::make_unique<CompositeSurface>(std::move(curves));
+        }
     throw InputError(context.description.entry + (kind == Kind::deformable ?
                                                     "/Surface" :
                                                     "/Obstacle/Type"),

@@ -42,7 +42,7 @@ namespace glissade
     };
 
     /** Throws an InputError naming a side's entry if its boundary is not
-     *  one chain of faces (MasterChain::build). */
+     *  made of chains of faces (MasterChain::build_all). */
     BroadPhase(const std::vector<Side> &sides, const double alert_distance);
 
     /**
@@ -72,9 +72,10 @@ namespace glissade
     dealii::BoundingBox<2>
     reach_box(const unsigned int side) const;
 
-    std::vector<const Body *>           bodies;
-    std::vector<MasterChain>            chains;
-    std::vector<dealii::BoundingBox<2>> boxes;
-    double                              alert_distance;
+    std::vector<const Body *> bodies;
+    /** Each side's curves (one for a connected boundary). */
+    std::vector<std::vector<MasterChain>> chains;
+    std::vector<dealii::BoundingBox<2>>   boxes;
+    double                                alert_distance;
   };
 } // namespace glissade

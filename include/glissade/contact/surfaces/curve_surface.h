@@ -27,9 +27,11 @@ namespace glissade
   class CurveSurface : public MasterSurface
   {
   public:
+    /** Curve `curve` of the boundary (MasterChain::build_all). */
     CurveSurface(const Body        &master,
                  const std::string &boundary,
-                 const std::string &entry);
+                 const std::string &entry,
+                 unsigned int       curve = 0);
 
     void
     update(double step_start_time, double time) override;

@@ -21,6 +21,9 @@ namespace glissade
     const ContactDescription &description;
     /** nullptr for a rigid obstacle. */
     const Body *master;
+    /** Which curve of the master boundary (MasterChain::build_all): a
+     *  boundary of several curves gets a surface per curve. */
+    unsigned int curve = 0;
   };
 
   /**
