@@ -169,7 +169,7 @@ GLISSADE_TEST(automatic_contact_input_errors)
          {"left: outer, middle: outer", "", "there is no body 'middle'"},
          {"left: outer", "", "lists one body ('left')"},
          {"left, right: outer", "", "'left' is not 'body: boundary'"},
-         {"left: outer inner, right: outer", "", "give one boundary name"},
+         {"left: outer inner, right: outer", "", "several joined by '+'"},
          {"left: outer, right: outer\n set Contact pairs = left on right",
           hand_pair("left", "right"),
           "makes the pair 'left on right', which Scene/Contact pairs names"},

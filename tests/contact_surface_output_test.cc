@@ -15,6 +15,7 @@
 #include <map>
 #include <set>
 
+#include "body_resultant.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -439,4 +440,95 @@ GLISSADE_TEST(walkthrough_pad_on_roller)
                  -top[1],
                  1e-8,
                  "contact force y against the top's reaction");
+}
+
+// Output/Contact tables = per body: three rings in a row (the middle one
+// held at its inner edge, the outer two pushed onto it by 0.6 t, closing
+// at t = 5/6), automatic contact in one pass with the middle ring listed
+// first: it is the slave of two pairs, the outer rings masters only. Its
+// table lists its 32 slave nodes once; the nodes of its left side are
+// carried by its pair on the left ring, those of its right side by its
+// pair on the right one; by the scene's mirror symmetry its forces sum to
+// zero; and what its left-side nodes carry is the force on the left ring,
+// with the opposite sign (action = reaction). The outer rings, slaves of
+// no pair, have no table, and no table per pair is written.
+GLISSADE_TEST(contact_tables_per_body)
+{
+  std::string prm = "subsection Scene\n set Bodies = left, middle, right\n"
+                    " set Contact bodies = middle: outer, left: outer, right: "
+                    "outer\nend\n"
+                    "subsection Automatic contact\n set Passes = one\n"
+                    " set Surface = bspline\n set Alert distance = 0.05\nend\n";
+  for (const auto &[name, x, support] :
+       {std::tuple<std::string, std::string, std::string>{
+          "left", "-2.5", "Prescribed displacement = inner: xy: 0.6*t, 0"},
+        {"middle", "0", "Fixed = inner: xy"},
+        {"right", "2.5", "Prescribed displacement = inner: xy: -0.6*t, 0"}})
+    prm += "subsection Body " + name +
+           "\n subsection Mesh\n  set Type = ring\n  set Center = " + x +
+           ", 0\n  set Inner radius = 0.5\n  set Outer radius = 1\n"
+           "  set Subdivisions = 32, 3\n end\n"
+           " subsection Material\n  set Young modulus = 1000\n"
+           "  set Poisson ratio = 0.3\n end\n"
+           " subsection Boundary conditions\n  set " +
+           support + "\n end\nend\n";
+  prm += "subsection Load program\n set Stage increments = 4\nend\n"
+         "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
+         "subsection Newton\n set Residual tolerance = 1e-10\n"
+         " set Displacement tolerance = 1e-10\nend\n"
+         "subsection Output\n set Progress = false\n"
+         " set Contact tables = per body\n"
+         " set Directory = tables_per_body\nend\n";
+  // (files of an earlier run of this test must not pass for this one's)
+  std::filesystem::remove_all("tables_per_body");
+  Simulation simulation(SceneReader::read_string(prm, "tables per body"));
+  simulation.run();
+
+  const std::string file  = "tables_per_body/contact-of-middle-00004.csv";
+  auto              table = read_csv(file);
+  std::ifstream     in(file);
+  std::string       line;
+  std::getline(in, line);
+  Tensor<1, 2> total, by_left;
+  unsigned int k = 0, carried = 0;
+  while (std::getline(in, line))
+    {
+      const Tensor<1, 2> f({table["fx"][k], table["fy"][k]});
+      total += f;
+      const std::string pair = line.substr(line.rfind(',') + 1);
+      if (!pair.empty() && table["active"][k] == 1.)
+        {
+          ++carried;
+          check(pair ==
+                  (table["X"][k] < 0. ? "middle on left" : "middle on right"),
+                "the node at X = " + std::to_string(table["X"][k]) +
+                  " is carried by '" + pair + "'");
+          if (pair == "middle on left")
+            by_left += f;
+        }
+      ++k;
+    }
+  const Tensor<1, 2> on_left =
+    resultant(simulation.body("left"),
+              simulation.body("left").get_contact_forces());
+  std::cout << "  middle: " << table["X"].size() << " slave nodes, " << carried
+            << " active, forces summing to " << total << "; its left side's "
+            << by_left << ", the force on the left "
+            << "ring " << on_left << std::endl;
+  check(table["X"].size() == 32, "not each of the 32 slave nodes once");
+  check(carried >= 4, "the middle ring's nodes carry nothing");
+  const double scale = by_left.norm();
+  check(scale > 1., "the rings do not press on each other");
+  check(total.norm() <= 1e-8 * scale,
+        "the middle ring's slave forces do not sum to zero");
+  check((by_left + on_left).norm() <= 1e-10 * scale,
+        "the left side's forces are not the left ring's, reversed");
+  for (const auto &entry :
+       std::filesystem::directory_iterator("tables_per_body"))
+    {
+      const std::string name = entry.path().filename().string();
+      check(name.find(" on ") == std::string::npos &&
+              name.find("contact-of-left") == std::string::npos,
+            "a table per pair, or of a body that is no slave: " + name);
+    }
 }

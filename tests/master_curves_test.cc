@@ -182,9 +182,10 @@ GLISSADE_TEST(elastic_foundation_translates_a_free_body)
 // pressed on the outer wall find each its curve, with the forces and
 // displacements of pairs whose masters name the curves one by one (the
 // same mesh, the same nodes, the same segments: equal to round-off), on a
-// faceted and a B-spline master and by automatic contact. The forces on
-// the three bodies balance (action = reaction), and the slave nodes end
-// on their masters.
+// faceted and a B-spline master, with the two curves' names listed together
+// ('inner, outer'), and by automatic contact ('ring: inner + outer'). The
+// forces on the three bodies balance (action = reaction), and the slave nodes
+// end on their masters.
 GLISSADE_TEST(contact_on_a_master_of_two_curves)
 {
   const std::string folder =
@@ -210,6 +211,15 @@ GLISSADE_TEST(contact_on_a_master_of_two_curves)
                    pair("block on ring", "block", "top", "surface", surface)),
                surface + ", the whole boundary");
 
+      // The two curves' names listed together: the same master.
+      const auto listed = solved(
+        ring_between_disk_and_block(
+          two_names,
+          " set Contact pairs = disk on ring, block on ring\n",
+          pair("disk on ring", "disk", "outer", "inner, outer", surface) +
+            pair("block on ring", "block", "top", "outer, inner", surface)),
+        surface + ", both names listed");
+
       double       force_scale = 0., largest = 0.;
       Tensor<1, 2> total;
       for (const std::string body : {"ring", "disk", "block"})
@@ -221,7 +231,10 @@ GLISSADE_TEST(contact_on_a_master_of_two_curves)
           largest           = std::max(largest, d.linfty_norm());
           Vector<double> du = whole->body(body).displacement();
           du -= by_curve->body(body).displacement();
-          largest = std::max(largest, du.linfty_norm() * 1000.);
+          largest           = std::max(largest, du.linfty_norm() * 1000.);
+          Vector<double> dl = listed->body(body).get_contact_forces();
+          dl -= by_curve->body(body).get_contact_forces();
+          largest = std::max(largest, dl.linfty_norm());
         }
       const Tensor<1, 2> on_disk =
         resultant(whole->body("disk"),
@@ -249,26 +262,37 @@ GLISSADE_TEST(contact_on_a_master_of_two_curves)
       check(deepest >= -1e-8, surface + ": a slave node behind its master");
 
       // The same couples found by automatic contact (one pass, the ring
-      // listed last: the master of both).
-      const auto automatic = solved(
-        ring_between_disk_and_block(
-          one_name,
-          " set Contact bodies = disk: outer, block: top, ring: surface\n",
-          "subsection Automatic contact\n set Passes = one\n set Surface = " +
-            surface + "\n set Alert distance = 0.1\nend\n"),
-        surface + ", automatic contact");
-      double apart = 0.;
-      for (const std::string body : {"ring", "disk", "block"})
+      // listed last: the master of both), its boundary as one name and as
+      // two joined by '+'.
+      for (const auto &[mesh, ring_side] :
+           {std::pair<std::string, std::string>{one_name, "surface"},
+            {two_names, "inner + outer"}})
         {
-          Vector<double> d = automatic->body(body).get_contact_forces();
-          d -= whole->body(body).get_contact_forces();
-          apart = std::max(apart, d.linfty_norm());
+          const auto automatic =
+            solved(ring_between_disk_and_block(
+                     mesh,
+                     " set Contact bodies = disk: outer, block: top, ring: " +
+                       ring_side + "\n",
+                     "subsection Automatic contact\n set Passes = one\n"
+                     " set Surface = " +
+                       surface + "\n set Alert distance = 0.1\nend\n"),
+                   surface + ", automatic contact, ring: " + ring_side);
+          double apart = 0.;
+          for (const std::string body : {"ring", "disk", "block"})
+            {
+              Vector<double> d = automatic->body(body).get_contact_forces();
+              d -= whole->body(body).get_contact_forces();
+              apart = std::max(apart, d.linfty_norm());
+            }
+          std::cout << "  " << surface
+                    << ", automatic contact, ring: " << ring_side << ": "
+                    << automatic->contact().contact_pairs().size()
+                    << " pairs, largest force difference " << apart
+                    << std::endl;
+          check(apart <= 1e-10 * force_scale,
+                surface + ": automatic contact (ring: " + ring_side +
+                  ") differs from the pairs written");
         }
-      std::cout << "  " << surface << ", automatic contact: "
-                << automatic->contact().contact_pairs().size()
-                << " pairs, largest force difference " << apart << std::endl;
-      check(apart <= 1e-10 * force_scale,
-            surface + ": automatic contact differs from the pairs written");
     }
 
   // Mortar integrates over one curve: refused, with the reason.

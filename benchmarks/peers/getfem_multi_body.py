@@ -65,13 +65,15 @@ def main():
     parser.add_argument("--mesh", required=True,
                         help="GetFEM's tests/meshes/multi_body.mesh")
     parser.add_argument("--degree", type=int, default=1)
+    parser.add_argument("--refine", type=int, default=0,
+                        help="each quadrilateral cut into 4^REFINE")
     parser.add_argument("--steps", type=int, default=250)
     parser.add_argument("--save", type=int, default=50)
     parser.add_argument("--out", required=True)
     args = parser.parse_args()
 
     gf.util_trace_level(0)
-    bodies = multi_body_mesh.multi_body_quads(args.mesh)
+    bodies = multi_body_mesh.multi_body_quads(args.mesh, args.refine)
     mesh = build_mesh(bodies)
     nodes = np.vstack([b.points for b in bodies]).T
 

@@ -131,11 +131,42 @@ def split_into_quads(xy, triangles):
     return QuadBody(np.array(points), np.array(quads), np.array(boundary))
 
 
-def multi_body_quads(path):
-    """The ten bodies of GetFEM's multi_body.mesh as QuadBody objects."""
+def refined(body):
+    """Each quadrilateral into four (edge midpoints and centre), each
+    boundary segment into two: the same polygonal bodies."""
+    points = [p for p in body.points]
+    midpoint = {}
+
+    def middle(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in midpoint:
+            midpoint[key] = len(points)
+            points.append(0.5 * (points[a] + points[b]))
+        return midpoint[key]
+
+    quads = []
+    for a, b, c, d in body.quads:
+        centre = len(points)
+        points.append(0.25 * (points[a] + points[b] + points[c] + points[d]))
+        ab, bc, cd, da = middle(a, b), middle(b, c), middle(c, d), middle(d, a)
+        quads += [[a, ab, centre, da], [ab, b, bc, centre],
+                  [centre, bc, c, cd], [da, centre, cd, d]]
+    boundary = []
+    for a, b in body.boundary:
+        m = middle(a, b)
+        boundary += [[a, m], [m, b]]
+    return QuadBody(np.array(points), np.array(quads), np.array(boundary))
+
+
+def multi_body_quads(path, refinements=0):
+    """The ten bodies of GetFEM's multi_body.mesh as QuadBody objects, each
+    quadrilateral cut into 4^refinements."""
     xy, triangles = read_getfem_mesh(path)
-    return [split_into_quads(xy, triangles[group])
-            for group in connected_bodies(len(xy), triangles)]
+    bodies = [split_into_quads(xy, triangles[group])
+              for group in connected_bodies(len(xy), triangles)]
+    for _ in range(refinements):
+        bodies = [refined(b) for b in bodies]
+    return bodies
 
 
 def boundary_loops(body):

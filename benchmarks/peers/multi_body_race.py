@@ -42,6 +42,7 @@ import subprocess
 import sys
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -54,7 +55,8 @@ E, NU = 2.5, 0.25          # lambda = mu = 1
 FOUNDATION = 0.1
 
 
-def write_glissade_scene(bodies, folder, steps, save, self_contact):
+def write_glissade_scene(bodies, folder, steps, save, self_contact,
+                         passes="two"):
     names = [f"body{k}" for k in range(len(bodies))]
     for name, body in zip(names, bodies):
         multi_body_mesh.write_msh(body, os.path.join(folder, name + ".msh"))
@@ -65,7 +67,7 @@ def write_glissade_scene(bodies, folder, steps, save, self_contact):
              "  set Contact pairs  = bowl",
              "end",
              "subsection Automatic contact",
-             "  set Passes         = two",
+             f"  set Passes         = {passes}",
              f"  set Self-contact   = {'true' if self_contact else 'false'}",
              "  set Surface        = faceted",
              "  set Alert distance = 0.05",
@@ -126,11 +128,11 @@ def run_glissade(binary, prm, out):
     return seconds, dofs
 
 
-def run_getfem(mesh, steps, save, out):
+def run_getfem(mesh, steps, save, refine, out):
     subprocess.run(["/usr/bin/python3",
                     os.path.join(HERE, "getfem_multi_body.py"),
                     "--mesh", mesh, "--steps", str(steps), "--save",
-                    str(save), "--out", out],
+                    str(save), "--refine", str(refine), "--out", out],
                    check=True, stdout=subprocess.DEVNULL)
     data = np.load(out)
     return float(data["seconds"]), int(data["dofs"])
@@ -138,8 +140,8 @@ def run_getfem(mesh, steps, save, out):
 
 def glissade_displacements(out, bodies, step):
     """Every node's displacement in body order, from the VTU files of
-    increment `step` (deal.II writes each cell's vertices: matched to the
-    nodes by their reference coordinates)."""
+    increment `step` (deal.II writes each cell's vertices at their
+    reference coordinates: matched to the nodes by position)."""
     result = []
     for k, body in enumerate(bodies):
         candidates = [f for f in os.listdir(out)
@@ -151,11 +153,12 @@ def glissade_displacements(out, bodies, step):
         arrays = vtu_arrays(os.path.join(out, candidates[0]))
         points = np.array(arrays["Points"]).reshape(-1, 3)[:, :2]
         u = np.array(arrays["displacement"]).reshape(len(points), -1)[:, :2]
-        at = {}
-        for p, v in zip(points, u):
-            at[(round(p[0], 9), round(p[1], 9))] = v
-        result.append(np.array([at[(round(x, 9), round(y, 9))]
-                                for x, y in body.points]))
+        # (the VTU's points are single precision: the nearest one)
+        distance, nearest = cKDTree(points).query(body.points)
+        if distance.max() > 1e-6:
+            sys.exit(f"{candidates[0]}: a node of body{k} is not among the "
+                     f"VTU's points ({distance.max():.2e} away)")
+        result.append(u[nearest])
     return np.vstack(result)
 
 
@@ -169,13 +172,21 @@ def main():
     parser.add_argument("--repeats", type=int, default=1)
     parser.add_argument("--codes", default="glissade,getfem")
     parser.add_argument("--self-contact", action="store_true")
+    parser.add_argument("--refine", type=int, default=0,
+                        help="each quadrilateral cut into 4^REFINE in both "
+                        "codes")
+    parser.add_argument("--passes", default="two", choices=["one", "two"],
+                        help="glissade's Automatic contact/Passes")
     parser.add_argument("--work", default="/tmp/glissade-multi-body")
+    parser.add_argument("--plot", default="",
+                        help="a PNG of both codes' bodies at the last "
+                        "saved step that both reached (GetFEM's converged)")
     args = parser.parse_args()
 
     os.makedirs(args.work, exist_ok=True)
-    bodies = multi_body_mesh.multi_body_quads(args.mesh)
+    bodies = multi_body_mesh.multi_body_quads(args.mesh, args.refine)
     prm = write_glissade_scene(bodies, args.work, args.steps, args.save,
-                               args.self_contact)
+                               args.self_contact, args.passes)
     codes = args.codes.split(",")
     times = {c: [] for c in codes}
     dofs = {}
@@ -186,12 +197,15 @@ def main():
                                     os.path.join(args.work, "glissade"))
             else:
                 t, n = run_getfem(args.mesh, args.steps, args.save,
+                                  args.refine,
                                   os.path.join(args.work, "getfem.npz"))
             times[code].append(t)
             dofs[code] = n
             print(f"round {r + 1}: {code} {t:.2f} s ({n} dofs)", flush=True)
     if len(codes) == 2:
         compare(args, bodies)
+        if args.plot:
+            print(f"picture: {args.plot}")
         medians = {c: statistics.median(times[c]) for c in codes}
         print(f"time: glissade {medians['glissade']:.2f} s, GetFEM "
               f"{medians['getfem']:.2f} s, ratio glissade / GetFEM "
@@ -210,6 +224,7 @@ def compare(args, bodies):
     sizes = [np.ptp(b.points, axis=0).max() for b in bodies]
     counts = np.cumsum([0] + [len(b.points) for b in bodies])
     areas = np.array([b.area() for b in bodies])
+    drawn = None
     print("step   force    bowl's force up: GetFEM  glissade  (its "
           "balance)  | mean displacement: largest difference / body size "
           "(body) | nodes: largest difference / largest displacement")
@@ -228,14 +243,66 @@ def compare(args, bodies):
         relative = np.linalg.norm(mean_g - mean_l, axis=1) / sizes
         worst = int(np.argmax(relative))
         nodal = np.abs(ug - ul).max() / np.abs(ug).max()
-        # glissade's balance from its nodes' means (an estimate: the mean
-        # of the nodes is not the mean over the area)
-        balance = FOUNDATION * (mean_l[:, 1] * areas).sum() + force * \
-            areas.sum()
+        # glissade's balance, as GetFEM's: the integral of 0.1 u_y plus the
+        # body force's
+        balance = FOUNDATION * integral(bodies, ul)[1] + force * areas.sum()
         flag = "  (GetFEM not converged)" if step in unconverged else ""
+        if not flag:
+            drawn = (step, ug, ul)
         print(f"{step:4d}  {force:.5f}  {getfem['bowl'][step - 1][1]:.6f}  "
               f"{float(history[step]['bowl_Fy']):.6f}  ({balance:.6f})  | "
               f"{relative.max():.2e} (body{worst})  |  {nodal:.2e}{flag}")
+    if args.plot and drawn:
+        plot_bodies(args.plot, bodies, *drawn)
+
+
+def integral(bodies, u):
+    """The integral of the bilinear field u (nodal values, body order) over
+    the bodies' quadrilaterals, 2 x 2 Gauss points (exact)."""
+    g = 0.5 / np.sqrt(3.)
+    points = [(0.5 + a, 0.5 + b) for a in (-g, g) for b in (-g, g)]
+    total, offset = np.zeros(2), 0
+    for body in bodies:
+        x = body.points[body.quads]                  # quads x 4 x 2
+        v = u[offset:offset + len(body.points)][body.quads]
+        for xi, eta in points:
+            N = np.array([(1 - xi) * (1 - eta), xi * (1 - eta), xi * eta,
+                          (1 - xi) * eta])
+            dxi = np.array([-(1 - eta), 1 - eta, eta, -eta])
+            deta = np.array([-(1 - xi), -xi, xi, 1 - xi])
+            J = np.stack([np.einsum("k,qkd->qd", dxi, x),
+                          np.einsum("k,qkd->qd", deta, x)], axis=1)
+            det = J[:, 0, 0] * J[:, 1, 1] - J[:, 0, 1] * J[:, 1, 0]
+            total += 0.25 * np.einsum("q,k,qkd->d", det, N, v)
+        offset += len(body.points)
+    return total
+
+
+def plot_bodies(path, bodies, step, ug, ul):
+    """Every body's boundary, deformed, in both codes, and the bowl."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 7))
+    phi = np.linspace(np.pi, 2 * np.pi, 200)
+    ax.plot(2 * np.cos(phi), 1 + 2 * np.sin(phi), "k-", lw=1.5)
+    offset = 0
+    for k, body in enumerate(bodies):
+        for u, style, label in ((ug, "r-", "GetFEM"),
+                                (ul, "b--", "glissade")):
+            x = body.points + u[offset:offset + len(body.points)]
+            for j, (a, b) in enumerate(body.boundary):
+                ax.plot(x[[a, b], 0], x[[a, b], 1], style, lw=0.8,
+                        label=label if k == 0 and j == 0 else None)
+        offset += len(body.points)
+    ax.set_aspect("equal")
+    ax.set_xlim(-1.3, 1.3)
+    ax.set_ylim(-1.1, 0.7)
+    ax.legend(loc="upper right")
+    ax.set_title(f"GetFEM's multi-body demo on the same quadrilaterals, "
+                 f"step {step}")
+    fig.savefig(path, dpi=110, bbox_inches="tight")
+    plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
 #include <glissade/io/atomic_file.h>
+#include <glissade/io/contact_line_vtu.h>
 #include <glissade/io/contact_surface_output.h>
 #include <glissade/io/pvd_index.h>
 
@@ -10,25 +11,21 @@ namespace glissade
 {
   using namespace dealii;
 
-  namespace
+  std::pair<const char *, int>
+  ContactSurfaceOutput::status_of(const ContactNode &node)
   {
-    /** What each node's status is called in the table and coded in the VTU. */
-    std::pair<const char *, int>
-    status_of(const ContactNode &node)
-    {
-      if (!node.active)
-        return {"inactive", 0};
-      switch (node.status)
-        {
-          case BiPotentialSolver::NodeStatus::open:
-            return {"open", 1};
-          case BiPotentialSolver::NodeStatus::stick:
-            return {"stick", 2};
-          default:
-            return {"slip", 3};
-        }
-    }
-  } // namespace
+    if (!node.active)
+      return {"inactive", 0};
+    switch (node.status)
+      {
+        case BiPotentialSolver::NodeStatus::open:
+          return {"open", 1};
+        case BiPotentialSolver::NodeStatus::stick:
+          return {"stick", 2};
+        default:
+          return {"slip", 3};
+      }
+  }
 
 
 
@@ -99,67 +96,26 @@ namespace glissade
       }
     table.commit();
 
-    // The line mesh (ASCII VTU: a boundary is small).
-    AtomicFile vtu(directory + "/" + stem.str() + ".vtu");
-    auto      &out = vtu.stream();
-    out << std::setprecision(16)
-        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\""
-        << faces.size() << "\">\n<Points>\n<DataArray type=\"Float64\" "
-        << "NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < n; ++k)
-      out << x[k][0] << ' ' << x[k][1] << " 0\n";
-    out
-      << "</DataArray>\n</Points>\n<Cells>\n"
-      << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (const auto &[a, b] : faces)
-      out << a << ' ' << b << '\n';
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-    for (unsigned int i = 1; i <= faces.size(); ++i)
-      out << 2 * i << '\n';
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-    for (unsigned int i = 0; i < faces.size(); ++i)
-      out << "3\n";
-    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"pressure\" "
-           "Vectors=\"force\">\n";
-    const auto scalar = [&](const char *name, const auto &value) {
-      out << "<DataArray type=\"Float64\" Name=\"" << name
-          << "\" format=\"ascii\">\n";
-      for (unsigned int k = 0; k < n; ++k)
-        out << value(k) << '\n';
-      out << "</DataArray>\n";
-    };
-    const auto r = [&](const unsigned int k, const unsigned int c) {
-      return pair.reported_reaction(nodes[k])[c];
-    };
-    scalar("pressure", [&](unsigned int k) { return per_area(k, r(k, 1)); });
-    scalar("shear", [&](unsigned int k) { return per_area(k, r(k, 0)); });
-    scalar("r_n", [&](unsigned int k) { return r(k, 1); });
-    scalar("r_t", [&](unsigned int k) { return r(k, 0); });
-    // No gap without a counterpart: 0 there, and status says why.
-    scalar("gap", [&](unsigned int k) {
-      return nodes[k].projected ? nodes[k].gap : 0.;
-    });
-    scalar("slip", [&](unsigned int k) {
-      return nodes[k].active ? nodes[k].linearization.slip : 0.;
-    });
-    scalar("status",
-           [&](unsigned int k) { return status_of(nodes[k]).second; });
-    out
-      << "<DataArray type=\"Float64\" Name=\"force\" NumberOfComponents=\"3\" "
-         "format=\"ascii\">\n";
+    // The line mesh.
+    ContactLineFields fields;
+    fields.x     = x;
+    fields.faces = faces;
     for (unsigned int k = 0; k < n; ++k)
       {
-        const Tensor<1, 2> f =
-          nodes[k].active ? pair.reported_force(nodes[k]) : Tensor<1, 2>();
-        out << f[0] << ' ' << f[1] << " 0\n";
+        const ContactNode          &node = nodes[k];
+        const std::array<double, 2> r    = pair.reported_reaction(node);
+        fields.pressure.push_back(per_area(k, r[1]));
+        fields.shear.push_back(per_area(k, r[0]));
+        fields.r_n.push_back(r[1]);
+        fields.r_t.push_back(r[0]);
+        // No gap without a counterpart: 0 there, and status says why.
+        fields.gap.push_back(node.projected ? node.gap : 0.);
+        fields.slip.push_back(node.active ? node.linearization.slip : 0.);
+        fields.status.push_back(status_of(node).second);
+        fields.force.push_back(node.active ? pair.reported_force(node) :
+                                             Tensor<1, 2>());
       }
-    out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
-           "</VTKFile>\n";
-    vtu.commit();
+    write_contact_line_vtu(directory + "/" + stem.str() + ".vtu", fields);
 
     // The PVD of every VTU written so far.
     records.emplace_back(t, stem.str() + ".vtu");

@@ -26,6 +26,10 @@ namespace glissade
     , contact(contact)
     , timer(timer)
   {
+    if (settings.contact_tables == OutputSettings::ContactTables::per_body)
+      for (const auto &body : bodies)
+        body_contact_outputs.emplace_back(*body);
+    body_contact_records.resize(body_contact_outputs.size());
     follow_new_pairs();
   }
 
@@ -171,6 +175,16 @@ namespace glissade
                                     const double       t)
   {
     follow_new_pairs();
+    if (settings.contact_tables == OutputSettings::ContactTables::per_body)
+      {
+        for (unsigned int b = 0; b < body_contact_outputs.size(); ++b)
+          body_contact_outputs[b].write(settings.directory,
+                                        increment,
+                                        t,
+                                        contact.contact_pairs(),
+                                        body_contact_records[b]);
+        return;
+      }
     for (unsigned int p = 0; p < contact_outputs.size(); ++p)
       contact_outputs[p].write(settings.directory,
                                increment,

@@ -53,12 +53,27 @@ namespace glissade
             throw InputError(where,
                              "there is no body '" + side.body +
                                "' (Scene/Bodies)");
-          if (side.boundary.empty() ||
-              side.boundary.find_first_of(", \t") != std::string::npos)
+          // Several boundaries of one body: 'ring: inner + outer', which
+          // its pairs take as 'inner, outer'.
+          std::string joined;
+          for (const std::string &name :
+               Utilities::split_string_list(side.boundary, '+'))
+            {
+              if (name.empty() ||
+                  name.find_first_of(" \t") != std::string::npos)
+                throw InputError(where,
+                                 "body '" + side.body +
+                                   "': give its boundary after ':', or "
+                                   "several joined by '+' ('ring: inner + "
+                                   "outer'), not '" +
+                                   side.boundary + "'");
+              joined += (joined.empty() ? "" : ", ") + name;
+            }
+          if (joined.empty())
             throw InputError(where,
                              "body '" + side.body +
-                               "': give one boundary name after ':' (a "
-                               "master surface is one chain of faces)");
+                               "': give its boundary after ':'");
+          side.boundary = joined;
           for (const auto &earlier : sides)
             if (earlier.body == side.body)
               throw InputError(where,
@@ -81,7 +96,8 @@ namespace glissade
       Patterns::Anything(),
       "Contact found among these bodies without a pair written for each "
       "couple: 'body: boundary, body: boundary, ...', the boundary of each "
-      "that may touch the others. Every couple gets the pairs a user would "
+      "that may touch the others (several of one body joined by '+': "
+      "'ring: inner + outer'). Every couple gets the pairs a user would "
       "write, named '<slave> on <master>' (their history items and files "
       "take that name), with the settings of the subsection Automatic "
       "contact.");

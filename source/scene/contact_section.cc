@@ -106,7 +106,11 @@ namespace glissade
     prm.declare_entry("Master boundary",
                       "",
                       Patterns::Anything(),
-                      "The declared contact area on the master body.");
+                      "The declared contact area on the master body: a "
+                      "boundary name, or several separated by commas "
+                      "('inner, outer'). Each connected piece of it is a "
+                      "curve of the master surface (a body with a hole: its "
+                      "outer boundary and the hole's wall).");
     declare_settings(prm);
     prm.declare_entry(
       "Frame update",

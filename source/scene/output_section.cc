@@ -60,6 +60,15 @@ namespace glissade
                       "node's gap, reaction, status) every this many "
                       "increments; 0: with the VTU files.");
     prm.declare_entry(
+      "Contact tables",
+      "per pair",
+      Patterns::Selection("per pair|per body"),
+      "per pair: contact-<pair>-<increment>.csv and .vtu, each pair's slave "
+      "nodes. per body: contact-of-<body>-<increment>.csv and .vtu, each "
+      "body's slave nodes once over all the pairs it is the slave of (forces "
+      "summed, the smallest gap, the pair that carries most): where "
+      "automatic contact makes many pairs.");
+    prm.declare_entry(
       "History",
       "",
       Patterns::Anything(),
@@ -123,6 +132,9 @@ namespace glissade
     }
     initial_state          = prm.get_bool("Initial state");
     contact_table_interval = prm.get_integer("Contact table interval");
+    contact_tables         = prm.get("Contact tables") == "per body" ?
+                               ContactTables::per_body :
+                               ContactTables::per_pair;
     for (const auto &item : text::split_top_level(prm.get("History"), ';'))
       if (!item.empty())
         history.push_back(item);

@@ -357,6 +357,14 @@ namespace glissade
     bool         vtu_displacement       = true;
     bool         vtu_stress             = true;
     unsigned int contact_table_interval = 0; // 0: with the VTU files
+    /** The contact tables and line meshes per pair, or per body (each
+     *  body's slave nodes over all its pairs). */
+    enum class ContactTables
+    {
+      per_pair,
+      per_body
+    };
+    ContactTables            contact_tables = ContactTables::per_pair;
     std::vector<std::string> history;
     bool                     progress = true;
     bool                     plots    = false; // scripts/plot_scene.py

@@ -38,6 +38,11 @@ namespace glissade
           const double                                 t,
           std::vector<std::pair<double, std::string>> &records) const;
 
+    /** What a node's status is called in the tables and coded in the VTU
+     *  (inactive 0, open 1, stick 2, slip 3). */
+    static std::pair<const char *, int>
+    status_of(const ContactNode &node);
+
   private:
     const ContactPair &pair;
     /** The slave faces as pairs of indices into pair.nodes(). */

@@ -3,6 +3,7 @@
 #include <glissade/body/body.h>
 #include <glissade/contact/step/contact_problem.h>
 #include <glissade/description/scene_description.h>
+#include <glissade/io/body_contact_output.h>
 #include <glissade/io/contact_surface_output.h>
 
 #include <memory>
@@ -76,6 +77,9 @@ namespace glissade
       archive &pvd_records;
       // (a checkpoint from before the contact surfaces had PVD files)
       pvd_records.resize(bodies.size() + contact_outputs.size());
+      // (per body: a setting that restarts keep, so the archive knows it)
+      if (settings.contact_tables == OutputSettings::ContactTables::per_body)
+        archive &body_contact_records;
       for (auto &coating : coatings)
         archive &coating.revolutions &coating.times &coating.profiles;
     }
@@ -103,6 +107,10 @@ namespace glissade
     ContactProblem                           &contact;
     dealii::TimerOutput                      &timer;
     std::vector<ContactSurfaceOutput>         contact_outputs;
+    /** Output/Contact tables = per body: each body's, over its pairs. */
+    std::vector<BodyContactOutput> body_contact_outputs;
+    std::vector<std::vector<std::pair<double, std::string>>>
+      body_contact_records;
     /** The rigid obstacles, by pair name, that the pictures draw. */
     std::vector<std::pair<std::string, const MasterSurface *>> obstacles;
 

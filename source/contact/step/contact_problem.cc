@@ -2,6 +2,7 @@
 
 #include <glissade/base/debug_log.h>
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/contact/step/contact_problem.h>
 #include <glissade/contact/step/held_by_contact.h>
@@ -57,7 +58,8 @@ namespace glissade
             const std::string entry = automatic.file +
                                       ": Scene/Contact bodies (body '" +
                                       side.body + "')";
-            body->boundary_id(side.boundary, entry);
+            for (const auto &name : text::split_top_level(side.boundary, ','))
+              body->boundary_id(text::trim(name), entry);
             sides.push_back({body, side.boundary, entry});
             // What the side touches as a master holds what it touches as
             // a slave: its surface's dofs, the vertices' and, on a Hermite

@@ -1,9 +1,11 @@
 #include <glissade/base/input_error.h>
+#include <glissade/base/text.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/surfaces/master_chain.h>
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace glissade
 {
@@ -14,7 +16,10 @@ namespace glissade
                          const std::string &boundary,
                          const std::string &entry)
   {
-    const types::boundary_id id = body.boundary_id(boundary, entry);
+    // One boundary name or several ("inner, outer"): their faces together.
+    std::set<types::boundary_id> ids;
+    for (const auto &name : text::split_top_level(boundary, ','))
+      ids.insert(body.boundary_id(text::trim(name), entry));
 
     struct BoundaryFace
     {
@@ -29,7 +34,8 @@ namespace glissade
     std::map<unsigned int, std::array<types::global_dof_index, 2>> dofs_of;
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+        if (cell->face(f)->at_boundary() &&
+            ids.count(cell->face(f)->boundary_id()) > 0)
           {
             faces.push_back({cell->face(f)->vertex_index(0),
                              cell->face(f)->vertex_index(1),
