@@ -94,6 +94,18 @@ class QuadBody:
         return a
 
 
+def midpoints_in(points, midpoint):
+    """A function (a, b) -> the number of the point midway between points a
+    and b, appended to `points` the first time (`midpoint` remembers)."""
+    def middle(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in midpoint:
+            midpoint[key] = len(points)
+            points.append(0.5 * (points[a] + points[b]))
+        return midpoint[key]
+    return middle
+
+
 def split_into_quads(xy, triangles):
     """Each triangle into three quadrilaterals through its edge midpoints
     and centroid; returns the body's points, quads and boundary segments."""
@@ -101,13 +113,7 @@ def split_into_quads(xy, triangles):
     local = {g: k for k, g in enumerate(used)}
     points = [xy[g] for g in used]
     midpoint = {}
-
-    def middle(a, b):
-        key = (min(a, b), max(a, b))
-        if key not in midpoint:
-            midpoint[key] = len(points)
-            points.append(0.5 * (points[a] + points[b]))
-        return midpoint[key]
+    middle = midpoints_in(points, midpoint)
 
     quads, edge_count = [], {}
     for t in triangles:
@@ -135,14 +141,7 @@ def refined(body):
     """Each quadrilateral into four (edge midpoints and centre), each
     boundary segment into two: the same polygonal bodies."""
     points = [p for p in body.points]
-    midpoint = {}
-
-    def middle(a, b):
-        key = (min(a, b), max(a, b))
-        if key not in midpoint:
-            midpoint[key] = len(points)
-            points.append(0.5 * (points[a] + points[b]))
-        return midpoint[key]
+    middle = midpoints_in(points, {})
 
     quads = []
     for a, b, c, d in body.quads:

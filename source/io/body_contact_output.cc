@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace glissade
@@ -42,10 +43,10 @@ namespace glissade
       std::string  carried_by;
       double       largest_r_n = 0.;
     };
-    std::vector<Node>                           nodes;
-    std::map<unsigned int, unsigned int>        of_vertex;
-    std::vector<std::array<unsigned int, 2>>    faces;
-    std::map<std::array<unsigned int, 2>, bool> face_seen;
+    std::vector<Node>                        nodes;
+    std::map<unsigned int, unsigned int>     of_vertex;
+    std::vector<std::array<unsigned int, 2>> faces;
+    std::set<std::array<unsigned int, 2>>    face_seen;
     for (const auto &pair : pairs)
       {
         if (&pair->slave() != &body)
@@ -95,7 +96,7 @@ namespace glissade
             std::array<unsigned int, 2> key  = face;
             if (key[0] > key[1])
               std::swap(key[0], key[1]);
-            if (face_seen.emplace(key, true).second)
+            if (face_seen.insert(key).second)
               faces.push_back(face);
           }
       }
