@@ -216,10 +216,17 @@ namespace glissade
     , body_hypothesis(description.material.hypothesis,
                       description.material.thickness)
   {
-    const std::string where  = source + ": Body " + description.name;
-    auto              serial = std::make_unique<Triangulation<2>>();
-    const MeshLabels  labels =
+    const std::string where = source + ": Body " + description.name;
+    // (the space first: a NURBS space's exact geometry is checked before a
+    // mesh is read)
+    element_space = ElementSpaceRegistry::create(description.element_space,
+                                                 description.element_degree);
+    if (element_space->capabilities().needs_exact_patch)
+      element_space->use_patch(exact_patch(where));
+    auto             serial = std::make_unique<Triangulation<2>>();
+    const MeshLabels labels =
       MeshFactory::create(description.mesh, *serial, where);
+    element_space->place_vertices(*serial);
     named_boundaries   = labels.boundaries;
     reference_size     = mesh_diameter(*serial);
     n_mesh_cells       = serial->n_active_cells();
@@ -231,8 +238,7 @@ namespace glissade
         "",
       where);
 
-    element_space = ElementSpaceRegistry::create(description.element_space);
-    evaluators    = std::make_unique<EvaluatorPool>(*element_space);
+    evaluators = std::make_unique<EvaluatorPool>(*element_space);
     check_space_for_mesh(*serial, labels.second_order, where);
     const auto box = GridTools::compute_bounding_box(*serial);
     // (a body of revolution: its radial dofs on the axis are held, and its
@@ -267,6 +273,27 @@ namespace glissade
     AffineConstraints<double> constraints;
     boundary_conditions->make_constraints(
       dofs, *element_space, 0., solution, element_constraints, constraints);
+    // (an elastic foundation holds every rigid motion)
+    std::vector<RigidMotion> free_motions =
+      description.elastic_foundation > 0. ?
+        std::vector<RigidMotion>() :
+        motions_free_of_supports(*boundary_conditions,
+                                 dofs,
+                                 *element_space,
+                                 box,
+                                 reference_size,
+                                 of_revolution);
+    // (the springs that hold them act on vertices' dofs)
+    if (!free_motions.empty() &&
+        !element_space->capabilities().dofs_are_nodal_values)
+      throw InputError(where + "/Boundary conditions",
+                       "the supports of body '" + description.name +
+                         "' leave " + std::to_string(free_motions.size()) +
+                         " rigid motion(s) free, which the springs that "
+                         "hold a body in contact would take on its "
+                         "vertices; a " +
+                         element_space->name() +
+                         " body needs supports that hold it");
     linear_system = std::make_unique<BodyLinearSystem>(
       dofs,
       *element_space,
@@ -275,19 +302,41 @@ namespace glissade
       // unsymmetric)
       without_follower_pressure(*boundary_conditions) &&
         !description.turning_frame.active(),
-      // (an elastic foundation holds every rigid motion)
-      RigidMotionSprings(description.elastic_foundation > 0. ?
-                           std::vector<RigidMotion>() :
-                           motions_free_of_supports(*boundary_conditions,
-                                                    dofs,
-                                                    *element_space,
-                                                    box,
-                                                    reference_size,
-                                                    of_revolution),
-                         source,
-                         description.name,
-                         reference_size),
+      RigidMotionSprings(
+        std::move(free_motions), source, description.name, reference_size),
       own_cells());
+  }
+
+
+
+  NurbsPatch
+  Body::exact_patch(const std::string &where) const
+  {
+    const std::string space = "Element/Space = " + element_space->name();
+    const auto       &type  = MeshFactory::type(description.mesh.type);
+    if (!type.exact_patch)
+      throw InputError(where + "/Mesh/Type",
+                       space +
+                         " needs a mesh type with an exact geometry "
+                         "(rectangle, square, half ring or ring); a " +
+                         description.mesh.type + " mesh has none");
+    if (processes::shared_out())
+      throw InputError(where + "/Element/Space",
+                       space +
+                         " runs on one process for now (its functions "
+                         "reach beyond their cell, which a mesh shared out "
+                         "over the processes does not hold)");
+    if (description.turning_frame.active())
+      throw InputError(where + "/Turning frame",
+                       "is not built for " + space +
+                         " (its dofs are control points, not nodes)");
+    NurbsPatch patch =
+      type.exact_patch(description.mesh, description.element_degree);
+    // (a distorted NURBS body: its control points off the boundary moved,
+    // and the mesh's vertices put on the patch's knot points after)
+    if (description.mesh.distortion > 0.)
+      patch.distort(description.mesh.distortion);
+    return patch;
   }
 
 
@@ -602,7 +651,29 @@ namespace glissade
   void
   Body::update(const Vector<double> &increment)
   {
+    nodal_view_current = false;
     solution += increment;
+  }
+
+
+
+  const Vector<double> &
+  Body::nodal_displacement() const
+  {
+    if (element_space->capabilities().dofs_are_nodal_values)
+      return solution;
+    if (!nodal_view_current)
+      element_space->nodal_values(dofs, solution, nodal_view);
+    nodal_view_current = true;
+    return nodal_view;
+  }
+
+
+
+  unsigned int
+  Body::n_unknowns() const
+  {
+    return element_space->n_unknowns(dofs);
   }
 
 

@@ -65,6 +65,12 @@ namespace glissade
     , contact_dofs(massless.begin(), massless.end())
   {
     const ElementSpace &space = body.space();
+    if (!space.capabilities().dofs_are_nodal_values)
+      throw InputError(where + "/Element/Space",
+                       "body '" + body.name() + "' uses " + space.name() +
+                         ", which is quasi-static for now: its mass over "
+                         "control points and their velocities are not "
+                         "built (Time integration/Scheme = quasi-static)");
     if (space.components_per_displacement() != 1 && settings.lumped_mass)
       throw InputError(where + "/Material",
                        "Time integration/Mass = lumped is for nodal element "

@@ -32,14 +32,27 @@ namespace glissade
     // makes them for all.
     DynamicSparsityPattern               dsp(dofs.n_dofs());
     std::vector<types::global_dof_index> local_dofs;
+    std::vector<bool>                    touched(dofs.n_dofs(), false);
     for (const auto &cell : cells_here)
       {
-        local_dofs.resize(cell->get_fe().n_dofs_per_cell());
-        cell->get_dof_indices(local_dofs);
+        space.cell_dof_indices(cell, local_dofs);
         iteration_constraints.add_entries_local_to_global(local_dofs,
                                                           dsp,
                                                           false);
+        for (const auto dof : local_dofs)
+          touched[dof] = true;
       }
+    // A space that numbers its unknowns into a finite element's dofs
+    // (NURBS) leaves dofs that no cell has, constrained to zero: a 1 on
+    // their diagonal keeps the tangent regular. (one process only: on
+    // several, a dof may be another process's cells')
+    if (!space.capabilities().dofs_are_nodal_values)
+      for (types::global_dof_index i = 0; i < touched.size(); ++i)
+        if (!touched[i])
+          {
+            dsp.add(i, i);
+            numbering_only_dofs.push_back(i);
+          }
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     // (a body in contact sets its contact dofs to eliminate last later,
@@ -59,6 +72,8 @@ namespace glissade
           tangent.reinit(sparsity);
         else
           tangent = 0.;
+        for (const auto i : numbering_only_dofs)
+          tangent.set(i, i, 1.);
       }
     system_rhs = 0.;
   }

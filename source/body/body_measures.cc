@@ -18,7 +18,7 @@ namespace glissade
   vertex_displacement(const Body &body, const Point<2> &point)
   {
     const auto            dof_pair = vertex_value_dofs(body, point);
-    const Vector<double> &u        = body.displacement();
+    const Vector<double> &u        = body.nodal_displacement();
     return Tensor<1, 2>({u(dof_pair[0]), u(dof_pair[1])});
   }
 
@@ -64,7 +64,7 @@ namespace glissade
   std::vector<Tensor<1, 2>>
   vertex_displacements(const Body &body)
   {
-    const Vector<double>     &u = body.displacement();
+    const Vector<double>     &u = body.nodal_displacement();
     std::vector<Tensor<1, 2>> result(body.triangulation().n_vertices());
     for (const auto &cell : body.dof_handler().active_cell_iterators())
       for (const unsigned int v : cell->vertex_indices())
@@ -96,7 +96,7 @@ namespace glissade
               std::make_pair(per_dim, ci.second))
             pairs.emplace_back(i, j);
       }
-    const Vector<double>                &u = body.displacement();
+    const Vector<double>                &u = body.nodal_displacement();
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
     double                               largest = 0.;
     // (a distributed mesh may not hold the node where it is largest)
@@ -134,6 +134,25 @@ namespace glissade
                                                        where.vertex);
         return Tensor<1, 2>(
           {residual(d[0]) - contact(d[0]), residual(d[1]) - contact(d[1])});
+      }
+    if (!body.space().capabilities().dofs_are_nodal_values)
+      {
+        // (the dofs a support on the boundary constrains: its control
+        // points, whose residual is the boundary's reaction since the
+        // functions sum to one)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            std::vector<DofRelation> relations;
+            body.space().boundary_relations(body.dof_handler(),
+                                            where.boundary,
+                                            Functions::ZeroFunction<2>(2),
+                                            {{c == 0, c == 1}},
+                                            false,
+                                            relations);
+            for (const auto &r : relations)
+              sum[c] += residual(r.dof) - contact(r.dof);
+          }
+        return sum;
       }
     const FiniteElement<2>              &fe = body.space().finite_element();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
@@ -183,7 +202,7 @@ namespace glissade
       {
         if (shared_out && !body.is_own_cell(cell))
           continue;
-        cell->get_dof_indices(local);
+        body.space().cell_dof_indices(cell, local);
         for (unsigned int i = 0; i < local.size(); ++i)
           values[i] = u(local[i]);
         // (small strain: 1/2 u_e . K_e u_e, the same quadrature without

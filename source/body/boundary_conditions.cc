@@ -208,12 +208,21 @@ namespace glissade
                                          const BoundaryNames    &names,
                                          const Triangulation<2> &tria)
   {
+    // A space whose dofs are not nodal values (NURBS: control points)
+    // has no dof at a vertex: what names a vertex is refused.
+    const bool        nodal = space.capabilities().dofs_are_nodal_values;
+    const std::string not_at_a_vertex =
+      " acts on a vertex's dofs, which body '" + body.name + "' (" +
+      space.name() +
+      ", whose dofs are control points) does not have; name a boundary";
     // The entries name their file already ("scene.prm: Body b/...").
     for (const auto &d : body.dirichlet)
       {
         DirichletItem item;
-        item.where      = resolve(d.location, names, tria, body.name, d.entry);
-        item.components = {{d.x_component, d.y_component}};
+        item.where = resolve(d.location, names, tria, body.name, d.entry);
+        if (!nodal && item.where.is_vertex)
+          throw InputError(d.entry, "'" + d.location + "'" + not_at_a_vertex);
+        item.components      = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
         if (d.direction != DirichletDescription::Direction::cartesian)
           {
@@ -265,6 +274,9 @@ namespace glissade
                   body.name,
                   n.entry,
                   n.kind == NeumannDescription::Kind::point_load);
+        if (!nodal && (where.is_vertex ||
+                       n.kind == NeumannDescription::Kind::nodal_loads))
+          throw InputError(n.entry, "'" + n.location + "'" + not_at_a_vertex);
         if (n.kind == NeumannDescription::Kind::point_load)
           point_loads.push_back({where, make_parser(n.expressions, n.entry)});
         else if (n.kind == NeumannDescription::Kind::nodal_loads)
@@ -557,9 +569,8 @@ namespace glissade
           if (cell->active_cell_index() == load.where.cell_index)
             {
               evaluator->reinit_at(cell, load.where.face, load.where.fraction);
-              std::vector<types::global_dof_index> local(
-                evaluator->dofs_per_cell());
-              cell->get_dof_indices(local);
+              std::vector<types::global_dof_index> local;
+              space.cell_dof_indices(cell, local);
               for (unsigned int i = 0; i < local.size(); ++i)
                 forces[local[i]] += evaluator->shape_value(i, 0) *
                                     f[evaluator->displacement_component(i)];

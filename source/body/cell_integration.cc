@@ -47,7 +47,8 @@ namespace glissade
                                    const BodyMaterials       &materials,
                                    const MaterialDescription &material,
                                    const unsigned int         n_cells)
-    : materials(materials)
+    : space(space)
+    , materials(materials)
     , hypothesis(material.hypothesis, material.thickness)
     , small_strain(material.kinematics == Kinematics::small_strain)
     , kept_linear_stiffness(small_strain ? n_cells : 0)
@@ -73,7 +74,7 @@ namespace glissade
     auto              &cell_rhs    = data.cell_rhs;
     data.cell                      = cell;
     data.rejection.clear();
-    cell->get_dof_indices(data.local_dofs);
+    space.cell_dof_indices(cell, data.local_dofs);
     cell_matrix                   = 0.;
     cell_rhs                      = 0.;
     data.viscous_force            = 0.;

@@ -41,7 +41,17 @@ namespace glissade
          {std::pair<const Body *, const char *>{&slave, "/Slave body"},
           std::pair<const Body *, const char *>{master, "/Master body"}})
       if (body != nullptr &&
-          body->space().finite_element().n_dofs_per_line() > 0)
+          !body->space().capabilities().dofs_are_nodal_values)
+        throw InputError(entry + role,
+                         "body '" + body->name() +
+                           "' uses the element space '" + body->space().name() +
+                           "', whose dofs are control points, not nodes: "
+                           "contact on an isogeometric body (its exact "
+                           "boundary as the master, its boundary's points "
+                           "as slaves) is not built yet; contact bodies "
+                           "must use q1 or hermite");
+      else if (body != nullptr &&
+               body->space().finite_element().n_dofs_per_line() > 0)
         throw InputError(entry + role,
                          "body '" + body->name() +
                            "' uses the element space '" + body->space().name() +

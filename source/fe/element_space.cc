@@ -19,6 +19,50 @@ namespace glissade
 
 
 
+  void
+  ElementSpace::use_patch(const NurbsPatch &)
+  {
+    AssertThrow(false,
+                ExcMessage("the " + name() + " space takes no NURBS patch"));
+  }
+
+
+
+  void
+  ElementSpace::place_vertices(Triangulation<2> &) const
+  {}
+
+
+
+  void
+  ElementSpace::cell_dof_indices(
+    const DoFHandler<2>::active_cell_iterator &cell,
+    std::vector<types::global_dof_index>      &indices) const
+  {
+    indices.resize(cell->get_fe().n_dofs_per_cell());
+    cell->get_dof_indices(indices);
+  }
+
+
+
+  void
+  ElementSpace::nodal_values(const DoFHandler<2> &,
+                             const Vector<double> &coefficients,
+                             Vector<double>       &nodal) const
+  {
+    nodal = coefficients;
+  }
+
+
+
+  unsigned int
+  ElementSpace::n_unknowns(const DoFHandler<2> &dof_handler) const
+  {
+    return dof_handler.n_dofs();
+  }
+
+
+
   const ElementSpace::BoundarySupport &
   ElementSpace::boundary_support(const DoFHandler<2>     &dof_handler,
                                  const types::boundary_id boundary,

@@ -2,6 +2,7 @@
 #include <glissade/fe/element_space_registry.h>
 #include <glissade/fe/hermite_space.h>
 #include <glissade/fe/lagrange_space.h>
+#include <glissade/fe/nurbs_space.h>
 #include <glissade/fe/serendipity_space.h>
 
 namespace glissade
@@ -15,23 +16,31 @@ namespace glissade
     static const std::vector<Entry> list = {
       {"q1",
        "bilinear 4-node quadrilateral (the paper's Q4)",
-       [] { return std::make_unique<LagrangeSpace>(1); }},
+       [](unsigned int) { return std::make_unique<LagrangeSpace>(1); }},
       {"q2",
        "biquadratic 9-node Lagrange quadrilateral",
-       [] { return std::make_unique<LagrangeSpace>(2); }},
+       [](unsigned int) { return std::make_unique<LagrangeSpace>(2); }},
       {"q3",
        "bicubic 16-node Lagrange quadrilateral",
-       [] { return std::make_unique<LagrangeSpace>(3); }},
+       [](unsigned int) { return std::make_unique<LagrangeSpace>(3); }},
       {"q8",
        "quadratic 8-node serendipity quadrilateral (the paper's Q8)",
-       [] { return std::make_unique<SerendipitySpace>(2); }},
+       [](unsigned int) { return std::make_unique<SerendipitySpace>(2); }},
       {"q12",
        "cubic 12-node serendipity quadrilateral (the paper's Q12)",
-       [] { return std::make_unique<SerendipitySpace>(3); }},
+       [](unsigned int) { return std::make_unique<SerendipitySpace>(3); }},
       {"hermite",
        "the paper's C1-edge Hermite quadrilateral: 12-term cubic, value and "
        "both derivatives per node and component (6 dofs per node)",
-       [] { return std::make_unique<HermiteSpace>(); }},
+       [](unsigned int) { return std::make_unique<HermiteSpace>(); }},
+      {"nurbs",
+       "isogeometric: the NURBS space of the body's exact geometry "
+       "(rectangle, square, ring, half ring), of degree Element/Degree and "
+       "continuity C^(degree-1) between elements, its dofs the control "
+       "points' displacements",
+       [](unsigned int degree) {
+         return std::make_unique<NurbsSpace>(degree);
+       }},
     };
     return list;
   }
@@ -39,11 +48,12 @@ namespace glissade
 
 
   std::unique_ptr<ElementSpace>
-  ElementSpaceRegistry::create(const std::string &name)
+  ElementSpaceRegistry::create(const std::string &name,
+                               const unsigned int degree)
   {
     for (const auto &entry : entries())
       if (entry.name == name)
-        return entry.create();
+        return entry.create(degree);
     throw InputError("Element/Space",
                      "unknown element space '" + name +
                        "' (known: " + names_as_pattern() + ")");
@@ -68,7 +78,7 @@ namespace glissade
   {
     std::vector<std::string> names;
     for (const auto &entry : entries())
-      if (wanted(entry.create()->capabilities()))
+      if (wanted(entry.create(2)->capabilities()))
         names.push_back(entry.name);
     std::string text;
     for (unsigned int k = 0; k < names.size(); ++k)

@@ -50,8 +50,10 @@ namespace glissade
                  const unsigned int    index,
                  const OutputSettings &settings)
   {
-    const ElementSpace   &element_space = body.space();
-    const Vector<double> &solution      = body.displacement();
+    const ElementSpace &element_space = body.space();
+    // (the values at the finite element's nodes, which DataOut reads: the
+    // displacement itself but for a NURBS body)
+    const Vector<double> &solution      = body.nodal_displacement();
     const BodyInertia    *inertia_terms = body.inertia();
     const unsigned int    per_dim = element_space.components_per_displacement();
     StressPostprocessor   stress(body.materials(),

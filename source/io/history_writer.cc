@@ -352,8 +352,8 @@ namespace glissade
                         location_identifier(location));
     evaluators.emplace_back(
       [body = &body, vertex_dofs](std::vector<double> &row) {
-        row.push_back(body->displacement()(vertex_dofs[0]));
-        row.push_back(body->displacement()(vertex_dofs[1]));
+        row.push_back(body->nodal_displacement()(vertex_dofs[0]));
+        row.push_back(body->nodal_displacement()(vertex_dofs[1]));
       });
   }
 

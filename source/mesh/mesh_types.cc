@@ -224,6 +224,27 @@ namespace glissade
         return {{"inner", 0}, {"outer", 1}};
       return {{"inner", 0}, {"outer", 1}, {"start", 2}, {"end", 3}};
     }
+
+
+    /** create_ring's ring as a NURBS patch: xi radial, eta around. */
+    NurbsPatch
+    ring_patch(const MeshDescription &description,
+               const bool             closed,
+               const unsigned int     degree)
+    {
+      const auto  &ring = std::any_cast<const RingShape &>(description.shape);
+      const double theta_0 = closed ? 0. : ring.start_angle * M_PI / 180.;
+      const double theta_1 = closed ? 2. * M_PI : ring.end_angle * M_PI / 180.;
+      return NurbsPatch::annulus(ring.center,
+                                 ring.inner_radius,
+                                 ring.outer_radius,
+                                 theta_0,
+                                 theta_1,
+                                 closed,
+                                 degree,
+                                 description.subdivisions[1],
+                                 description.subdivisions[0]);
+    }
   } // namespace
 
 
@@ -262,6 +283,14 @@ namespace glissade
          labels.boundaries =
            create_rectangle(shape.corner_1, shape.corner_2, d, t);
          return labels;
+       },
+       [](const MeshDescription &d, const unsigned int degree) {
+         const auto &shape = std::any_cast<const RectangleShape &>(d.shape);
+         return NurbsPatch::rectangle(shape.corner_1,
+                                      shape.corner_2,
+                                      degree,
+                                      d.subdivisions[0],
+                                      d.subdivisions[1]);
        }},
       {"square",
        "centred at Center with side Side, same boundary names",
@@ -286,6 +315,15 @@ namespace glissade
          labels.boundaries =
            create_rectangle(shape.center - half, shape.center + half, d, t);
          return labels;
+       },
+       [](const MeshDescription &d, const unsigned int degree) {
+         const auto        &shape = std::any_cast<const SquareShape &>(d.shape);
+         const Tensor<1, 2> half({shape.side / 2, shape.side / 2});
+         return NurbsPatch::rectangle(shape.center - half,
+                                      shape.center + half,
+                                      degree,
+                                      d.subdivisions[0],
+                                      d.subdivisions[1]);
        }},
       {"half ring",
        "centred at Center between Inner radius and Outer radius, "
@@ -301,6 +339,9 @@ namespace glissade
          labels.boundaries =
            create_ring(d, std::any_cast<const RingShape &>(d.shape), false, t);
          return labels;
+       },
+       [](const MeshDescription &d, const unsigned int degree) {
+         return ring_patch(d, false, degree);
        }},
       {"ring",
        "the same closed, boundaries inner and outer",
@@ -319,6 +360,9 @@ namespace glissade
          labels.boundaries =
            create_ring(d, std::any_cast<const RingShape &>(d.shape), true, t);
          return labels;
+       },
+       [](const MeshDescription &d, const unsigned int degree) {
+         return ring_patch(d, true, degree);
        }},
       {"gmsh",
        "the .msh file File, whose named physical lines become boundaries",
@@ -336,7 +380,9 @@ namespace glissade
           Triangulation<2>      &t,
           const std::string     &where) {
          return read_gmsh(d.file, t, where + "/Mesh/File");
-       }}};
+       },
+       // (no exact patch: a Gmsh mesh's geometry is its elements')
+       {}}};
     return list;
   }
 

@@ -364,6 +364,12 @@ namespace glissade
       "q1",
       Patterns::Selection(ElementSpaceRegistry::names_as_pattern()),
       "The element space by name: " + ElementSpaceRegistry::documentation());
+    prm.declare_entry("Degree",
+                      "2",
+                      Patterns::Integer(2, 4),
+                      "nurbs: the polynomial degree of the patch in each "
+                      "direction (2 to 4; the Lagrange and serendipity "
+                      "spaces are named by theirs).");
     prm.leave_subsection();
 
     MaterialDescription::declare_parameters(prm, regions);
@@ -388,7 +394,14 @@ namespace glissade
     // apart: a mistake in one does not hide those of the others.
     prm.check([&]() { mesh.parse_parameters(prm, where); });
     prm.enter_subsection("Element");
-    element_space = prm.get("Space");
+    element_space  = prm.get("Space");
+    element_degree = prm.get_integer("Degree");
+    if (element_degree != 2 && element_space != "nurbs")
+      prm.check([&]() {
+        throw InputError(where + "/Element/Degree",
+                         "applies to Space = nurbs only (this body's space, " +
+                           element_space + ", is named by its degree)");
+      });
     prm.leave_subsection();
     prm.check([&]() { material.parse_parameters(prm, where); });
     prm.check([&]() { parse_boundary_conditions(prm, *this, where); });

@@ -47,7 +47,7 @@ namespace glissade
     for (auto &b : bodies)
       {
         size = std::max(size, b->size());
-        n_dofs += b->n_dofs();
+        n_dofs += b->n_unknowns();
       }
     NewtonCriterion criterion(settings.residual_tolerance,
                               settings.displacement_tolerance,

@@ -88,7 +88,7 @@ namespace glissade
         if (shows_progress())
           std::cout
             << "body '" << description.name << "': " << body.n_cells()
-            << " cells, " << body.n_dofs() << " dofs"
+            << " cells, " << body.n_unknowns() << " dofs"
             << processes::mesh_held_here(body.mesh_is_distributed(),
                                          body.triangulation().n_active_cells())
             << " (set up, elapsed " << duration(setup.wall_time()) << ")"

@@ -109,7 +109,7 @@ namespace glissade
   {
     unsigned int n = 0;
     for (const auto &b : all_bodies)
-      n += b->n_dofs();
+      n += b->n_unknowns();
     return n;
   }
 

@@ -15,6 +15,7 @@
 #include <glissade/fe/evaluator_pool.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
+#include <glissade/mesh/nurbs_patch.h>
 
 #include <array>
 #include <memory>
@@ -190,6 +191,17 @@ namespace glissade
     // The displacement.
     const dealii::Vector<double> &
     displacement() const;
+    /**
+     * The displacement at the nodes of the space's finite element (its
+     * support points): displacement() itself for a nodal space, the values
+     * the control points give there for NURBS (ElementSpace::nodal_values).
+     * What output, history points and measures read.
+     */
+    const dealii::Vector<double> &
+    nodal_displacement() const;
+    /** The number of unknowns (ElementSpace::n_unknowns). */
+    unsigned int
+    n_unknowns() const;
     /** The displacement at the start of the current step. */
     const dealii::Vector<double> &
     stored_displacement() const;
@@ -214,6 +226,10 @@ namespace glissade
     serialize_state(Archive &archive);
 
   private:
+    /** The exact geometry a NURBS space integrates on, from the mesh type,
+     *  with the checks of what such a body does not take yet. */
+    NurbsPatch
+    exact_patch(const std::string &where) const;
     /**
      * The constructor's checks of the element space against the mesh and
      * the hypothesis: a space that cannot take a body of revolution, or
@@ -268,6 +284,10 @@ namespace glissade
     double                 time = 0.;
     std::string            problem;
     dealii::Vector<double> solution, stored_solution;
+    /** nodal_displacement() of a space that is not nodal, and whether it
+     *  is that of the current solution. */
+    mutable dealii::Vector<double> nodal_view;
+    mutable bool                   nodal_view_current = false;
     dealii::Vector<double> unconstrained_residual; // F_int - F_ext, all dofs
     std::vector<dealii::DoFHandler<2>::active_cell_iterator> own_cell_list;
     dealii::Vector<double> external_forces; // F_ext, all dofs
@@ -488,6 +508,7 @@ namespace glissade
   inline void
   Body::swap_displacement(dealii::Vector<double> &u)
   {
+    nodal_view_current = false;
     solution.swap(u);
   }
 
@@ -497,6 +518,7 @@ namespace glissade
   inline void
   Body::serialize_state(Archive &archive)
   {
+    nodal_view_current = false;
     archive &solution &contact_forces;
   }
 } // namespace glissade

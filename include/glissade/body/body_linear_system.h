@@ -199,12 +199,14 @@ namespace glissade
     regularization() const;
 
   private:
-    const dealii::DoFHandler<2>      &dofs;
-    const ElementSpace               &space;
-    const bool                        symmetric;
-    dealii::AffineConstraints<double> iteration_constraints;
-    dealii::SparsityPattern           sparsity;
-    dealii::SparseMatrix<double>      tangent;
+    const dealii::DoFHandler<2> &dofs;
+    const ElementSpace          &space;
+    /** Dofs no cell has (a NURBS space's numbering): 1 on the diagonal. */
+    std::vector<dealii::types::global_dof_index> numbering_only_dofs;
+    const bool                                   symmetric;
+    dealii::AffineConstraints<double>            iteration_constraints;
+    dealii::SparsityPattern                      sparsity;
+    dealii::SparseMatrix<double>                 tangent;
     /** Whether the assembly under way adds to the tangent (clear()). */
     bool                   assembling_tangent = true;
     dealii::Vector<double> system_rhs;

@@ -166,6 +166,7 @@ namespace glissade
                              Scratch                      &scratch,
                              CellContribution             &data) const;
 
+    const ElementSpace  &space;
     const BodyMaterials &materials;
     /** The body's plane strain, plane stress or revolution. */
     const Hypothesis hypothesis;

@@ -186,9 +186,11 @@ namespace glissade
 
   struct BodyDescription
   {
-    std::string                       name;
-    MeshDescription                   mesh;
-    std::string                       element_space = "q1";
+    std::string     name;
+    MeshDescription mesh;
+    std::string     element_space = "q1";
+    /** Element/Degree: the degree of a space not named by it (nurbs). */
+    unsigned int                      element_degree = 2;
     MaterialDescription               material;
     std::vector<DirichletDescription> dirichlet;
     std::vector<NeumannDescription>   neumann;

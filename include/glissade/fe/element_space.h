@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
 
 #include <glissade/fe/cell_evaluator.h>
 
@@ -19,6 +20,8 @@
 
 namespace glissade
 {
+  class NurbsPatch;
+
   /**
    * One Dirichlet condition on one dof: u_dof + sum_k c_k u_{dof_k} = value.
    * Plain nodal values have no `others`; the Hermite element's tangential
@@ -65,6 +68,14 @@ namespace glissade
       /** Every dof is a vertex's displacement: a support along a
        *  boundary's normal or tangent is a relation between two of them. */
       bool vertex_dofs_only = false;
+      /** Its dofs are displacements at nodes (every space but NURBS,
+       *  whose dofs are control points'): what reads a vertex's dofs as
+       *  its displacement (contact nodes, point supports and loads, the
+       *  springs of a free body) may use them. */
+      bool dofs_are_nodal_values = true;
+      /** It needs the exact geometry of the body (use_patch), which only
+       *  the mesh types that have one give. */
+      bool needs_exact_patch = false;
     };
 
     virtual Capabilities
@@ -79,9 +90,49 @@ namespace glissade
      * mesh: a geometry field, constraints among the element's own dofs
      * (serendipity interiors). The default does nothing.
      */
+    /**
+     * The body's exact geometry, before setup(), for a space whose
+     * capabilities say needs_exact_patch. The default refuses it.
+     */
+    virtual void
+    use_patch(const NurbsPatch &patch);
+
+    /**
+     * Puts the mesh's vertices where the space's geometry has them (a
+     * distorted NURBS patch's knot points), before the dofs are
+     * distributed. The default leaves them.
+     */
+    virtual void
+    place_vertices(dealii::Triangulation<2> &mesh) const;
+
     virtual void
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints);
+
+    /**
+     * The dofs of a cell's shape functions, in the evaluator's order. The
+     * default is the cell's own dofs; a space whose functions reach beyond
+     * their cell (NURBS) gives its own.
+     */
+    virtual void
+    cell_dof_indices(
+      const dealii::DoFHandler<2>::active_cell_iterator &cell,
+      std::vector<dealii::types::global_dof_index>      &indices) const;
+
+    /**
+     * The displacement at the support points of finite_element(), from
+     * the dofs' coefficients: what output and measures read. The default
+     * (a nodal space) copies them.
+     */
+    virtual void
+    nodal_values(const dealii::DoFHandler<2>  &dof_handler,
+                 const dealii::Vector<double> &coefficients,
+                 dealii::Vector<double>       &nodal) const;
+
+    /** The number of unknowns (the dofs less those set to zero for
+     *  numbering only). */
+    virtual unsigned int
+    n_unknowns(const dealii::DoFHandler<2> &dof_handler) const;
 
     /**
      * A mesh shared out over the processes (Body): setup() has run on the

@@ -19,16 +19,18 @@ namespace glissade
   public:
     struct Entry
     {
-      std::string                                    name;
-      std::string                                    description;
-      std::function<std::unique_ptr<ElementSpace>()> create;
+      std::string name;
+      std::string description;
+      /** Makes it; `degree` is Element/Degree, which only the spaces
+       *  that are not named by their degree read (nurbs). */
+      std::function<std::unique_ptr<ElementSpace>(unsigned int degree)> create;
     };
 
     static const std::vector<Entry> &
     entries();
 
     static std::unique_ptr<ElementSpace>
-    create(const std::string &name);
+    create(const std::string &name, const unsigned int degree = 2);
 
     /** "q1|q2|..." for Patterns::Selection. */
     static std::string

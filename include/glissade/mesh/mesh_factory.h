@@ -5,6 +5,7 @@
 
 #include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_labels.h>
+#include <glissade/mesh/nurbs_patch.h>
 
 #include <any>
 #include <functional>
@@ -63,6 +64,15 @@ namespace glissade
                                dealii::Triangulation<2> &,
                                const std::string &where)>
         create;
+      /**
+       * The shape as an exact NURBS patch of the given degree whose knot
+       * spans are the cells create() makes, cell k the span (k % n_xi,
+       * k / n_xi), each cell's first reference direction along xi (an
+       * isogeometric body, Element/Space = nurbs); empty for a type that
+       * has none (a Gmsh file).
+       */
+      std::function<NurbsPatch(const MeshDescription &, unsigned int degree)>
+        exact_patch;
     };
 
     static const std::vector<MeshType> &

@@ -1,0 +1,390 @@
+// Isogeometric bodies (Element/Space = nurbs, issue 52): the exact
+// geometry of the patches, the patch test, Lame's ring converging at the
+// rates of degree p, and what a NURBS body refuses.
+
+#include <deal.II/base/quadrature_lib.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/fe/nurbs_space.h>
+#include <glissade/mesh/nurbs_patch.h>
+#include <glissade/scene/scene_reader.h>
+#include <glissade/solver/simulation.h>
+
+#include <cmath>
+
+#include "test_tools.h"
+
+using namespace glissade;
+using namespace dealii;
+using namespace glissade_tests;
+
+namespace
+{
+  /** A NURBS body `mesh` (the Mesh subsection's entries) in plane
+   *  strain, `conditions` its boundary conditions. */
+  std::string
+  nurbs_scene(const std::string &mesh,
+              const unsigned int degree,
+              const std::string &kinematics,
+              const std::string &conditions,
+              const std::string &label)
+  {
+    return "subsection Scene\n set Bodies = ring\nend\n"
+           "subsection Body ring\n subsection Mesh\n" +
+           mesh +
+           "\n end\n subsection Element\n  set Space = nurbs\n"
+           "  set Degree = " +
+           std::to_string(degree) +
+           "\n end\n subsection Material\n  set Young modulus = 1000\n"
+           "  set Poisson ratio = 0.3\n  set Hypothesis = plane strain\n"
+           "  set Kinematics = " +
+           kinematics + "\n end\n subsection Boundary conditions\n" +
+           conditions +
+           "\n end\nend\n"
+           "subsection Newton\n set Residual tolerance = 1e-13\n"
+           " set Displacement tolerance = 1e-13\nend\n"
+           "subsection Output\n set Progress = false\n set Plots = false\n"
+           " set VTU interval = 0\n set Directory = output/nurbs_" +
+           label + "\nend\n";
+  }
+
+  /** A quarter ring a = 1 < r < b = 2; Lame's problem when `conditions`
+   *  are symmetric supports and a pressure. */
+  std::string
+  quarter_ring(const unsigned int degree,
+               const unsigned int n_around,
+               const unsigned int n_through,
+               const std::string &kinematics,
+               const std::string &conditions,
+               const std::string &label)
+  {
+    return nurbs_scene("  set Type = half ring\n  set Inner radius = 1\n"
+                       "  set Outer radius = 2\n  set Start angle = 0\n"
+                       "  set End angle = 90\n  set Subdivisions = " +
+                         std::to_string(n_around) + ", " +
+                         std::to_string(n_through),
+                       degree,
+                       kinematics,
+                       conditions,
+                       label);
+  }
+
+  /** The errors of a body's displacement against u(X) and grad u(X),
+   *  relative to u's norms, on `points` Gauss points a direction. */
+  std::pair<double, double>
+  relative_errors(const Body                                          &body,
+                  const std::function<Tensor<1, 2>(const Point<2> &)> &u,
+                  const std::function<Tensor<2, 2>(const Point<2> &)> &grad,
+                  const unsigned int                                   points)
+  {
+    const auto evaluator = body.space().create_evaluator(points);
+    std::vector<types::global_dof_index> local;
+    std::vector<double>                  values;
+    double                               e0 = 0., e1 = 0., n0 = 0., n1 = 0.;
+    for (const auto &cell : body.dof_handler().active_cell_iterators())
+      {
+        evaluator->reinit(cell);
+        body.space().cell_dof_indices(cell, local);
+        values.resize(local.size());
+        for (unsigned int i = 0; i < local.size(); ++i)
+          values[i] = body.displacement()(local[i]);
+        for (unsigned int q = 0; q < evaluator->n_quadrature_points(); ++q)
+          {
+            const Point<2> X = evaluator->quadrature_point(q);
+            e0 += (evaluator->value(values, q) - u(X)).norm_square() *
+                  evaluator->JxW(q);
+            e1 += (evaluator->gradient(values, q) - grad(X)).norm_square() *
+                  evaluator->JxW(q);
+            n0 += u(X).norm_square() * evaluator->JxW(q);
+            n1 += grad(X).norm_square() * evaluator->JxW(q);
+          }
+      }
+    return {std::sqrt(e0 / n0), std::sqrt(e1 / n1)};
+  }
+
+  /** What a scene is refused with, or "accepted". */
+  std::string
+  refusal(const std::string &scene)
+  {
+    try
+      {
+        Simulation simulation(SceneReader::read_string(scene, "scene.prm"));
+      }
+    catch (const InputError &e)
+      {
+        return e.what();
+      }
+    return "accepted";
+  }
+} // namespace
+
+// The patches are the shapes: every point of a ring's patch lies on its
+// circle of radius r(xi) (rational weights; no polynomial does this), the
+// functions sum to one, their derivatives are the finite differences of
+// their values, and the knots fall on the mesh types' vertices.
+GLISSADE_TEST(nurbs_patches_are_exact)
+{
+  double worst_radius = 0., worst_sum = 0., worst_derivative = 0.,
+         worst_vertex = 0.;
+  for (const unsigned int degree : {2u, 3u, 4u})
+    for (const bool closed : {false, true})
+      {
+        const Point<2>     c(0.3, -0.2);
+        const unsigned int n_around = closed ? 10 : 5, n_through = 3;
+        const double       t0 = closed ? 0. : 0.2, t1 = closed ? 2 * M_PI : 2.9;
+        const NurbsPatch   patch = NurbsPatch::annulus(
+          c, 1., 1.5, t0, t1, closed, degree, n_through, n_around);
+        check(patch.xi.n_spans() == n_through &&
+                patch.eta.n_spans() == n_around,
+              "one span per cell");
+        NurbsPatch::Evaluation e, ep;
+        const double           h = 1e-6;
+        for (unsigned int sv = 0; sv < n_around; ++sv)
+          for (unsigned int su = 0; su < n_through; ++su)
+            {
+              const auto u = patch.xi.span_range(su);
+              const auto v = patch.eta.span_range(sv);
+              for (const double s : {0., 0.13, 0.5, 0.77, 1.})
+                for (const double t : {0., 0.29, 0.61, 1.})
+                  {
+                    const double pu = u[0] + s * (u[1] - u[0]),
+                                 pv = v[0] + t * (v[1] - v[0]);
+                    patch.evaluate(su, sv, pu, pv, e);
+                    const double r = 1. + 0.5 * (su + s) / n_through;
+                    worst_radius   = std::max(worst_radius,
+                                            std::abs((e.point - c).norm() - r));
+                    double sum     = 0.;
+                    for (const double R : e.values)
+                      sum += R;
+                    worst_sum = std::max(worst_sum, std::abs(sum - 1.));
+                    // (central differences inside the span)
+                    if (s > 0. && s < 1. && t > 0. && t < 1.)
+                      for (unsigned int d = 0; d < 2; ++d)
+                        {
+                          const double du = d == 0 ? h : 0.,
+                                       dv = d == 1 ? h : 0.;
+                          NurbsPatch::Evaluation em;
+                          patch.evaluate(su, sv, pu + du, pv + dv, ep);
+                          patch.evaluate(su, sv, pu - du, pv - dv, em);
+                          for (unsigned int k = 0; k < e.values.size(); ++k)
+                            worst_derivative =
+                              std::max(worst_derivative,
+                                       std::abs((ep.values[k] - em.values[k]) /
+                                                  (2 * h) -
+                                                e.parametric_gradients[k][d]));
+                        }
+                    // the mesh's vertex at the span's corner
+                    if ((s == 0. || s == 1.) && (t == 0. || t == 1.))
+                      {
+                        const double theta =
+                          t0 + (t1 - t0) * (sv + t) / n_around;
+                        const Point<2> vertex =
+                          c + Tensor<1, 2>(
+                                {r * std::cos(theta), r * std::sin(theta)});
+                        worst_vertex =
+                          std::max(worst_vertex, (e.point - vertex).norm());
+                      }
+                  }
+            }
+      }
+  std::cout << "  largest |(|X - c| - r)|: " << worst_radius
+            << "; largest |sum R - 1|: " << worst_sum
+            << "; largest |dR - finite difference|: " << worst_derivative
+            << "; largest distance of a knot point from its vertex: "
+            << worst_vertex << std::endl;
+  check(worst_radius < 1e-13, "a ring's patch leaves its circle");
+  check(worst_sum < 1e-13, "the functions do not sum to one");
+  check(worst_derivative < 1e-6, "the derivatives are not the values'");
+  check(worst_vertex < 1e-12, "the knots are not at the mesh's vertices");
+}
+
+// The patch test: a displacement affine in x, y prescribed on the whole
+// boundary is the answer everywhere inside, at small strain and at large
+// strain (a uniform deformation gradient), for p = 2 and 3. On a distorted
+// polynomial patch (weights 1: a rectangle, its inner control points
+// moved) to 1e-12: Gauss's rule integrates the terms exactly. On a ring
+// (rational weights) only to the rule's accuracy on rational functions,
+// which is reported, and bounded by 1e-5.
+GLISSADE_TEST(nurbs_patch_test)
+{
+  const std::string ux = "(0.01 + 0.02*x - 0.03*y)*t",
+                    uy = "(-0.02 + 0.015*x + 0.025*y)*t";
+  const auto exact     = [](const Point<2> &X) {
+    return Tensor<1, 2>(
+      {0.01 + 0.02 * X[0] - 0.03 * X[1], -0.02 + 0.015 * X[0] + 0.025 * X[1]});
+  };
+  for (const bool ring : {false, true})
+    for (const std::string kinematics : {"small strain", "large strain"})
+      for (const unsigned int degree : {2u, 3u})
+        {
+          std::string conditions = " set Prescribed displacement = ";
+          for (const std::string &side :
+               ring ?
+                 std::vector<std::string>{"inner", "outer", "start", "end"} :
+                 std::vector<std::string>{"left", "right", "bottom", "top"})
+            conditions += side + ": xy: " + ux + ", " + uy + "; ";
+          conditions.resize(conditions.size() - 2);
+          const std::string label = std::string(ring ? "ring" : "rectangle") +
+                                    std::to_string(degree) + kinematics[0];
+          Simulation simulation(SceneReader::read_string(
+            ring ? quarter_ring(degree, 5, 3, kinematics, conditions, label) :
+                   nurbs_scene("  set Type = rectangle\n"
+                               "  set Corner 1 = -0.5, 0.2\n"
+                               "  set Corner 2 = 1.5, 1.2\n"
+                               "  set Subdivisions = 6, 4\n"
+                               "  set Distortion = 0.3",
+                               degree,
+                               kinematics,
+                               conditions,
+                               label),
+            "patch"));
+          simulation.advance_to(1., "increment 1");
+          const Body &body = simulation.body("ring");
+          if (!ring)
+            {
+              // (the patch is distorted: its inner knot points are off the
+              // regular 6 x 4 lattice)
+              double off = 0.;
+              for (const auto &X : body.triangulation().get_vertices())
+                off = std::max(
+                  off,
+                  std::hypot(X[0] + 0.5 - std::round((X[0] + 0.5) * 3.) / 3.,
+                             X[1] - 0.2 - std::round((X[1] - 0.2) * 4.) / 4.));
+              std::cout << "  largest distance of a knot point from the "
+                           "regular lattice: "
+                        << off << std::endl;
+              check(off > 0.01, "the patch is not distorted");
+            }
+          // The nodal view at every node of the output's elements.
+          std::map<types::global_dof_index, Point<2>> support;
+          DoFTools::map_dofs_to_support_points(body.space().mapping(),
+                                               body.dof_handler(),
+                                               support);
+          const auto &fe    = body.dof_handler().get_fe();
+          const auto &nodal = body.nodal_displacement();
+          double      worst = 0.;
+          std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
+          for (const auto &cell : body.dof_handler().active_cell_iterators())
+            {
+              cell->get_dof_indices(local);
+              for (unsigned int i = 0; i < local.size(); ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  worst                = std::max(worst,
+                                   std::abs(nodal(local[i]) -
+                                            exact(support[local[i]])[c]));
+                }
+            }
+          // and at Gauss points, from the control points
+          const auto errors = relative_errors(
+            body,
+            exact,
+            [](const Point<2> &) {
+              return Tensor<2, 2>({{0.02, -0.03}, {0.015, 0.025}});
+            },
+            degree + 2);
+          std::cout << "  " << label << ": largest nodal error " << worst
+                    << " (the field reaches 0.08); relative L2 error "
+                    << errors.first << ", H1 " << errors.second << std::endl;
+          const double bound = ring ? 1e-5 : 1e-12;
+          check(worst < bound * 0.08 && errors.first < bound &&
+                  errors.second < 10 * bound,
+                label + ": the patch test fails");
+        }
+}
+
+// Lame's thick ring with its exact geometry: L2 errors at h^(p+1) and H1
+// at h^p for p = 2 and 3 (small strain, a = 1, b = 2, E = 1000, nu = 0.3,
+// plane strain, pressure 1e-4 inside; a quarter with symmetric supports).
+GLISSADE_TEST(nurbs_lame_ring_rates)
+{
+  const double E = 1000., nu = 0.3, p = 1e-4, a = 1., b = 2.;
+  const double A = p * a * a / (b * b - a * a), B = A * b * b;
+  const auto   u_r = [&](const double r) {
+    return (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r);
+  };
+  const auto du_r = [&](const double r) {
+    return (1. + nu) / E * ((1. - 2. * nu) * A - B / (r * r));
+  };
+  const auto u = [&](const Point<2> &X) {
+    const double r = X.norm();
+    return Tensor<1, 2>({u_r(r) * X[0] / r, u_r(r) * X[1] / r});
+  };
+  const auto grad = [&](const Point<2> &X) {
+    const double       r = X.norm();
+    const Tensor<1, 2> e_r({X[0] / r, X[1] / r}), e_t({-X[1] / r, X[0] / r});
+    return du_r(r) * outer_product(e_r, e_r) +
+           u_r(r) / r * outer_product(e_t, e_t);
+  };
+  for (const unsigned int degree : {2u, 3u})
+    {
+      std::vector<std::pair<double, double>> errors;
+      const std::vector<unsigned int>        meshes = {2, 4, 8, 16};
+      for (const unsigned int n : meshes)
+        {
+          Simulation simulation(SceneReader::read_string(
+            quarter_ring(degree,
+                         2 * n,
+                         n,
+                         "small strain",
+                         " set Fixed = start: y; end: x\n"
+                         " set Pressure = inner: 1e-4*t",
+                         "lame_" + std::to_string(degree) + "_" +
+                           std::to_string(n)),
+            "lame"));
+          simulation.advance_to(1., "increment 1");
+          errors.push_back(
+            relative_errors(simulation.body("ring"), u, grad, degree + 3));
+          std::cout << "  degree " << degree << ", " << 2 * n << " x " << n
+                    << " elements, " << simulation.body("ring").n_unknowns()
+                    << " unknowns: L2 error " << errors.back().first
+                    << ", H1 error " << errors.back().second << std::endl;
+        }
+      const unsigned int k  = errors.size() - 1;
+      const double       r0 = std::log2(errors[k - 1].first / errors[k].first);
+      const double r1 = std::log2(errors[k - 1].second / errors[k].second);
+      std::cout << "  degree " << degree << ": rates L2 " << r0 << " (theory "
+                << degree + 1 << "), H1 " << r1 << " (theory " << degree << ")"
+                << std::endl;
+      check(std::abs(r0 - (degree + 1)) <= 0.25, "the L2 rate is off p + 1");
+      check(std::abs(r1 - degree) <= 0.25, "the H1 rate is off p");
+    }
+}
+
+// What a NURBS body does not take names the entry and why.
+GLISSADE_TEST(nurbs_input_errors)
+{
+  const std::string ring = quarter_ring(
+    2, 4, 2, "small strain", " set Fixed = start: y; end: x", "refused");
+  const auto with = [&](const std::string &from, const std::string &to) {
+    std::string scene = ring;
+    const auto  at    = scene.find(from);
+    check(at != std::string::npos, "the scene has '" + from + "'");
+    return scene.replace(at, from.size(), to);
+  };
+  for (const auto &[scene, expected] :
+       std::vector<std::pair<std::string, std::string>>{
+         {nurbs_scene("  set Type = gmsh\n  set File = x.msh",
+                      2,
+                      "small strain",
+                      " set Fixed = left: xy",
+                      "gmsh"),
+          "needs a mesh type with an exact geometry"},
+         {with("set Space = nurbs\n  set Degree = 2",
+               "set Space = q1\n  set Degree = 3"),
+          "Element/Degree: applies to Space = nurbs only"},
+         {with("set Fixed = start: y; end: x",
+               "set Fixed = start: y; end: x; point(1, 0): x"),
+          "does not have; name a boundary"},
+         {with("set Fixed = start: y; end: x", "set Fixed = start: y"),
+          "leave 1 rigid motion(s) free"},
+         {with("set Hypothesis = plane strain",
+               "set Hypothesis = axisymmetric"),
+          "its dofs are control points"}})
+    {
+      const std::string message = refusal(scene);
+      std::cout << "  " << message << std::endl;
+      check(message.find(expected) != std::string::npos,
+            "expected a message with '" + expected + "'");
+    }
+}
