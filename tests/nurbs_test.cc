@@ -5,12 +5,16 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/body/body_measures.h>
 #include <glissade/fe/nurbs_space.h>
 #include <glissade/mesh/nurbs_patch.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <tuple>
 
 #include "test_tools.h"
 
@@ -387,4 +391,144 @@ GLISSADE_TEST(nurbs_input_errors)
       check(message.find(expected) != std::string::npos,
             "expected a message with '" + expected + "'");
     }
+}
+
+// A patch read from a file (Mesh/Type = nurbs patch): the quarter annulus
+// of prm/meshes/quarter_annulus.nurbs, its one element split by knot
+// insertion, is Lame's ring again (the file's boundary names, L2 rate 3),
+// and each mistake a file can hold is refused with its file and line or
+// element.
+GLISSADE_TEST(nurbs_patch_file)
+{
+  const double E = 1000., nu = 0.3, A = 1e-4 / 3., B = 4. * A;
+  const auto   u_r = [&](const double r) {
+    return (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r);
+  };
+  const auto du_r = [&](const double r) {
+    return (1. + nu) / E * ((1. - 2. * nu) * A - B / (r * r));
+  };
+  const auto u = [&](const Point<2> &X) {
+    return u_r(X.norm()) / X.norm() * Tensor<1, 2>(X);
+  };
+  const auto grad = [&](const Point<2> &X) {
+    const double       r = X.norm();
+    const Tensor<1, 2> e_r({X[0] / r, X[1] / r}), e_t({-X[1] / r, X[0] / r});
+    return du_r(r) * outer_product(e_r, e_r) +
+           u_r(r) / r * outer_product(e_t, e_t);
+  };
+  const std::string file  = source_path("prm/meshes/quarter_annulus.nurbs");
+  const auto        scene = [&](const std::string &patch_file,
+                         const unsigned int n,
+                         const unsigned int degree,
+                         const std::string &label) {
+    return nurbs_scene("  set Type = nurbs patch\n  set File = " + patch_file +
+                         "\n  set Subdivisions = " + std::to_string(n) + ", " +
+                         std::to_string(2 * n),
+                       degree,
+                       "small strain",
+                       " set Fixed = start: y; end: x\n"
+                              " set Pressure = inner: 1e-4*t",
+                       label);
+  };
+  std::vector<double> errors;
+  for (const unsigned int n : {4u, 8u})
+    {
+      Simulation simulation(
+        SceneReader::read_string(scene(file, n, 2, "file_" + std::to_string(n)),
+                                 "patch file"));
+      simulation.advance_to(1., "increment 1");
+      errors.push_back(
+        relative_errors(simulation.body("ring"), u, grad, 5).first);
+      std::cout << "  " << n << " x " << 2 * n
+                << " elements: L2 error against Lame " << errors.back()
+                << std::endl;
+    }
+  const double rate = std::log2(errors[0] / errors[1]);
+  std::cout << "  L2 rate " << rate << " (theory 3)" << std::endl;
+  check(errors[1] < 5e-4 && std::abs(rate - 3.) <= 0.3,
+        "the file's ring is not Lame's");
+
+  // Mistakes, each in a copy of the file.
+  std::ifstream     in(file);
+  const std::string good((std::istreambuf_iterator<char>(in)),
+                         std::istreambuf_iterator<char>());
+  std::filesystem::create_directories("output/nurbs_bad_files");
+  const auto bad = [&](const std::string &from, const std::string &to) {
+    std::string text = good;
+    const auto  at   = text.find(from);
+    check(at != std::string::npos, "the file has '" + from + "'");
+    text.replace(at, from.size(), to);
+    const std::string path = "output/nurbs_bad_files/" +
+                             std::to_string(std::hash<std::string>()(to)) +
+                             ".nurbs";
+    std::ofstream(path) << text;
+    return path;
+  };
+  for (const auto &[path, degree, expected] :
+       std::vector<std::tuple<std::string, unsigned int, std::string>>{
+         {bad("knots xi 0 0 0 1 1 1", "knots xi 0 0 0.5 0.2 1 1"),
+          2,
+          "knots xi: knot 4 is below the one before it"},
+         {bad("knots eta 0 0 0 1 1 1", "knots eta 0 0 1 1 1 1"),
+          2,
+          "repeated degree + 1 = 3 times"},
+         {bad("2   2   0.7071067811865476", "2 2 -0.5"),
+          2,
+          "line 16: control point 6: the weight must be positive"},
+         {bad("control points 3 3", "control points 4 3"),
+          2,
+          "control point 10: expected 'x y w'"},
+         {bad("knots xi 0 0 0 1 1 1", "knots xi 0 0 0 0.5 1 1 1"),
+          2,
+          "control points: 3 along xi, where its 7 knots and degree 2 make "
+          "4 functions"},
+         {bad("boundary inner xi0", "boundary inner xi2"),
+          2,
+          "side 'xi2' is none of xi0, xi1, eta0, eta1"},
+         {bad("degrees 2 2", "degree 2 2"), 2, "'degree' is not one of"},
+         {bad("1   0   1\n1.5 0   1\n2   0   1",
+              "2   0   1\n1.5 0   1\n1   0   1"),
+          2,
+          "the patch is inverted or folded in its element (0, 0)"},
+         {file, 3, "Element/Degree: is 3, but the patch of"}})
+    {
+      std::string message = "accepted";
+      try
+        {
+          Simulation simulation(
+            SceneReader::read_string(scene(path, 1, degree, "bad_file"),
+                                     "patch file"));
+        }
+      catch (const InputError &e)
+        {
+          message = e.what();
+        }
+      std::cout << "  " << message << std::endl;
+      check(message.find(expected) != std::string::npos,
+            "expected a message with '" + expected + "'");
+    }
+}
+
+// prm/nurbs_ring.prm, as its header says: u_r at r = 1 and 2 within 1e-6
+// of Lame's on 8 x 4 elements of degree 3, and the supports' balance: the
+// 'start' side carries the pressure's resultant on the quarter, p a.
+GLISSADE_TEST(nurbs_ring_scene)
+{
+  Simulation simulation(
+    SceneReader::read_file(source_path("prm/nurbs_ring.prm"),
+                           {"Output/Directory=output/nurbs_ring_scene",
+                            "Output/Progress=false",
+                            "Output/Plots=false"}));
+  simulation.advance_to(1., "increment 1");
+  const Body  &ring = simulation.body("ring");
+  const double E = 1000., nu = 0.3, A = 1e-4 / 3., B = 4. * A;
+  for (const double r : {1., 2.})
+    check_relative(vertex_displacement(ring, Point<2>(r, 0.))[0],
+                   (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r),
+                   1e-6,
+                   "u_r(" + std::to_string(r) + ")");
+  check_relative(support_reaction(ring, "start")[1],
+                 -1e-4,
+                 1e-10,
+                 "the reaction of 'start'");
 }

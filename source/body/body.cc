@@ -315,11 +315,12 @@ namespace glissade
     const std::string space = "Element/Space = " + element_space->name();
     const auto       &type  = MeshFactory::type(description.mesh.type);
     if (!type.exact_patch)
-      throw InputError(where + "/Mesh/Type",
-                       space +
-                         " needs a mesh type with an exact geometry "
-                         "(rectangle, square, half ring or ring); a " +
-                         description.mesh.type + " mesh has none");
+      throw InputError(
+        where + "/Mesh/Type",
+        space +
+          " needs a mesh type with an exact geometry "
+          "(rectangle, square, half ring, ring or nurbs patch); a " +
+          description.mesh.type + " mesh has none");
     if (processes::shared_out())
       throw InputError(where + "/Element/Space",
                        space +
@@ -331,7 +332,7 @@ namespace glissade
                        "is not built for " + space +
                          " (its dofs are control points, not nodes)");
     NurbsPatch patch =
-      type.exact_patch(description.mesh, description.element_degree);
+      type.exact_patch(description.mesh, description.element_degree, where);
     // (a distorted NURBS body: its control points off the boundary moved,
     // and the mesh's vertices put on the patch's knot points after)
     if (description.mesh.distortion > 0.)

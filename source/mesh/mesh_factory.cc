@@ -45,8 +45,10 @@ namespace glissade
       {
         check_mesh_is_conforming(triangulation, where);
         // (after the checks, whose messages number the cells as the file
-        // does; a file's order would share the mesh out poorly)
-        order_cells_along_hilbert_curve(triangulation);
+        // does; a file's order would share the mesh out poorly. A patch
+        // keeps its elements' order, which a NURBS space reads.)
+        if (!type(description.type).exact_patch)
+          order_cells_along_hilbert_curve(triangulation);
       }
     return labels;
   }

@@ -11,6 +11,7 @@
 #include <glissade/base/text.h>
 #include <glissade/mesh/gmsh_reader.h>
 #include <glissade/mesh/mesh_factory.h>
+#include <glissade/mesh/nurbs_patch_file.h>
 
 #include <any>
 #include <cmath>
@@ -245,6 +246,17 @@ namespace glissade
                                  description.subdivisions[1],
                                  description.subdivisions[0]);
     }
+
+
+    /** A patch file's patch, its elements split as Subdivisions asks. */
+    NurbsPatchFile
+    patch_of_file(const MeshDescription &description, const std::string &where)
+    {
+      NurbsPatchFile file =
+        NurbsPatchFile::read(description.file, where + "/Mesh/File");
+      file.refine({{description.subdivisions[0], description.subdivisions[1]}});
+      return file;
+    }
   } // namespace
 
 
@@ -284,7 +296,9 @@ namespace glissade
            create_rectangle(shape.corner_1, shape.corner_2, d, t);
          return labels;
        },
-       [](const MeshDescription &d, const unsigned int degree) {
+       [](const MeshDescription &d,
+          const unsigned int     degree,
+          const std::string &) {
          const auto &shape = std::any_cast<const RectangleShape &>(d.shape);
          return NurbsPatch::rectangle(shape.corner_1,
                                       shape.corner_2,
@@ -316,7 +330,9 @@ namespace glissade
            create_rectangle(shape.center - half, shape.center + half, d, t);
          return labels;
        },
-       [](const MeshDescription &d, const unsigned int degree) {
+       [](const MeshDescription &d,
+          const unsigned int     degree,
+          const std::string &) {
          const auto        &shape = std::any_cast<const SquareShape &>(d.shape);
          const Tensor<1, 2> half({shape.side / 2, shape.side / 2});
          return NurbsPatch::rectangle(shape.center - half,
@@ -340,9 +356,9 @@ namespace glissade
            create_ring(d, std::any_cast<const RingShape &>(d.shape), false, t);
          return labels;
        },
-       [](const MeshDescription &d, const unsigned int degree) {
-         return ring_patch(d, false, degree);
-       }},
+       [](const MeshDescription &d,
+          const unsigned int     degree,
+          const std::string &) { return ring_patch(d, false, degree); }},
       {"ring",
        "the same closed, boundaries inner and outer",
        false,
@@ -361,8 +377,47 @@ namespace glissade
            create_ring(d, std::any_cast<const RingShape &>(d.shape), true, t);
          return labels;
        },
-       [](const MeshDescription &d, const unsigned int degree) {
-         return ring_patch(d, true, degree);
+       [](const MeshDescription &d,
+          const unsigned int     degree,
+          const std::string &) { return ring_patch(d, true, degree); }},
+      {"nurbs patch",
+       "the NURBS patch of the file File (doc/user_guide.md, NURBS patch "
+       "files), one cell per element, each split into Subdivisions (along "
+       "xi, eta) by knot insertion; boundaries xi0, xi1, eta0, eta1 or the "
+       "file's names",
+       true,
+       [](ParameterHandler &) {},
+       [](const ParameterHandler &prm, const std::string &where) -> std::any {
+         refuse_angles(prm, "nurbs patch", where);
+         return {};
+       },
+       [](const MeshDescription &d, const std::string &where) {
+         if (d.file.empty())
+           throw InputError(where + "/Mesh/File",
+                            "nurbs patch meshes need a File");
+       },
+       [](const MeshDescription &d,
+          Triangulation<2>      &t,
+          const std::string     &where) {
+         MeshLabels labels;
+         labels.boundaries = patch_of_file(d, where).create_mesh(t);
+         return labels;
+       },
+       [](const MeshDescription &d,
+          const unsigned int     degree,
+          const std::string     &where) {
+         const NurbsPatchFile file = patch_of_file(d, where);
+         if (file.patch.xi.degree() != degree ||
+             file.patch.eta.degree() != degree)
+           throw InputError(where + "/Element/Degree",
+                            "is " + std::to_string(degree) +
+                              ", but the patch of '" + d.file +
+                              "' is of degrees " +
+                              std::to_string(file.patch.xi.degree()) + ", " +
+                              std::to_string(file.patch.eta.degree()) +
+                              " (a NURBS body takes its file's degree, the "
+                              "same in both directions)");
+         return file.patch;
        }},
       {"gmsh",
        "the .msh file File, whose named physical lines become boundaries",

@@ -71,7 +71,9 @@ namespace glissade
        * isogeometric body, Element/Space = nurbs); empty for a type that
        * has none (a Gmsh file).
        */
-      std::function<NurbsPatch(const MeshDescription &, unsigned int degree)>
+      std::function<NurbsPatch(const MeshDescription &,
+                               unsigned int       degree,
+                               const std::string &where)>
         exact_patch;
     };
 

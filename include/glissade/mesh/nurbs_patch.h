@@ -192,19 +192,22 @@ namespace glissade
     void
     distort(const double factor);
 
+    /** Inserts u in xi (direction 0) or eta (1), the surface unchanged. */
+    void
+    insert_knot(const unsigned int direction, const double u);
+
+    /** The patch from its bases and homogeneous points (w X, w Y, w),
+     *  index a + n_xi b. */
+    static NurbsPatch
+    from_homogeneous(const BSplineBasis                       &xi,
+                     const BSplineBasis                       &eta,
+                     const std::vector<std::array<double, 3>> &control);
+
   private:
     /** Homogeneous control points (w X, w Y, w), index a + n_xi b. */
     using Homogeneous = std::vector<std::array<double, 3>>;
 
-    static NurbsPatch
-    from_homogeneous(const BSplineBasis &xi,
-                     const BSplineBasis &eta,
-                     const Homogeneous  &control);
     Homogeneous
     homogeneous() const;
-
-    /** Inserts u in xi (direction 0) or eta (1), the surface unchanged. */
-    void
-    insert_knot(const unsigned int direction, const double u);
   };
 } // namespace glissade
