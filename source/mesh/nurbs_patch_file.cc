@@ -67,6 +67,28 @@ namespace glissade
                              " times (an open knot vector)");
       if (!(knots.back() > knots.front()))
         throw InputError(where, what + "the knots span no parameter range");
+      // (a knot repeated more than p times inside would cut the patch in
+      // two: its functions would not be continuous)
+      for (unsigned int k = degree + 1, run = 1; k + degree + 1 < knots.size();
+           ++k)
+        {
+          if (knots[k] == knots.front() || knots[k] == knots.back())
+            throw InputError(where,
+                             what +
+                               "an end knot is repeated more than "
+                               "degree + 1 = " +
+                               std::to_string(degree + 1) + " times");
+          run = knots[k] == knots[k - 1] ? run + 1 : 1;
+          if (run > degree)
+            {
+              std::ostringstream message;
+              message << what << "the inner knot " << knots[k]
+                      << " is repeated " << run
+                      << " times, more than the degree: the patch would not "
+                         "be continuous there";
+              throw InputError(where, message.str());
+            }
+        }
     }
   } // namespace
 
