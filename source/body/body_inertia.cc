@@ -65,19 +65,17 @@ namespace glissade
     , contact_dofs(massless.begin(), massless.end())
   {
     const ElementSpace &space = body.space();
-    if (!space.capabilities().dofs_are_nodal_values)
-      throw InputError(where + "/Element/Space",
-                       "body '" + body.name() + "' uses " + space.name() +
-                         ", which is quasi-static for now: its mass over "
-                         "control points and their velocities are not "
-                         "built (Time integration/Scheme = quasi-static)");
-    if (space.components_per_displacement() != 1 && settings.lumped_mass)
+    const bool          nodal = space.capabilities().dofs_are_nodal_values;
+    if ((space.components_per_displacement() != 1 || !nodal) &&
+        settings.lumped_mass)
       throw InputError(where + "/Material",
                        "Time integration/Mass = lumped is for nodal element "
                        "spaces; body '" +
                          body.name() + "' uses " + space.name() +
-                         ", whose derivative dofs have no lumped mass: use "
-                         "Mass = consistent");
+                         (nodal ? ", whose derivative dofs have no lumped "
+                                  "mass" :
+                                  ", whose dofs are control points") +
+                         ": use Mass = consistent");
     const Hypothesis         &hypothesis = body.hypothesis();
     auto                      evaluator  = space.create_evaluator();
     const unsigned int        n          = evaluator->dofs_per_cell();
@@ -87,7 +85,7 @@ namespace glissade
     // (a Hermite body keeps its mass where it touches: its derivative dofs
     // would need their own redistribution, not derived here)
     const bool redistribute = settings.redistribute_contact_mass &&
-                              space.components_per_displacement() == 1;
+                              space.components_per_displacement() == 1 && nodal;
 
     // (on a mesh shared out over the processes, the masses of this
     // process's cells; apply_mass sums the processes' products)
@@ -99,8 +97,7 @@ namespace glissade
         if (shared_out && !body.is_own_cell(cell))
           continue;
         const unsigned int index = cell->active_cell_index();
-        cell_dofs[index].resize(n);
-        cell->get_dof_indices(cell_dofs[index]);
+        space.cell_dof_indices(cell, cell_dofs[index]);
         const double rho =
           body.materials().density_of_cell(cell->material_id());
         FullMatrix<double> &m = cell_mass[index];
@@ -175,13 +172,18 @@ namespace glissade
     const FiniteElement<2> &fe      = body.dof_handler().get_fe();
     for (unsigned int c = 0; c < 2; ++c)
       translation[c].reinit(body.n_dofs());
-    for (unsigned int k = 0; k < cell_dofs.size(); ++k)
-      for (unsigned int i = 0; i < cell_dofs[k].size(); ++i)
-        {
-          const unsigned int system = fe.system_to_component_index(i).first;
-          if (system % per_dim == 0)
-            translation[system / per_dim](cell_dofs[k][i]) = 1.;
-        }
+    // (a space whose dofs are not nodal values: each of its dofs, whose
+    // functions sum to one)
+    for (const auto &point : space.interpolation_points())
+      translation[point.component](point.dof) = 1.;
+    if (nodal)
+      for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+        for (unsigned int i = 0; i < cell_dofs[k].size(); ++i)
+          {
+            const unsigned int system = fe.system_to_component_index(i).first;
+            if (system % per_dim == 0)
+              translation[system / per_dim](cell_dofs[k][i]) = 1.;
+          }
     // (each process has set the value dofs of its own cells)
     if (shared_out)
       for (auto &t : translation)
@@ -253,7 +255,16 @@ namespace glissade
     // derivative dof the field's derivative there (by a central
     // difference, exact for the linear fields of rigid motions and uniform
     // velocities).
-    Vector<double>                              values(body.n_dofs());
+    Vector<double> values(body.n_dofs());
+    // (a space whose dofs are not nodal values says where each takes the
+    // field)
+    const auto points = body.space().interpolation_points();
+    if (!points.empty())
+      {
+        for (const auto &point : points)
+          values(point.dof) = field(point.point, point.component);
+        return values;
+      }
     std::map<types::global_dof_index, Point<2>> support;
     DoFTools::map_dofs_to_support_points(body.space().mapping(),
                                          body.dof_handler(),
@@ -338,10 +349,22 @@ namespace glissade
       }
     mass_constraints.close();
     DynamicSparsityPattern pattern(body.n_dofs());
-    DoFTools::make_sparsity_pattern(body.dof_handler(),
-                                    pattern,
-                                    mass_constraints,
-                                    false);
+    if (body.space().capabilities().dofs_are_nodal_values)
+      DoFTools::make_sparsity_pattern(body.dof_handler(),
+                                      pattern,
+                                      mass_constraints,
+                                      false);
+    else
+      // (the functions of a cell reach beyond it: its dofs as the space
+      // gives them, and the numbering's spare dofs' diagonal)
+      {
+        for (const auto &dofs_of_cell : cell_dofs)
+          mass_constraints.add_entries_local_to_global(dofs_of_cell,
+                                                       pattern,
+                                                       false);
+        for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
+          pattern.add(i, i);
+      }
     sparsity.copy_from(pattern);
     M.reinit(sparsity);
     for (unsigned int c = 0; c < cell_dofs.size(); ++c)
@@ -366,6 +389,12 @@ namespace glissade
             M.set(i, i, 1.);
           without_mass[i] = true;
         }
+    // (the numbering's spare dofs of a space that is not nodal: no cell
+    // has them, so their constrained rows are empty)
+    if (!body.space().capabilities().dofs_are_nodal_values)
+      for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
+        if (mass_constraints.is_constrained(i) && diagonal[i] == 0.)
+          M.set(i, i, 1.);
 
     // A scheme whose predictor takes the acceleration (Newmark's family),
     // with contact dofs that carry mass (Contact mass = kept, or a Hermite

@@ -497,6 +497,25 @@ namespace glissade
 
 
 
+  std::vector<ElementSpace::InterpolationPoint>
+  NurbsSpace::interpolation_points() const
+  {
+    std::vector<InterpolationPoint> points;
+    for (unsigned int b = 0; b < geometry.n_eta(); ++b)
+      for (unsigned int a = 0; a < geometry.n_xi(); ++a)
+        {
+          const unsigned int A = geometry.unique_control(a, b);
+          // (a closed patch's seam column once)
+          if (A != a + geometry.n_xi() * b)
+            continue;
+          for (unsigned int c = 0; c < 2; ++c)
+            points.push_back({control_dofs[A][c], c, geometry.points[A]});
+        }
+    return points;
+  }
+
+
+
   unsigned int
   NurbsSpace::n_unknowns(const DoFHandler<2> &) const
   {

@@ -129,6 +129,25 @@ namespace glissade
                  const dealii::Vector<double> &coefficients,
                  dealii::Vector<double>       &nodal) const;
 
+    /**
+     * A space whose dofs are not nodal values: each dof, its displacement
+     * component and the point whose field value it takes when a field (an
+     * initial velocity, a rigid motion) is interpolated. Empty (the
+     * default) for a nodal space, which is interpolated at its support
+     * points.
+     */
+    struct InterpolationPoint
+    {
+      dealii::types::global_dof_index dof;
+      unsigned int                    component;
+      dealii::Point<2>                point;
+    };
+    virtual std::vector<InterpolationPoint>
+    interpolation_points() const
+    {
+      return {};
+    }
+
     /** The number of unknowns (the dofs less those set to zero for
      *  numbering only). */
     virtual unsigned int

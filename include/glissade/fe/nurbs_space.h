@@ -106,6 +106,11 @@ namespace glissade
     unsigned int
     n_unknowns(const dealii::DoFHandler<2> &dof_handler) const override;
 
+    /** Each control point's dofs at the control point: exact for affine
+     *  fields (the space is isoparametric), a quasi-interpolant of others. */
+    std::vector<InterpolationPoint>
+    interpolation_points() const override;
+
     /** The patch (after use_patch). */
     const NurbsPatch &
     patch() const
