@@ -382,9 +382,11 @@ GLISSADE_TEST(nurbs_input_errors)
           "does not have; name a boundary"},
          {with("set Fixed = start: y; end: x", "set Fixed = start: y"),
           "leave 1 rigid motion(s) free"},
-         {with("set Hypothesis = plane strain",
-               "set Hypothesis = axisymmetric"),
-          "its dofs are control points"}})
+         {with("subsection Newton",
+               "subsection Time integration\n set Scheme = newmark\n"
+               " set Mass = lumped\nend\nsubsection Newton")
+            .replace(ring.find("set Young modulus"), 0, "set Density = 1\n  "),
+          "whose dofs are control points: use Mass = consistent"}})
     {
       const std::string message = refusal(scene);
       std::cout << "  " << message << std::endl;

@@ -71,14 +71,24 @@ namespace glissade
                         const ElementSpace  &space,
                         const double         reference_size)
     {
+      const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
+      std::vector<types::global_dof_index> on_axis;
+      // (a space whose dofs are not nodal values: the x dofs of its
+      // control points on the axis, which make the trace of u_r there zero)
+      const auto points = space.interpolation_points();
+      if (!points.empty())
+        {
+          for (const auto &point : points)
+            if (point.component == 0 && std::abs(point.point[0]) <= tolerance)
+              on_axis.push_back(point.dof);
+          return on_axis;
+        }
       // The x dofs whose support point lies on x = 0 (every space but
       // Hermite's has one value dof per node and component).
       std::map<types::global_dof_index, Point<2>> support_points;
       DoFTools::map_dofs_to_support_points(space.mapping(),
                                            dofs,
                                            support_points);
-      const double tolerance = 1e-12 * std::max(reference_size, 1e-300);
-      std::vector<types::global_dof_index> on_axis;
       const FiniteElement<2>              &fe = dofs.get_fe();
       std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
       std::set<types::global_dof_index>    radial;

@@ -210,9 +210,6 @@ namespace glissade
   NurbsSpace::capabilities() const
   {
     Capabilities c;
-    c.not_axisymmetric_because =
-      "its dofs are control points, not the nodes on the axis whose radial "
-      "displacement a body of revolution holds (not built yet)";
     c.dofs_are_nodal_values = false;
     c.needs_exact_patch     = true;
     return c;
