@@ -409,26 +409,22 @@ namespace glissade
             evaluator.reinit(cell, f);
             for (unsigned int q = 0; q < evaluator.n_quadrature_points(); ++q)
               {
-                // (values by position in the trace; the mass is made once
-                // every position is known)
                 Trace::Point point{evaluator.quadrature_point(q),
                                    evaluator.JxW(q),
-                                   std::vector<double>(t.controls.size(), 0.)};
+                                   {}};
                 for (unsigned int m = 0; m < local.size(); ++m)
-                  point.values[position[face_controls[m]]] =
-                    evaluator.shape_value(2 * local[m], q);
+                  point.values.emplace_back(position[face_controls[m]],
+                                            evaluator.shape_value(2 * local[m],
+                                                                  q));
                 t.points.push_back(std::move(point));
               }
           }
     const unsigned int n = t.controls.size();
     FullMatrix<double> mass(n, n);
-    for (auto &point : t.points)
-      {
-        point.values.resize(n, 0.);
-        for (unsigned int a = 0; a < n; ++a)
-          for (unsigned int b = 0; b < n; ++b)
-            mass(a, b) += point.values[a] * point.values[b] * point.weight;
-      }
+    for (const auto &point : t.points)
+      for (const auto &[a, value_a] : point.values)
+        for (const auto &[b, value_b] : point.values)
+          mass(a, b) += value_a * value_b * point.weight;
     if (n > 0)
       mass.gauss_jordan();
     t.inverse_mass          = mass;
@@ -454,8 +450,8 @@ namespace glissade
           for (const auto &point : t.points)
             {
               const double value = g.value(point.X, c) * point.weight;
-              for (unsigned int a = 0; a < n; ++a)
-                moments[a] += value * point.values[a];
+              for (const auto &[a, value_a] : point.values)
+                moments[a] += value * value_a;
             }
           t.inverse_mass.vmult(coefficients, moments);
           for (unsigned int a = 0; a < n; ++a)

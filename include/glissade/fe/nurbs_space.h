@@ -155,9 +155,10 @@ namespace glissade
        *  ds-weight, the traced controls' values). */
       struct Point
       {
-        dealii::Point<2>    X;
-        double              weight;
-        std::vector<double> values;
+        dealii::Point<2> X;
+        double           weight;
+        /** (position in `controls`, value) of the face's p + 1 functions */
+        std::vector<std::pair<unsigned int, double>> values;
       };
       std::vector<Point> points;
     };
