@@ -457,20 +457,13 @@ GLISSADE_TEST(dynamics_blade_first_bending_frequency)
                "Load program/Stage increments=420"}));
   const Body          &blade = simulation.body("blade");
   const auto           tip   = vertex_value_dofs(blade, Point<2>(0., 300.));
-  double               previous_t = 0., previous_u = 0.;
-  std::vector<double>  crossings;
+  ZeroCrossings        crossings;
   simulation.on_increment = [&](unsigned int, double t) {
-    const double u = blade.displacement()(tip[0]);
-    if (t > 0. && (previous_u < 0.) != (u < 0.))
-      crossings.push_back(previous_t +
-                          (t - previous_t) * previous_u / (previous_u - u));
-    previous_t = t;
-    previous_u = u;
+    crossings.record(t, blade.displacement()(tip[0]));
   };
   simulation.run();
-  check(crossings.size() >= 20, "the tip did not swing ten times");
-  const double measured =
-    M_PI * (crossings.size() - 1) / (crossings.back() - crossings.front());
+  check(crossings.times.size() >= 20, "the tip did not swing ten times");
+  const double measured = crossings.angular_frequency();
   std::cout << std::setprecision(6) << "  first bending frequency " << measured
             << " rad/s, Euler-Bernoulli " << omega_1 << " rad/s, ratio "
             << measured / omega_1 << std::endl;

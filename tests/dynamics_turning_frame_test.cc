@@ -124,7 +124,7 @@ namespace
     const std::string b      = "1.8751*(y-50)/100";
     const std::string mode   = "40*(cosh(" + b + ")-cos(" + b +
                              ")-0.7341*(sinh(" + b + ")-sin(" + b + ")))";
-    const std::string   scene = R"(
+    const std::string scene = R"(
 subsection Scene
   set Bodies = blade
 end
@@ -157,33 +157,28 @@ subsection Output
   set Progress     = false
 end
 )";
-    Simulation          simulation(SceneReader::read_string(
+    Simulation        simulation(SceneReader::read_string(
       scene,
       "spun_blade.prm",
       {"Output/Directory=dynamics_turning_blade_" + std::to_string(int(Omega)) +
-                  (coriolis ? "_coriolis" : ""),
-                "Body blade/Initial velocity=" + mode + ", 0",
-                "Body blade/Turning frame/Angular velocity=" + std::to_string(Omega),
-                std::string("Body blade/Turning frame/Coriolis=") +
-                  (coriolis ? "true" : "false"),
-                "Load program/Stage end times=" + std::to_string(9.5 * period),
-                "Load program/Stage increments=380"}));
-    const Body         &blade = simulation.body("blade");
-    const auto          tip   = vertex_value_dofs(blade, Point<2>(0., 150.));
-    double              previous_t = 0., previous_u = 0.;
-    std::vector<double> crossings;
+                (coriolis ? "_coriolis" : ""),
+              "Body blade/Initial velocity=" + mode + ", 0",
+              "Body blade/Turning frame/Angular velocity=" + std::to_string(Omega),
+              std::string("Body blade/Turning frame/Coriolis=") +
+                (coriolis ? "true" : "false"),
+              "Load program/Stage end times=" + std::to_string(9.5 * period),
+              "Load program/Stage increments=380"}));
+    const Body       &blade = simulation.body("blade");
+    const auto        tip   = vertex_value_dofs(blade, Point<2>(0., 150.));
+    // (from the first period on)
+    ZeroCrossings crossings;
+    crossings.from          = period;
     simulation.on_increment = [&](unsigned int, double t) {
-      const double u = blade.displacement()(tip[0]);
-      if (t > period && (previous_u < 0.) != (u < 0.))
-        crossings.push_back(previous_t +
-                            (t - previous_t) * previous_u / (previous_u - u));
-      previous_t = t;
-      previous_u = u;
+      crossings.record(t, blade.displacement()(tip[0]));
     };
     simulation.run();
-    check(crossings.size() >= 16, "the tip did not swing eight times");
-    return M_PI * (crossings.size() - 1) /
-           (crossings.back() - crossings.front());
+    check(crossings.times.size() >= 16, "the tip did not swing eight times");
+    return crossings.angular_frequency();
   }
 } // namespace
 

@@ -578,28 +578,22 @@ GLISSADE_TEST(nurbs_blade_first_bending_frequency)
         "subsection Output\n set Progress = false\n set Plots = false\n"
         " set VTU interval = 0\n set Directory = output/nurbs_blade_" +
         scheme + std::to_string(degree) + "\n set History = energies()\nend\n";
-      Simulation  simulation(SceneReader::read_string(scene, "blade"));
-      const Body &blade = simulation.body("blade");
-      const auto  tip   = vertex_value_dofs(blade, Point<2>(0., 300.));
-      double previous_t = 0., previous_u = 0., energy_0 = 0., energy_drift = 0.;
-      std::vector<double> crossings;
+      Simulation    simulation(SceneReader::read_string(scene, "blade"));
+      const Body   &blade    = simulation.body("blade");
+      const auto    tip      = vertex_value_dofs(blade, Point<2>(0., 300.));
+      double        energy_0 = 0., energy_drift = 0.;
+      ZeroCrossings crossings;
       simulation.on_increment = [&](unsigned int, double t) {
-        const double u = blade.nodal_displacement()(tip[0]);
         const double energy =
           blade.inertia()->kinetic_energy() + strain_energy(blade);
         if (t == 0. || energy_0 == 0.)
           energy_0 = energy;
         energy_drift = std::max(energy_drift, std::abs(energy - energy_0));
-        if (t > 0. && (previous_u < 0.) != (u < 0.))
-          crossings.push_back(previous_t +
-                              (t - previous_t) * previous_u / (previous_u - u));
-        previous_t = t;
-        previous_u = u;
+        crossings.record(t, blade.nodal_displacement()(tip[0]));
       };
       simulation.run();
-      check(crossings.size() >= 20, "the tip did not swing ten times");
-      const double measured =
-        M_PI * (crossings.size() - 1) / (crossings.back() - crossings.front());
+      check(crossings.times.size() >= 20, "the tip did not swing ten times");
+      const double measured = crossings.angular_frequency();
       std::cout << "  " << scheme << ", degree " << degree
                 << ": first bending frequency " << measured
                 << " rad/s, Euler-Bernoulli " << mode.omega_1

@@ -89,6 +89,34 @@ namespace glissade_tests
   }
 
   /**
+   * The times a sampled signal crosses zero (linear interpolation between
+   * samples), and the angular frequency they give: pi per half period.
+   * record() each sample; samples up to `from` are only remembered.
+   */
+  struct ZeroCrossings
+  {
+    double              from       = 0.;
+    double              previous_t = 0., previous_u = 0.;
+    std::vector<double> times;
+
+    void
+    record(const double t, const double u)
+    {
+      if (t > from && (previous_u < 0.) != (u < 0.))
+        times.push_back(previous_t +
+                        (t - previous_t) * previous_u / (previous_u - u));
+      previous_t = t;
+      previous_u = u;
+    }
+
+    double
+    angular_frequency() const
+    {
+      return M_PI * (times.size() - 1) / (times.back() - times.front());
+    }
+  };
+
+  /**
    * The override that gives a run an output directory of its own, named
    * from `prefix` and `label`: ctest runs tests side by side in one folder,
    * and two runs may not share one.
