@@ -125,13 +125,6 @@ namespace glissade
       return spans[active_cell_index];
     }
 
-    /** The dof of control point A's displacement component c. */
-    dealii::types::global_dof_index
-    control_dof(const unsigned int control, const unsigned int c) const
-    {
-      return control_dofs[control][c];
-    }
-
   private:
     unsigned int           degree;
     dealii::FESystem<2>    numbering;
