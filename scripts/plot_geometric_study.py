@@ -15,7 +15,8 @@ rows = list(csv.DictReader(open(f"{directory}/geometric_study.csv")))
 methods = list(dict.fromkeys(r["method"] for r in rows))
 counts = sorted({int(r["n_e"]) for r in rows})
 titles = {"q4": "Q4", "q8": "Q8", "q12": "Q12", "bspline": "Q4 + B-spline",
-          "hermite": "Hermite"}
+          "hermite": "Hermite", "nurbs2": "NURBS p = 2 (exact)",
+          "nurbs3": "NURBS p = 3 (exact)"}
 
 for column, label, name in [
         ("gap_error_percent", "gap error g (% of R)", "fig13_gap_error.png"),

@@ -83,6 +83,9 @@ namespace
     else
       {
         const bool hermite = kind == "hermite";
+        // nurbs, nurbs3: the master a NURBS body of degree 2 or 3, its
+        // exact boundary the surface.
+        const bool nurbs = kind.rfind("nurbs", 0) == 0;
         text += "subsection Scene\n set Bodies = upper, lower\n"
                 " set Contact pairs = interface\nend\n";
         // (the lower block held, so that no motion of the pair is free)
@@ -90,7 +93,10 @@ namespace
                       "0, 0",
                       "1, 0.5",
                       "4, 2",
-                      hermite ? "hermite" : "q1",
+                      hermite ? "hermite" :
+                      nurbs   ? "nurbs\n  set Degree = " +
+                                std::string(kind == "nurbs3" ? "3" : "2") :
+                              "q1",
                       "left: x; bottom: y");
         contact += " set Master body = lower\n set Master boundary = top\n";
         // bspline_segment and bspline_spline: the B-spline master with
@@ -111,6 +117,8 @@ namespace
           contact += " set Surface = hermite\n";
         else if (master == "mortar")
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
+        else if (nurbs)
+          contact += " set Surface = nurbs\n";
         else
           contact += " set Surface = " + master + "\n";
       }
@@ -341,6 +349,11 @@ CONTACT_TANGENT_TEST(bspline_spline, slip)
 CONTACT_TANGENT_TEST(hermite, frictionless)
 CONTACT_TANGENT_TEST(hermite, stick)
 CONTACT_TANGENT_TEST(hermite, slip)
+CONTACT_TANGENT_TEST(nurbs, frictionless)
+CONTACT_TANGENT_TEST(nurbs, stick)
+CONTACT_TANGENT_TEST(nurbs, slip)
+CONTACT_TANGENT_TEST(nurbs3, frictionless)
+CONTACT_TANGENT_TEST(nurbs3, slip)
 CONTACT_TANGENT_TEST(mortar, frictionless)
 CONTACT_TANGENT_TEST(mortar, stick)
 CONTACT_TANGENT_TEST(mortar, slip)

@@ -182,3 +182,25 @@ GLISSADE_TEST(surface_lagrange_edge_curve)
       check(inside, "the curve leaves its bounding box");
     }
 }
+
+// The NURBS row: the isogeometric half ring's outer side is the circle
+// itself (rational weights), so its gap and normal errors are round-off at
+// every n_e, and its normal does not jump at theta = pi/2 (C^(p-1) inside
+// the patch).
+GLISSADE_TEST(geometric_study_nurbs_exact)
+{
+  for (const std::string method : {"nurbs2", "nurbs3"})
+    for (const unsigned int n_e : paper_counts)
+      {
+        const auto   samples = GeometricStudy::evaluate(method, n_e, 41);
+        const double gap     = GeometricStudy::max_gap_error_percent(samples);
+        const double normal = GeometricStudy::max_normal_error_degrees(samples);
+        const double jump =
+          std::abs(GeometricStudy::normal_jump_degrees(samples));
+        std::cout << "  " << method << ", n_e = " << n_e << ": max |g| " << gap
+                  << " %, max |dtheta| " << normal << " degrees, jump " << jump
+                  << std::endl;
+        expect(gap <= 1e-12 && normal <= 1e-10 && jump <= 1e-10,
+               method + " at round-off, n_e = " + std::to_string(n_e));
+      }
+}

@@ -36,28 +36,49 @@ namespace glissade
     // Node-to-segment contact works on the vertices of the contact
     // boundaries (and, for Hermite masters, their derivatives). Elements
     // with nodes along their edges (q2, q3, q8, q12) would have those nodes
-    // left out of contact: refused rather than answered wrongly.
+    // left out of contact: refused rather than answered wrongly. A body of
+    // NURBS elements, whose dofs are control points, is a master through
+    // its exact boundary (Surface = nurbs).
+    const bool nurbs_master =
+      master != nullptr &&
+      !master->space().capabilities().dofs_are_nodal_values;
+    if (!slave.space().capabilities().dofs_are_nodal_values)
+      throw InputError(entry + "/Slave body",
+                       "body '" + slave.name() + "' uses the element space '" +
+                         slave.space().name() +
+                         "', whose dofs are control points, not nodes: an "
+                         "isogeometric body can be the master of a pair "
+                         "(Surface = nurbs), not yet its slave (its "
+                         "boundary's points as slave points is not built); "
+                         "slave bodies must use q1 or hermite");
+    if (nurbs_master && description.surface != "nurbs")
+      throw InputError(entry + "/Surface",
+                       "the master body '" + master->name() +
+                         "' uses the element space '" + master->space().name() +
+                         "', whose dofs are control points: its boundary's "
+                         "vertices carry no displacement of their own, so "
+                         "a " +
+                         description.surface +
+                         " surface through them cannot be built; use "
+                         "Surface = nurbs, its exact boundary");
+    if (nurbs_master && description.discretisation != "node-to-segment")
+      throw InputError(entry + "/Discretisation",
+                       "mortar contact on a NURBS master (body '" +
+                         master->name() +
+                         "') is not built yet: use node-to-segment");
     for (const auto &[body, role] :
          {std::pair<const Body *, const char *>{&slave, "/Slave body"},
           std::pair<const Body *, const char *>{master, "/Master body"}})
       if (body != nullptr &&
-          !body->space().capabilities().dofs_are_nodal_values)
-        throw InputError(entry + role,
-                         "body '" + body->name() +
-                           "' uses the element space '" + body->space().name() +
-                           "', whose dofs are control points, not nodes: "
-                           "contact on an isogeometric body (its exact "
-                           "boundary as the master, its boundary's points "
-                           "as slaves) is not built yet; contact bodies "
-                           "must use q1 or hermite");
-      else if (body != nullptr &&
-               body->space().finite_element().n_dofs_per_line() > 0)
+          body->space().capabilities().dofs_are_nodal_values &&
+          body->space().finite_element().n_dofs_per_line() > 0)
         throw InputError(entry + role,
                          "body '" + body->name() +
                            "' uses the element space '" + body->space().name() +
                            "', whose nodes along the element edges "
                            "node-to-segment contact would leave out; contact "
-                           "bodies must use q1 or hermite");
+                           "bodies must use q1 or hermite (or nurbs as a "
+                           "master)");
 
     // The slave nodes: the vertices of the declared contact area, one or
     // several boundaries ("bottom, left, right"); a vertex where two of

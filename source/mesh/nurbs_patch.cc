@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <glissade/mesh/bspline_functions.h>
 #include <glissade/mesh/nurbs_patch.h>
 
 #include <algorithm>
@@ -54,75 +55,13 @@ namespace glissade
                          std::vector<double> &first_derivatives,
                          std::vector<double> &second_derivatives) const
   {
-    // Piegl & Tiller's A2.3: the triangle ndu of the functions of every
-    // degree up to p and the knot differences, then the derivatives from
-    // it.
-    const unsigned int               i = span_knot[span];
-    const std::vector<double>       &U = knot_vector;
-    std::vector<std::vector<double>> ndu(p + 1, std::vector<double>(p + 1, 0.));
-    std::vector<double>              left(p + 1), right(p + 1);
-    std::array<std::vector<double>, 2> a{
-      {std::vector<double>(p + 1), std::vector<double>(p + 1)}};
-    const unsigned int                 n_derivatives = std::min(2u, p);
-    std::array<std::vector<double>, 3> ders;
-    for (auto &row : ders)
-      row.assign(p + 1, 0.);
-    ndu[0][0] = 1.;
-    for (unsigned int j = 1; j <= p; ++j)
-      {
-        left[j]      = u - U[i + 1 - j];
-        right[j]     = U[i + j] - u;
-        double saved = 0.;
-        for (unsigned int r = 0; r < j; ++r)
-          {
-            ndu[j][r]         = right[r + 1] + left[j - r];
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j]         = saved + right[r + 1] * temp;
-            saved             = left[j - r] * temp;
-          }
-        ndu[j][j] = saved;
-      }
-    for (unsigned int j = 0; j <= p; ++j)
-      ders[0][j] = ndu[j][p];
-    for (int r = 0; r <= int(p); ++r)
-      {
-        unsigned int s1 = 0, s2 = 1;
-        a[0][0] = 1.;
-        for (int k = 1; k <= int(n_derivatives); ++k)
-          {
-            double    d  = 0.;
-            const int rk = r - k, pk = int(p) - k;
-            if (r >= k)
-              {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d        = a[s2][0] * ndu[rk][pk];
-              }
-            const int j1 = rk >= -1 ? 1 : -rk;
-            const int j2 = (r - 1 <= pk) ? k - 1 : int(p) - r;
-            for (int j = j1; j <= j2; ++j)
-              {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-              }
-            if (r <= pk)
-              {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-              }
-            ders[k][r] = d;
-            std::swap(s1, s2);
-          }
-      }
-    double factor = p;
-    for (unsigned int k = 1; k <= n_derivatives; ++k)
-      {
-        for (unsigned int j = 0; j <= p; ++j)
-          ders[k][j] *= factor;
-        factor *= double(p) - double(k);
-      }
-    values             = ders[0];
-    first_derivatives  = ders[1];
-    second_derivatives = ders[2];
+    bspline_functions_on_span(p,
+                              knot_vector,
+                              span_knot[span],
+                              u,
+                              values,
+                              first_derivatives,
+                              second_derivatives);
   }
 
 
@@ -167,6 +106,36 @@ namespace glissade
   NurbsPatch::unique_control(const unsigned int a, const unsigned int b) const
   {
     return a + n_xi() * (closed_in_eta && b + 1 == n_eta() ? 0 : b);
+  }
+
+
+
+  NurbsPatch::SideSpan
+  NurbsPatch::side_span(const unsigned int span_xi,
+                        const unsigned int span_eta,
+                        const unsigned int face) const
+  {
+    const unsigned int  fixed = face / 2, at_end = face % 2, moving = 1 - fixed;
+    const unsigned int  span[2] = {span_xi, span_eta};
+    const BSplineBasis &along   = moving == 0 ? xi : eta;
+    const unsigned int  first   = along.first_function(span[moving]);
+    const unsigned int  p       = along.degree();
+    const unsigned int  row =
+      (fixed == 0 ? xi : eta).first_function(span[fixed]) +
+      (at_end ? (fixed == 0 ? xi : eta).degree() : 0);
+    SideSpan side;
+    for (unsigned int m = 0; m <= p; ++m)
+      {
+        const unsigned int a = moving == 0 ? first + m : row;
+        const unsigned int b = moving == 0 ? row : first + m;
+        side.controls.push_back(unique_control(a, b));
+        side.weights.push_back(weights[a + n_xi() * b]);
+        side.points.push_back(points[a + n_xi() * b]);
+      }
+    // The span is [U[i], U[i + 1]] with i = first + p.
+    side.knots.assign(along.knots().begin() + first + 1,
+                      along.knots().begin() + first + 2 * p + 1);
+    return side;
   }
 
 

@@ -125,6 +125,27 @@ namespace glissade
       return spans[active_cell_index];
     }
 
+    /**
+     * The boundary on face `face` of cell `active_cell_index`, a side of
+     * the patch (NurbsPatch::side_span). The face's first vertex
+     * (GeometryInfo::face_to_cell_vertices(face, 0)) is at the span's
+     * start.
+     */
+    NurbsPatch::SideSpan
+    face_curve(const unsigned int active_cell_index,
+               const unsigned int face) const
+    {
+      const auto span = spans[active_cell_index];
+      return geometry.side_span(span[0], span[1], face);
+    }
+
+    /** The x and y dofs of a control point (a unique_control() number). */
+    std::array<dealii::types::global_dof_index, 2>
+    control_dofs_of(const unsigned int control) const
+    {
+      return control_dofs[control];
+    }
+
   private:
     unsigned int           degree;
     dealii::FESystem<2>    numbering;

@@ -157,6 +157,27 @@ namespace glissade
           const double       u,
           const double       v) const;
 
+    /**
+     * The patch's boundary on one side of span (span_xi, span_eta): `face`
+     * in deal.II's numbering (0, 1: u fixed at the span's low or high end;
+     * 2, 3: v), which must lie on a side of the patch. There only the
+     * side's row of control points has nonzero functions (open knot
+     * vectors): the p + 1 of them nonzero on the span (unique_control()
+     * numbers), in the order of the moving parameter, their weights and
+     * positions, and the 2p knots around the span (NurbsCurve::Segment).
+     */
+    struct SideSpan
+    {
+      std::vector<unsigned int>     controls;
+      std::vector<double>           weights;
+      std::vector<dealii::Point<2>> points;
+      std::vector<double>           knots;
+    };
+    SideSpan
+    side_span(unsigned int span_xi,
+              unsigned int span_eta,
+              unsigned int face) const;
+
     /** The rectangle [x0, x1] x [y0, y1], its knots at n_x and n_y equal
      *  intervals. */
     static NurbsPatch

@@ -176,7 +176,7 @@ namespace glissade
     for (const auto &w : weights)
       for (unsigned int comp = 0; comp < 2; ++comp)
         kinematics.push_back(
-          {chain.value_dofs[w.node][comp], comp, w.value, w.derivative});
+          {curve_data_dofs(w.node)[comp], comp, w.value, w.derivative});
     add_kinematics(segment, s, kinematics);
     return kinematics;
   }
@@ -222,7 +222,7 @@ namespace glissade
         for (const auto &w : weights)
           for (unsigned int comp = 0; comp < 2; ++comp)
             point.vertex_rotation.push_back(
-              {chain.value_dofs[w.node][comp],
+              {curve_data_dofs(w.node)[comp],
                comp,
                0.5 * w.derivative * n[comp] / length,
                0.});

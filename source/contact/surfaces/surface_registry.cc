@@ -19,6 +19,8 @@ namespace glissade
   std::unique_ptr<MasterSurface>
   make_hermite_surface(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
+  make_nurbs_surface(const SurfaceContext &);
+  std::unique_ptr<MasterSurface>
   make_line_obstacle(const SurfaceContext &);
   void
   declare_line_parameters(ParameterHandler &);
@@ -63,6 +65,11 @@ namespace glissade
        Kind::deformable,
        "the C1 edges of a master body of Hermite elements",
        make_hermite_surface},
+      {"nurbs",
+       Kind::deformable,
+       "the exact boundary of a master body of NURBS elements (Element/Space "
+       "= nurbs), C^(p-1) along a side of its patch",
+       make_nurbs_surface},
       {"line",
        Kind::rigid,
        "the half-plane behind a line (Point, Normal)",

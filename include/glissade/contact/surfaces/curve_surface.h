@@ -109,6 +109,17 @@ namespace glissade
     virtual void
     rebuild(const std::vector<MasterCurve::Point> &positions);
 
+    /**
+     * The x and y dofs of the curve's data point `index` (the indices of
+     * MasterCurve::weights_and_derivatives()): the chain's node `index` by
+     * default; the control point `index` of a NURBS boundary.
+     */
+    virtual std::array<dealii::types::global_dof_index, 2>
+    curve_data_dofs(const unsigned int index) const
+    {
+      return chain.value_dofs[index];
+    }
+
     /** Entries of c(s) beyond the node weights (none by default). */
     virtual void
     add_kinematics(unsigned int                segment,

@@ -1,0 +1,128 @@
+#include <glissade/base/input_error.h>
+#include <glissade/body/body.h>
+#include <glissade/contact/curves/nurbs_curve.h>
+#include <glissade/contact/surfaces/curve_surface.h>
+#include <glissade/contact/surfaces/surface_registry.h>
+#include <glissade/fe/nurbs_space.h>
+
+#include <map>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /**
+     * The exact boundary of a master body of NURBS elements (Element/Space
+     * = nurbs): the paper's third strategy, with no smoothing laid over the
+     * body. Each segment of the chain is a boundary face's span of the
+     * patch's side, its point the rational combination of the side's
+     * control points, C^(p-1) inside a side and exact for a circle. The
+     * reaction goes to the control points by the same functions
+     * (consistent, W symmetric), as a traction on the body's boundary is
+     * assembled.
+     */
+    class NurbsSurface : public CurveSurface
+    {
+    public:
+      NurbsSurface(const SurfaceContext &context);
+
+      void
+      update(double, double) override;
+
+      std::vector<types::global_dof_index>
+      dofs() const override
+      {
+        std::vector<types::global_dof_index> result;
+        for (const auto &d : control_dofs)
+          result.insert(result.end(), d.begin(), d.end());
+        return result;
+      }
+
+    protected:
+      std::array<types::global_dof_index, 2>
+      curve_data_dofs(const unsigned int index) const override
+      {
+        return control_dofs[index];
+      }
+
+    private:
+      /** The chain's control points: reference positions and dofs. */
+      std::vector<Point<2>>                               control_points;
+      std::vector<std::array<types::global_dof_index, 2>> control_dofs;
+    };
+
+
+
+    NurbsSurface::NurbsSurface(const SurfaceContext &context)
+      : CurveSurface(*context.master,
+                     context.description.master_boundary,
+                     context.description.entry + "/Master boundary",
+                     context.curve)
+    {
+      const auto *nurbs = dynamic_cast<const NurbsSpace *>(&master.space());
+      if (nurbs == nullptr)
+        throw InputError(context.description.entry + "/Surface",
+                         "a nurbs surface is the exact boundary of a master "
+                         "body of NURBS elements (Element/Space = nurbs); "
+                         "body '" +
+                           master.name() + "' uses " + master.space().name());
+      const unsigned int degree = nurbs->patch().xi.degree();
+      std::map<unsigned int, unsigned int> local_of_control;
+      std::vector<NurbsCurve::Segment>     segments;
+      for (unsigned int i = 0; i < chain.faces.size(); ++i)
+        {
+          const auto &face = chain.faces[i];
+          const auto  side =
+            nurbs->face_curve(face.cell->active_cell_index(), face.face);
+          NurbsCurve::Segment segment;
+          for (unsigned int m = 0; m < side.controls.size(); ++m)
+            {
+              const auto [at, added] =
+                local_of_control.emplace(side.controls[m],
+                                         control_points.size());
+              if (added)
+                {
+                  control_points.push_back(side.points[m]);
+                  control_dofs.push_back(
+                    nurbs->control_dofs_of(side.controls[m]));
+                }
+              segment.controls.push_back(at->second);
+            }
+          segment.weights = side.weights;
+          segment.knots   = side.knots;
+          // The chain runs from vertex i to vertex i + 1; the span from the
+          // face's first vertex.
+          segment.reversed =
+            face.cell->vertex_index(
+              GeometryInfo<2>::face_to_cell_vertices(face.face, 0)) !=
+            chain.vertices[i];
+          segments.push_back(std::move(segment));
+        }
+      curve =
+        std::make_unique<NurbsCurve>(degree, chain.closed, std::move(segments));
+    }
+
+
+
+    void
+    NurbsSurface::update(double, double)
+    {
+      const Vector<double>           &u = master.displacement();
+      std::vector<MasterCurve::Point> positions(control_points.size());
+      for (unsigned int k = 0; k < positions.size(); ++k)
+        for (unsigned int c = 0; c < 2; ++c)
+          positions[k][c] = control_points[k][c] + u(control_dofs[k][c]);
+      curve->update(positions);
+    }
+  } // namespace
+
+
+
+  std::unique_ptr<MasterSurface>
+  make_nurbs_surface(const SurfaceContext &context)
+  {
+    return std::make_unique<NurbsSurface>(context);
+  }
+} // namespace glissade
