@@ -285,7 +285,7 @@ namespace
     const double moved         = on_reference_positions ? 0. : 1.;
     const auto   radius        = [&](const ContactNode &node) {
       return node.reference_position[0] +
-             moved * body.displacement()(node.dofs[0]);
+             moved * node.displacement(body.displacement())[0];
     };
     for (const ContactNode &node : pair.nodes())
       if (node.active)
@@ -316,10 +316,12 @@ namespace
             const ContactNode *b = by_vertex.at(cell->face(f)->vertex_index(1));
             const Point<2>     xa(radius(*a),
                               a->reference_position[1] +
-                                moved * body.displacement()(a->dofs[1]));
+                                moved *
+                                  a->displacement(body.displacement())[1]);
             const Point<2>     xb(radius(*b),
                               b->reference_position[1] +
-                                moved * body.displacement()(b->dofs[1]));
+                                moved *
+                                  b->displacement(body.displacement())[1]);
             const double       L = xa.distance(xb);
             area[a] += 2. * M_PI * L * (2. * xa[0] + xb[0]) / 6.;
             area[b] += 2. * M_PI * L * (2. * xb[0] + xa[0]) / 6.;

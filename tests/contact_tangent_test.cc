@@ -47,7 +47,16 @@ namespace
     // vertex normal).
     const bool  vertex = master == "faceted_vertex";
     std::string text   = "subsection Output\n set Progress = false\nend\n";
-    text += block("upper", "0, 0.5", "1, 1", vertex ? "4, 2" : "6, 2", "q1");
+    // nurbs_slave, nurbs_on_nurbs: the slave a NURBS body (p = 2, its
+    // boundary's Greville points the slave points, held so that no rigid
+    // motion is free, which a NURBS body needs) on a faceted Q1 master, or
+    // on a NURBS master's exact boundary.
+    const bool nurbs_slave =
+      master == "nurbs_slave" || master == "nurbs_on_nurbs";
+    text +=
+      nurbs_slave ?
+        block("upper", "0, 0.5", "1, 1", "6, 2", "nurbs", "left: x; top: y") :
+        block("upper", "0, 0.5", "1, 1", vertex ? "4, 2" : "6, 2", "q1");
     std::string contact =
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
@@ -85,7 +94,8 @@ namespace
         const bool hermite = kind == "hermite";
         // nurbs, nurbs3: the master a NURBS body of degree 2 or 3, its
         // exact boundary the surface.
-        const bool nurbs = kind.rfind("nurbs", 0) == 0;
+        const bool nurbs =
+          kind == "nurbs" || kind == "nurbs3" || kind == "nurbs_on_nurbs";
         text += "subsection Scene\n set Bodies = upper, lower\n"
                 " set Contact pairs = interface\nend\n";
         // (the lower block held, so that no motion of the pair is free)
@@ -119,6 +129,8 @@ namespace
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
         else if (nurbs)
           contact += " set Surface = nurbs\n";
+        else if (master == "nurbs_slave")
+          contact += " set Surface = faceted\n";
         else
           contact += " set Surface = " + master + "\n";
       }
@@ -354,6 +366,11 @@ CONTACT_TANGENT_TEST(nurbs, stick)
 CONTACT_TANGENT_TEST(nurbs, slip)
 CONTACT_TANGENT_TEST(nurbs3, frictionless)
 CONTACT_TANGENT_TEST(nurbs3, slip)
+CONTACT_TANGENT_TEST(nurbs_slave, frictionless)
+CONTACT_TANGENT_TEST(nurbs_slave, slip)
+CONTACT_TANGENT_TEST(nurbs_on_nurbs, frictionless)
+CONTACT_TANGENT_TEST(nurbs_on_nurbs, stick)
+CONTACT_TANGENT_TEST(nurbs_on_nurbs, slip)
 CONTACT_TANGENT_TEST(mortar, frictionless)
 CONTACT_TANGENT_TEST(mortar, stick)
 CONTACT_TANGENT_TEST(mortar, slip)

@@ -690,7 +690,8 @@ GLISSADE_TEST(extreme_grazing_contact)
         {
           worst_gap = std::max(worst_gap, std::abs(node.gap));
           largest_uy =
-            std::max(largest_uy, std::abs(block.displacement()(node.dofs[1])));
+            std::max(largest_uy,
+                     std::abs(node.displacement(block.displacement())[1]));
         }
       const double force = std::hypot(r.last("floor_Fx"), r.last("floor_Fy"));
       std::cout << "    contact force " << force << " N, largest |gap| "

@@ -62,9 +62,8 @@ namespace
       std::vector<Tensor<1, 2>> forces;
       for (const auto &node : pair.nodes())
         {
-          const Point<2> x = node.reference_position +
-                             Tensor<1, 2>({inner.displacement()(node.dofs[0]),
-                                           inner.displacement()(node.dofs[1])});
+          const Point<2> x =
+            node.reference_position + node.displacement(inner.displacement());
           const Tensor<1, 2> radial = x / x.norm();
           const Tensor<1, 2> across({-radial[1], radial[0]});
           const Tensor<1, 2> f = node.active ? node.force() : Tensor<1, 2>();

@@ -125,7 +125,7 @@ namespace
       along.emplace_back(node.reference_position[0], &node);
     std::sort(along.begin(), along.end());
     const auto x = [&](const ContactNode &node) {
-      return node.reference_position[0] + us(node.dofs[0]);
+      return node.reference_position[0] + node.displacement(us)[0];
     };
     double error = 0.;
     n_checked    = 0;
@@ -306,7 +306,8 @@ namespace
     const auto                                         &u = body.displacement();
     std::vector<std::pair<double, const ContactNode *>> along;
     for (const ContactNode &node : pair.nodes())
-      along.emplace_back(node.reference_position[0] + u(node.dofs[0]), &node);
+      along.emplace_back(node.reference_position[0] + node.displacement(u)[0],
+                         &node);
     std::sort(along.begin(), along.end());
     CylinderFigures measured{0., 0., 0., 0., 0.};
     double          sum = 0., moment = 0.;

@@ -122,8 +122,7 @@ namespace
     const Vector<double> &u     = ring.displacement();
     std::vector<Point<2>> x(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
-      x[k] = nodes[k].reference_position +
-             Tensor<1, 2>({u(nodes[k].dofs[0]), u(nodes[k].dofs[1])});
+      x[k] = nodes[k].reference_position + nodes[k].displacement(u);
     // Each face's outward normal (the wall's: towards the ring's centre
     // in the reference state), and each node's from its two faces.
     std::vector<Tensor<1, 2>> face_normal(faces.size());

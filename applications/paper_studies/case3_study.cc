@@ -171,9 +171,7 @@ namespace glissade
             // the node's current position (its own value dofs: no vertex
             // search at every increment).
             const Point<2> x =
-              node.reference_position +
-              Tensor<1, 2>({inner.displacement()(node.dofs[0]),
-                            inner.displacement()(node.dofs[1])});
+              node.reference_position + node.displacement(inner.displacement());
             const Tensor<1, 2> f = node.force();
             torque += x[0] * f[1] - x[1] * f[0];
             total_force += f.norm();

@@ -7,6 +7,7 @@
 #include <glissade/contact/discretisation/contact_discretisation.h>
 #include <glissade/contact/discretisation/discrete_gradient.h>
 #include <glissade/contact/surfaces/abradable_coating.h>
+#include <glissade/contact/surfaces/nurbs_boundary.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/mesh/boundary_normals.h>
 
@@ -42,15 +43,18 @@ namespace glissade
     const bool nurbs_master =
       master != nullptr &&
       !master->space().capabilities().dofs_are_nodal_values;
-    if (!slave.space().capabilities().dofs_are_nodal_values)
-      throw InputError(entry + "/Slave body",
-                       "body '" + slave.name() + "' uses the element space '" +
-                         slave.space().name() +
-                         "', whose dofs are control points, not nodes: an "
-                         "isogeometric body can be the master of a pair "
-                         "(Surface = nurbs), not yet its slave (its "
-                         "boundary's points as slave points is not built); "
-                         "slave bodies must use q1 or hermite");
+    const bool nurbs_slave =
+      !slave.space().capabilities().dofs_are_nodal_values;
+    if (nurbs_slave && description.discretisation != "node-to-segment")
+      throw InputError(entry + "/Discretisation",
+                       "mortar contact with a NURBS slave (body '" +
+                         slave.name() +
+                         "') is not built yet: use node-to-segment, whose "
+                         "slave points are the boundary's Greville points");
+    if (nurbs_slave && master == &slave)
+      throw InputError(entry + "/Master body",
+                       "self-contact of a NURBS body ('" + slave.name() +
+                         "') is not built yet");
     if (nurbs_master && description.surface != "nurbs")
       throw InputError(entry + "/Surface",
                        "the master body '" + master->name() +
@@ -87,41 +91,53 @@ namespace glissade
          text::split_top_level(description.slave_boundary, ','))
       slave_ids.insert(
         slave.boundary_id(text::trim(name), entry + "/Slave boundary"));
-    std::map<unsigned int, unsigned int> node_of_vertex;
-    for (const auto &cell : slave.dof_handler().active_cell_iterators())
-      for (const unsigned int f : cell->face_indices())
-        if (cell->face(f)->at_boundary() &&
-            slave_ids.count(cell->face(f)->boundary_id()) > 0)
-          {
-            std::array<unsigned int, 2> face;
-            for (const unsigned int v : {0u, 1u})
+    if (nurbs_slave)
+      append_nurbs_slave_points(slave,
+                                description.slave_boundary,
+                                entry + "/Slave boundary",
+                                slave_nodes,
+                                faces);
+    else
+      {
+        std::map<unsigned int, unsigned int> node_of_vertex;
+        for (const auto &cell : slave.dof_handler().active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                slave_ids.count(cell->face(f)->boundary_id()) > 0)
               {
-                const unsigned int vertex = cell->face(f)->vertex_index(v);
-                const auto [at, added] =
-                  node_of_vertex.emplace(vertex, slave_nodes.size());
-                face[v] = at->second;
-                if (!added)
-                  continue;
-                ContactNode node;
-                node.vertex             = vertex;
-                node.reference_position = cell->face(f)->vertex(v);
-                node.dofs               = BoundaryConditions::cell_vertex_dofs(
-                  cell,
-                  GeometryInfo<2>::face_to_cell_vertices(f, v),
-                  slave.space());
-                slave_nodes.push_back(node);
+                std::array<unsigned int, 2> face;
+                for (const unsigned int v : {0u, 1u})
+                  {
+                    const unsigned int vertex = cell->face(f)->vertex_index(v);
+                    const auto [at, added] =
+                      node_of_vertex.emplace(vertex, slave_nodes.size());
+                    face[v] = at->second;
+                    if (!added)
+                      continue;
+                    ContactNode node;
+                    node.vertex             = vertex;
+                    node.reference_position = cell->face(f)->vertex(v);
+                    node.shares             = {
+                                  {BoundaryConditions::cell_vertex_dofs(
+                         cell,
+                         GeometryInfo<2>::face_to_cell_vertices(f, v),
+                         slave.space()),
+                                   1.}};
+                    slave_nodes.push_back(node);
+                  }
+                faces.push_back(face);
               }
-            faces.push_back(face);
-          }
-
-    slave_outward_normal =
-      boundary_vertex_normals(slave.triangulation(),
-                              [this](const types::boundary_id id) {
-                                return slave_ids.count(id) > 0;
-                              });
+        const auto outward_normal =
+          boundary_vertex_normals(slave.triangulation(),
+                                  [this](const types::boundary_id id) {
+                                    return slave_ids.count(id) > 0;
+                                  });
+        for (ContactNode &node : slave_nodes)
+          node.reference_outward_normal = outward_normal.at(node.vertex);
+      }
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
-      check_obstacle_faces_slave(slave_outward_normal);
+      check_obstacle_faces_slave();
     discretisation = ContactDiscretisation::create(
       description.discretisation,
       {description, slave, master, *master_surface, slave_nodes, slave_ids});
@@ -210,12 +226,11 @@ namespace glissade
       if (const ContactNode &node = slave_nodes[k];
           node.active && node.reaction[1] >= cap[k] * (1. - 1e-9))
         {
-          Point<2> start = node.reference_position, end = start;
-          for (unsigned int d = 0; d < 2; ++d)
-            {
-              start[d] += slave_body.stored_displacement()(node.dofs[d]);
-              end[d] += slave_body.displacement()(node.dofs[d]);
-            }
+          const Point<2> start =
+            node.reference_position +
+            node.displacement(slave_body.stored_displacement());
+          const Point<2> end = node.reference_position +
+                               node.displacement(slave_body.displacement());
           master_surface->wear_along(start, end);
         }
   }
@@ -223,8 +238,7 @@ namespace glissade
 
 
   void
-  ContactPair::check_obstacle_faces_slave(
-    const std::map<unsigned int, Tensor<1, 2>> &outward_normal)
+  ContactPair::check_obstacle_faces_slave()
   {
     // An obstacle's normal points out of it, towards where the slave may be.
     // If at every slave node it points the same way as the slave boundary's
@@ -237,7 +251,7 @@ namespace glissade
       {
         const SurfacePoint point =
           master_surface->project(node.reference_position);
-        const Tensor<1, 2> out = outward_normal.at(node.vertex);
+        const Tensor<1, 2> &out = node.reference_outward_normal;
         if (point.valid && point.normal * out > 0.5 * out.norm())
           ++facing_away;
       }
@@ -321,7 +335,8 @@ namespace glissade
     std::vector<types::global_dof_index> dofs;
     if (&body == &slave_body)
       for (const auto &node : slave_nodes)
-        dofs.insert(dofs.end(), node.dofs.begin(), node.dofs.end());
+        for (const SlaveShare &share : node.shares)
+          dofs.insert(dofs.end(), share.dofs.begin(), share.dofs.end());
     if (&body == master_body)
       {
         const auto surface_dofs = master_surface->dofs();
@@ -416,9 +431,8 @@ namespace glissade
   Point<2>
   ContactPair::position(const ContactNode &node) const
   {
-    const Vector<double> &u = slave_body.displacement();
     return node.reference_position +
-           Tensor<1, 2>({u(node.dofs[0]), u(node.dofs[1])});
+           node.displacement(slave_body.displacement());
   }
 
 
@@ -441,7 +455,7 @@ namespace glissade
         // not the master's: what holds a body is the geometry both sides
         // share, not the tilt of a facet at a vertex (a faceted circle
         // would otherwise seem to hold a ring against turning).
-        const Tensor<1, 2> out = slave_outward_normal.at(node.vertex);
+        const Tensor<1, 2> &out = node.reference_outward_normal;
         if (node.active && out.norm() > 0.)
           {
             const Tensor<1, 2> n = -out / out.norm();
@@ -507,8 +521,8 @@ namespace glissade
         const Tensor<1, 2> reference_along =
           slave_nodes[b].reference_position - slave_nodes[a].reference_position;
         const Tensor<1, 2> reference_outward =
-          slave_outward_normal.at(slave_nodes[a].vertex) +
-          slave_outward_normal.at(slave_nodes[b].vertex);
+          slave_nodes[a].reference_outward_normal +
+          slave_nodes[b].reference_outward_normal;
         const double       side = reference_along[1] * reference_outward[0] -
                                   reference_along[0] * reference_outward[1] >=
                                 0. ?

@@ -117,7 +117,7 @@ namespace glissade
     std::vector<Tensor<1, 2>> displacement;
     for (const ContactNode &node : pair.nodes())
       {
-        if (!node.active ||
+        if (!node.active || node.vertex == ContactNode::no_vertex ||
             node.status == BiPotentialSolver::NodeStatus::open ||
             !(node.reaction[1] > 0.))
           continue;

@@ -43,10 +43,10 @@ namespace glissade
       std::string  carried_by;
       double       largest_r_n = 0.;
     };
-    std::vector<Node>                        nodes;
-    std::map<unsigned int, unsigned int>     of_vertex;
-    std::vector<std::array<unsigned int, 2>> faces;
-    std::set<std::array<unsigned int, 2>>    face_seen;
+    std::vector<Node>                             nodes;
+    std::map<std::array<double, 2>, unsigned int> of_place;
+    std::vector<std::array<unsigned int, 2>>      faces;
+    std::set<std::array<unsigned int, 2>>         face_seen;
     for (const auto &pair : pairs)
       {
         if (&pair->slave() != &body)
@@ -56,15 +56,21 @@ namespace glissade
         std::vector<unsigned int> index(pair_nodes.size());
         for (unsigned int k = 0; k < pair_nodes.size(); ++k)
           {
-            const ContactNode &p   = pair_nodes[k];
-            const auto [at, added] = of_vertex.emplace(p.vertex, nodes.size());
+            const ContactNode &p = pair_nodes[k];
+            // (a node shared by two pairs is one; a NURBS body's slave
+            // points, between its nodes, are keyed by their place)
+            const auto [at, added] = of_place.emplace(
+              p.vertex != ContactNode::no_vertex ?
+                std::array<double, 2>{{-1., double(p.vertex)}} :
+                std::array<double, 2>{
+                  {p.reference_position[0], p.reference_position[1]}},
+              nodes.size());
             if (added)
               {
                 Node node;
                 node.reference = p.reference_position;
-                node.current   = p.reference_position +
-                               Tensor<1, 2>({body.displacement()(p.dofs[0]),
-                                             body.displacement()(p.dofs[1])});
+                node.current =
+                  p.reference_position + p.displacement(body.displacement());
                 nodes.push_back(node);
               }
             index[k]   = at->second;

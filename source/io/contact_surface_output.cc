@@ -52,8 +52,7 @@ namespace glissade
     std::vector<Point<2>> x(n);
     for (unsigned int k = 0; k < n; ++k)
       x[k] = nodes[k].reference_position +
-             Tensor<1, 2>({slave.displacement()(nodes[k].dofs[0]),
-                           slave.displacement()(nodes[k].dofs[1])});
+             nodes[k].displacement(slave.displacement());
     std::vector<double> length(n, 0.);
     for (const auto &[a, b] : faces)
       {

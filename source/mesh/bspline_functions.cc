@@ -1,4 +1,5 @@
-// The B-spline functions on one span (include/glissade/mesh/bspline_functions.h).
+// The B-spline functions on one span
+// (include/glissade/mesh/bspline_functions.h).
 
 #include <glissade/mesh/bspline_functions.h>
 

@@ -211,9 +211,9 @@ namespace glissade
               node.start_gap_in_dofs = node.linearization.gap;
               if (pair->master() == nullptr)
                 {
-                  Point<2> x = node.reference_position;
-                  for (unsigned int d = 0; d < 2; ++d)
-                    x[d] += pair->slave().displacement()(node.dofs[d]);
+                  const Point<2> x =
+                    node.reference_position +
+                    node.displacement(pair->slave().displacement());
                   node.start_gap +=
                     dt * (node.normal *
                           pair->surface().velocity_at(x, t_start + 0.5 * dt));

@@ -149,9 +149,9 @@ namespace glissade
               const double start_gap = node.start_gap;
               if (body[1] == nullptr)
                 {
-                  Point<2> x = node.reference_position;
-                  for (unsigned int d = 0; d < 2; ++d)
-                    x[d] += pair->slave().displacement()(node.dofs[d]);
+                  const Point<2> x =
+                    node.reference_position +
+                    node.displacement(pair->slave().displacement());
                   U_N -= node.normal * pair->surface().velocity_at(x, t_start);
                 }
               if (start_gap + (1. - theta) * dt * U_N > 0.)

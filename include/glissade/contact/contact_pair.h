@@ -298,12 +298,11 @@ namespace glissade
 
     /**
      * Refuses a rigid obstacle whose normal points, at every slave node,
-     * the same way as the slave boundary's outward normal (given per slave
-     * vertex): contact could never close.
+     * the same way as the slave boundary's outward normal: contact could
+     * never close.
      */
     void
-    check_obstacle_faces_slave(
-      const std::map<unsigned int, dealii::Tensor<1, 2>> &outward_normal);
+    check_obstacle_faces_slave();
 
     /** False for a node that no reaction can move (see the definition). */
     bool
@@ -319,8 +318,6 @@ namespace glissade
     std::vector<ContactNode>               slave_nodes;
     std::vector<InitialContact>            contacts_at_start;
     std::set<dealii::types::boundary_id>   slave_ids;
-    /** The slave boundary's outward normal at each slave vertex (not unit). */
-    std::map<unsigned int, dealii::Tensor<1, 2>> slave_outward_normal;
     /** The increment being solved: its start and end times. */
     double step_start = 0., step_end = 0.;
     /** The master is the slave's own body (self-contact). */

@@ -121,7 +121,7 @@ namespace glissade
         const double w = segment.weights[k];
         R[k]           = w * N[k] / W;
         dR[k]          = w * (dN[k] / W - N[k] * dW / (W * W)) * du_ds;
-        d2R[k] = w *
+        d2R[k]         = w *
                  (d2N[k] / W - 2. * dN[k] * dW / (W * W) -
                   N[k] * d2W / (W * W) + 2. * N[k] * dW * dW / (W * W * W)) *
                  du_ds * du_ds;
@@ -197,6 +197,39 @@ namespace glissade
           low[d]  = std::min(low[d], controls[k][d]);
           high[d] = std::max(high[d], controls[k][d]);
         }
+  }
+
+
+
+  std::vector<std::pair<unsigned int, double>>
+  NurbsCurve::greville_points() const
+  {
+    std::vector<std::pair<unsigned int, double>> points;
+    std::vector<bool> placed(n_control_points, false);
+    for (unsigned int i = 0; i < segments.size(); ++i)
+      {
+        const Segment &segment = segments[i];
+        const double   a = segment.knots[degree - 1], b = segment.knots[degree];
+        std::vector<std::pair<double, unsigned int>> here;
+        for (unsigned int m = 0; m <= degree; ++m)
+          {
+            // Function m of the span starts at knot m of the 2p kept.
+            double g = 0.;
+            for (unsigned int k = m; k < m + degree; ++k)
+              g += segment.knots[k];
+            g /= degree;
+            const double s = (g - a) / (b - a);
+            if (placed[segment.controls[m]] || s < -1e-12 || s > 1. + 1e-12)
+              continue;
+            placed[segment.controls[m]] = true;
+            const double clamped        = std::min(1., std::max(0., s));
+            here.emplace_back(segment.reversed ? 1. - clamped : clamped, m);
+          }
+        std::sort(here.begin(), here.end());
+        for (const auto &[s, m] : here)
+          points.emplace_back(i, s);
+      }
+    return points;
   }
 
 

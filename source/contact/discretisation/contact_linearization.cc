@@ -18,15 +18,17 @@ namespace glissade
       double                  derivative;
     };
 
-    /** The slave node with weight 1, the master dofs with -phi. */
+    /** The slave point's shares (a node: weight 1), the master dofs with
+     *  -phi. */
     std::vector<Entry>
-    relative_map(const std::array<types::global_dof_index, 2> &slave_dofs,
-                 const std::vector<SurfaceWeight>             &master)
+    relative_map(const SlaveShares                &slave,
+                 const std::vector<SurfaceWeight> &master)
     {
       std::vector<Entry> map;
-      map.reserve(2 + master.size());
-      for (unsigned int c = 0; c < 2; ++c)
-        map.push_back({0, slave_dofs[c], c, 1., 0.});
+      map.reserve(2 * slave.size() + master.size());
+      for (const SlaveShare &share : slave)
+        for (unsigned int c = 0; c < 2; ++c)
+          map.push_back({0, share.dofs[c], c, share.weight, 0.});
       for (const auto &w : master)
         map.push_back({1, w.dof, w.component, -w.value, -w.derivative});
       return map;
@@ -38,7 +40,7 @@ namespace glissade
   ContactLinearization
   linearize_contact(
     const Point<2>                                       &x,
-    const std::array<types::global_dof_index, 2>         &slave_dofs,
+    const SlaveShares                                    &slave_shares,
     const Tensor<1, 2>                                   &slave_motion,
     const SurfacePoint                                   &point,
     const std::function<double(types::global_dof_index)> &master_increment,
@@ -52,8 +54,8 @@ namespace glissade
     const double         speed = dc.norm();
 
     const std::vector<Entry> kinematics =
-      relative_map(slave_dofs, point.kinematics);
-    const std::vector<Entry> forces = relative_map(slave_dofs, point.forces);
+      relative_map(slave_shares, point.kinematics);
+    const std::vector<Entry> forces = relative_map(slave_shares, point.forces);
 
     // The relative motion since the increment began, d, and its
     // derivative along the curve, d' (the master point is a material one).

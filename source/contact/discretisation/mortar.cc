@@ -259,7 +259,8 @@ namespace glissade
       for (const ContactNode &node : context.nodes)
         {
           point_of_vertex[node.vertex] = slave_points.size();
-          slave_points.push_back({0, node.dofs, node.reference_position});
+          slave_points.push_back(
+            {0, node.shares.front().dofs, node.reference_position});
         }
       for (unsigned int k = 0; chain && k < chain->vertices.size(); ++k)
         master_points.push_back(
@@ -800,7 +801,7 @@ namespace glissade
       // force weight's dof with -F / D).
       const double D = s.D.value;
       for (unsigned int c = 0; c < 2; ++c)
-        out.push_back({0, node.dofs[c], v[c]});
+        out.push_back({0, node.shares.front().dofs[c], v[c]});
       for (const auto &[k, M] : s.M)
         for (unsigned int c = 0; c < 2; ++c)
           out.push_back({1, master_points[k].dofs[c], -M.value / D * v[c]});
@@ -919,8 +920,8 @@ namespace glissade
       // (a flat master: n . (y_k - y_l) = 0) from leaving round-off.
       for (unsigned int c = 0; c < 2; ++c)
         {
-          l.gap_row.push_back({0, node.dofs[c], n[c]});
-          l.slip_row.push_back({0, node.dofs[c], t[c]});
+          l.gap_row.push_back({0, node.shares.front().dofs[c], n[c]});
+          l.slip_row.push_back({0, node.shares.front().dofs[c], t[c]});
         }
       // (M holds the faceted master's weights only: empty on a curve or
       // an obstacle, whose y_j's change is in the Y rows below)

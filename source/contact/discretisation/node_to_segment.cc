@@ -26,10 +26,9 @@ namespace glissade
       {
         const Vector<double> &u  = slave.displacement();
         const Vector<double> &u0 = slave.stored_displacement();
-        const Tensor<1, 2>    motion({u(node.dofs[0]) - u0(node.dofs[0]),
-                                      u(node.dofs[1]) - u0(node.dofs[1])});
-        const Point<2>        x({node.reference_position[0] + u(node.dofs[0]),
-                                 node.reference_position[1] + u(node.dofs[1])});
+        const Tensor<1, 2>    motion =
+          node.displacement(u) - node.displacement(u0);
+        const Point<2> x = node.reference_position + node.displacement(u);
 
         SegmentHint keep;
         if (keep_segment)
@@ -58,7 +57,7 @@ namespace glissade
                    master->stored_displacement()(dof);
           };
         node.linearization = linearize_contact(
-          x, node.dofs, motion, point, master_increment, node.reaction);
+          x, node.shares, motion, point, master_increment, node.reaction);
         return true;
       }
 

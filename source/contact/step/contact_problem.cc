@@ -60,6 +60,14 @@ namespace glissade
                                       side.body + "')";
             for (const auto &name : text::split_top_level(side.boundary, ','))
               body->boundary_id(text::trim(name), entry);
+            // (the broad phase's boxes and self-contact read the nodes'
+            // displacements, which a NURBS body's dofs are not)
+            if (!body->space().capabilities().dofs_are_nodal_values)
+              throw InputError(entry,
+                               "automatic contact among NURBS bodies is not "
+                               "built yet; declare the pair (Contact <name>, "
+                               "node-to-segment, Surface = nurbs for a NURBS "
+                               "master)");
             sides.push_back({body, side.boundary, entry});
             // What the side touches as a master holds what it touches as
             // a slave: its surface's dofs, the vertices' and, on a Hermite

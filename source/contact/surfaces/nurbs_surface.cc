@@ -1,11 +1,9 @@
 #include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
-#include <glissade/contact/curves/nurbs_curve.h>
 #include <glissade/contact/surfaces/curve_surface.h>
+#include <glissade/contact/surfaces/nurbs_boundary.h>
 #include <glissade/contact/surfaces/surface_registry.h>
 #include <glissade/fe/nurbs_space.h>
-
-#include <map>
 
 namespace glissade
 {
@@ -68,40 +66,10 @@ namespace glissade
                          "body of NURBS elements (Element/Space = nurbs); "
                          "body '" +
                            master.name() + "' uses " + master.space().name());
-      const unsigned int degree = nurbs->patch().xi.degree();
-      std::map<unsigned int, unsigned int> local_of_control;
-      std::vector<NurbsCurve::Segment>     segments;
-      for (unsigned int i = 0; i < chain.faces.size(); ++i)
-        {
-          const auto &face = chain.faces[i];
-          const auto  side =
-            nurbs->face_curve(face.cell->active_cell_index(), face.face);
-          NurbsCurve::Segment segment;
-          for (unsigned int m = 0; m < side.controls.size(); ++m)
-            {
-              const auto [at, added] =
-                local_of_control.emplace(side.controls[m],
-                                         control_points.size());
-              if (added)
-                {
-                  control_points.push_back(side.points[m]);
-                  control_dofs.push_back(
-                    nurbs->control_dofs_of(side.controls[m]));
-                }
-              segment.controls.push_back(at->second);
-            }
-          segment.weights = side.weights;
-          segment.knots   = side.knots;
-          // The chain runs from vertex i to vertex i + 1; the span from the
-          // face's first vertex.
-          segment.reversed =
-            face.cell->vertex_index(
-              GeometryInfo<2>::face_to_cell_vertices(face.face, 0)) !=
-            chain.vertices[i];
-          segments.push_back(std::move(segment));
-        }
-      curve =
-        std::make_unique<NurbsCurve>(degree, chain.closed, std::move(segments));
+      NurbsBoundary boundary = NurbsBoundary::build(*nurbs, chain);
+      control_points         = std::move(boundary.control_points);
+      control_dofs           = std::move(boundary.control_dofs);
+      curve                  = std::move(boundary.curve);
     }
 
 

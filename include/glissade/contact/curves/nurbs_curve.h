@@ -2,6 +2,7 @@
 
 #include <glissade/contact/curves/master_curve.h>
 
+#include <utility>
 #include <vector>
 
 namespace glissade
@@ -62,6 +63,28 @@ namespace glissade
     n_segments() const override;
     bool
     is_closed() const override;
+
+    unsigned int
+    degree_of_curve() const
+    {
+      return degree;
+    }
+
+    const Segment &
+    segment_data(const unsigned int segment) const
+    {
+      return segments[segment];
+    }
+
+    /**
+     * The Greville abscissae of the control points (the mean of the p knots
+     * each function's support starts with, Hughes, Cottrell & Bazilevs
+     * 2005): where each control point's function peaks, as (segment, s),
+     * each control point once, in the order of the segments. The slave
+     * points of a NURBS body (Matzen, Cichosz & Bischoff 2013).
+     */
+    std::vector<std::pair<unsigned int, double>>
+    greville_points() const;
 
     /** The number of control points update() expects. */
     unsigned int

@@ -28,6 +28,17 @@ namespace glissade
   using DofVector = std::vector<DofCoefficient>;
 
   /**
+   * A slave point's share of one node or control point of the slave body:
+   * the point moves by `weight` times the displacement in `dofs` (x, y).
+   */
+  struct SlaveShare
+  {
+    std::array<dealii::types::global_dof_index, 2> dofs;
+    double                                         weight;
+  };
+  using SlaveShares = std::vector<SlaveShare>;
+
+  /**
    * One contact node's gap and slip and their derivatives with respect to
    * the dofs, the forces of its reaction on the dofs, and its share of the
    * contact tangent (theory.md, section 4.2). Written once for every
@@ -103,19 +114,18 @@ namespace glissade
   }
 
   /**
-   * The linearisation of a slave node at x with dofs `slave_dofs`, moved by
+   * The linearisation of a slave point at x made of `slave_shares`, moved by
    * `slave_motion` since the increment began, against its point on the
    * master, whose dofs moved by `master_increment(dof)` since then, with
    * the reaction `reaction` = (r_t, r_n) (that of the last iteration, at
    * which the tangent is taken).
    */
   ContactLinearization
-  linearize_contact(
-    const dealii::Point<2>                               &x,
-    const std::array<dealii::types::global_dof_index, 2> &slave_dofs,
-    const dealii::Tensor<1, 2>                           &slave_motion,
-    const SurfacePoint                                   &point,
-    const std::function<double(dealii::types::global_dof_index)>
-                                &master_increment,
-    const std::array<double, 2> &reaction);
+  linearize_contact(const dealii::Point<2>     &x,
+                    const SlaveShares          &slave_shares,
+                    const dealii::Tensor<1, 2> &slave_motion,
+                    const SurfacePoint         &point,
+                    const std::function<double(dealii::types::global_dof_index)>
+                                                &master_increment,
+                    const std::array<double, 2> &reaction);
 } // namespace glissade

@@ -12,12 +12,38 @@
 
 namespace glissade
 {
-  /** A slave node and its contact state. */
+  /**
+   * A slave point and its contact state: a node of the slave boundary (a
+   * mesh vertex), or a point of a NURBS body's boundary between its
+   * control points (ContactPair: the boundary's Greville points).
+   */
   struct ContactNode
   {
-    unsigned int                                   vertex;
-    std::array<dealii::types::global_dof_index, 2> dofs;
-    dealii::Point<2>                               reference_position;
+    /** The mesh vertex of a node; no_vertex for a point between nodes. */
+    static constexpr unsigned int no_vertex = static_cast<unsigned int>(-1);
+    unsigned int                  vertex    = no_vertex;
+    /**
+     * What the point's displacement is made of, sum_k weight_k u(dofs_k):
+     * the vertex's dofs with weight 1 for a node, the boundary's control
+     * points with their rational functions for a NURBS point.
+     */
+    SlaveShares      shares;
+    dealii::Point<2> reference_position;
+    /** The slave boundary's outward normal at the point, in the reference
+     *  configuration (the vertex normal of a node). */
+    dealii::Tensor<1, 2> reference_outward_normal;
+
+    /** The point's displacement in the slave body's dofs u. */
+    template <class VectorType>
+    dealii::Tensor<1, 2>
+    displacement(const VectorType &u) const
+    {
+      dealii::Tensor<1, 2> result;
+      for (const SlaveShare &share : shares)
+        for (unsigned int c = 0; c < 2; ++c)
+          result[c] += share.weight * u(share.dofs[c]);
+      return result;
+    }
 
     bool active    = false;
     bool projected = false; // has a counterpart on the master

@@ -1,0 +1,96 @@
+#include <deal.II/base/geometry_info.h>
+
+#include <glissade/body/body.h>
+#include <glissade/contact/surfaces/nurbs_boundary.h>
+#include <glissade/fe/nurbs_space.h>
+
+#include <map>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  NurbsBoundary
+  NurbsBoundary::build(const NurbsSpace &space, const MasterChain &chain)
+  {
+    NurbsBoundary                        boundary;
+    std::map<unsigned int, unsigned int> local_of_control;
+    std::vector<NurbsCurve::Segment>     segments;
+    for (unsigned int i = 0; i < chain.faces.size(); ++i)
+      {
+        const auto &face = chain.faces[i];
+        const auto  side =
+          space.face_curve(face.cell->active_cell_index(), face.face);
+        NurbsCurve::Segment segment;
+        for (unsigned int m = 0; m < side.controls.size(); ++m)
+          {
+            const auto [at, added] =
+              local_of_control.emplace(side.controls[m],
+                                       boundary.control_points.size());
+            if (added)
+              {
+                boundary.control_points.push_back(side.points[m]);
+                boundary.control_dofs.push_back(
+                  space.control_dofs_of(side.controls[m]));
+              }
+            segment.controls.push_back(at->second);
+          }
+        segment.weights = side.weights;
+        segment.knots   = side.knots;
+        // The chain runs from vertex i to vertex i + 1; the span from the
+        // face's first vertex.
+        segment.reversed =
+          face.cell->vertex_index(
+            GeometryInfo<2>::face_to_cell_vertices(face.face, 0)) !=
+          chain.vertices[i];
+        segments.push_back(std::move(segment));
+      }
+    boundary.curve =
+      std::make_unique<NurbsCurve>(space.patch().xi.degree(),
+                                   chain.closed,
+                                   std::move(segments));
+    std::vector<MasterCurve::Point> reference;
+    for (const Point<2> &X : boundary.control_points)
+      reference.push_back({{X[0], X[1]}});
+    boundary.curve->update(reference);
+    return boundary;
+  }
+
+
+
+  void
+  append_nurbs_slave_points(const Body                               &body,
+                            const std::string                        &boundary,
+                            const std::string                        &entry,
+                            std::vector<ContactNode>                 &nodes,
+                            std::vector<std::array<unsigned int, 2>> &faces)
+  {
+    const auto &space = dynamic_cast<const NurbsSpace &>(body.space());
+    for (const MasterChain &chain :
+         MasterChain::build_all(body, boundary, entry))
+      {
+        const NurbsBoundary curve_of_chain = NurbsBoundary::build(space, chain);
+        const NurbsCurve   &curve          = *curve_of_chain.curve;
+        const unsigned int  first          = nodes.size();
+        for (const auto &[segment, s] : curve.greville_points())
+          {
+            ContactNode                            node;
+            MasterCurve::NodeWeightsAndDerivatives weights;
+            curve.weights_and_derivatives(segment, s, weights);
+            for (const auto &w : weights)
+              node.shares.push_back(
+                {curve_of_chain.control_dofs[w.node], w.value});
+            const auto X            = curve.value(segment, s);
+            const auto n            = curve.unit_normal(segment, s);
+            node.reference_position = Point<2>(X[0], X[1]);
+            // (the chain has the body on its right: n = e3 x t points out)
+            node.reference_outward_normal = Tensor<1, 2>({n[0], n[1]});
+            nodes.push_back(std::move(node));
+          }
+        for (unsigned int k = first; k + 1 < nodes.size(); ++k)
+          faces.push_back({{k, k + 1}});
+        if (chain.closed && nodes.size() > first + 2)
+          faces.push_back({{static_cast<unsigned int>(nodes.size() - 1), first}});
+      }
+  }
+} // namespace glissade
