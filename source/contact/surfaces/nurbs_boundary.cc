@@ -45,10 +45,9 @@ namespace glissade
           chain.vertices[i];
         segments.push_back(std::move(segment));
       }
-    boundary.curve =
-      std::make_unique<NurbsCurve>(space.patch().xi.degree(),
-                                   chain.closed,
-                                   std::move(segments));
+    boundary.curve = std::make_unique<NurbsCurve>(space.patch().xi.degree(),
+                                                  chain.closed,
+                                                  std::move(segments));
     std::vector<MasterCurve::Point> reference;
     for (const Point<2> &X : boundary.control_points)
       reference.push_back({{X[0], X[1]}});
@@ -90,7 +89,8 @@ namespace glissade
         for (unsigned int k = first; k + 1 < nodes.size(); ++k)
           faces.push_back({{k, k + 1}});
         if (chain.closed && nodes.size() > first + 2)
-          faces.push_back({{static_cast<unsigned int>(nodes.size() - 1), first}});
+          faces.push_back(
+            {{static_cast<unsigned int>(nodes.size() - 1), first}});
       }
   }
 } // namespace glissade
