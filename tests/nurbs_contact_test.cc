@@ -7,6 +7,7 @@
 // contact_newton_test.cc (contact_newton_rate_nurbs), the exact circle in
 // geometric_study_test.cc (geometric_study_nurbs_exact).
 
+#include <glissade/base/input_error.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/contact/surfaces/master_chain.h>
 #include <glissade/contact/surfaces/nurbs_boundary.h>
@@ -40,7 +41,7 @@ namespace
                     const unsigned int degree)
   {
     const std::string space = "nurbs\n  set Degree = " + std::to_string(degree);
-    const std::string slave  = upper_is_slave ? "upper" : "lower";
+    const std::string slave = upper_is_slave ? "upper" : "lower";
     const std::string master = upper_is_slave ? "lower" : "upper";
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
@@ -75,32 +76,29 @@ namespace
    * largest difference over the largest load.
    */
   double
-  consistent_load_error(const ContactPair  &pair,
-                        const Tensor<1, 2> &traction)
+  consistent_load_error(const ContactPair &pair, const Tensor<1, 2> &traction)
   {
-    const Body       &slave = pair.slave();
-    const auto       &space = dynamic_cast<const NurbsSpace &>(slave.space());
+    const Body       &slave  = pair.slave();
+    const auto       &space  = dynamic_cast<const NurbsSpace &>(slave.space());
     const auto        forces = pair.contact_forces()[0];
-    const std::string boundary =
-      slave.name() == "upper" ? "bottom" : "top";
-    const MasterChain chain  = MasterChain::build(slave, boundary, "test");
-    NurbsBoundary     curve  = NurbsBoundary::build(space, chain);
+    const std::string boundary = slave.name() == "upper" ? "bottom" : "top";
+    const MasterChain chain    = MasterChain::build(slave, boundary, "test");
+    NurbsBoundary     curve    = NurbsBoundary::build(space, chain);
     std::vector<MasterCurve::Point> current;
     for (unsigned int k = 0; k < curve.control_points.size(); ++k)
-      current.push_back(
-        {{curve.control_points[k][0] +
-            slave.displacement()(curve.control_dofs[k][0]),
-          curve.control_points[k][1] +
-            slave.displacement()(curve.control_dofs[k][1])}});
+      current.push_back({{curve.control_points[k][0] +
+                            slave.displacement()(curve.control_dofs[k][0]),
+                          curve.control_points[k][1] +
+                            slave.displacement()(curve.control_dofs[k][1])}});
     curve.curve->update(current);
     std::vector<double> integral(current.size(), 0.);
     const QGauss<1>     rule(8);
     for (unsigned int i = 0; i < curve.curve->n_segments(); ++i)
       for (unsigned int q = 0; q < rule.size(); ++q)
         {
-          const double s    = rule.point(q)[0];
-          const auto   dc   = curve.curve->derivative(i, s);
-          const double jxw  = std::hypot(dc[0], dc[1]) * rule.weight(q);
+          const double s   = rule.point(q)[0];
+          const auto   dc  = curve.curve->derivative(i, s);
+          const double jxw = std::hypot(dc[0], dc[1]) * rule.weight(q);
           MasterCurve::NodeWeightsAndDerivatives weights;
           curve.curve->weights_and_derivatives(i, s, weights);
           for (const auto &w : weights)
@@ -112,8 +110,8 @@ namespace
         {
           const double load = traction[c] * integral[k];
           largest           = std::max(largest, std::abs(load));
-          error             = std::max(
-            error, std::abs(forces(curve.control_dofs[k][c]) - load));
+          error =
+            std::max(error, std::abs(forces(curve.control_dofs[k][c]) - load));
         }
     return error / largest;
   }
@@ -121,8 +119,8 @@ namespace
 
 // The contact patch test on non-matching NURBS patches (5 elements on 8
 // and 7 on 13, each side as slave, p = 2 and 3), knot-to-segment on the
-// exact master: every Greville point is in contact, the contact force balances the
-// top's support in y to 1e-9, and the figure of the uniform traction's
+// exact master: every Greville point is in contact, the contact force balances
+// the top's support in y to 1e-9, and the figure of the uniform traction's
 // transfer is reported: the forces on the slave's control points against
 // the consistent loads of that traction (t int R_A ds).
 // Knot-to-segment is a collocation: it does not pass this test exactly (no
@@ -135,11 +133,11 @@ GLISSADE_TEST(nurbs_contact_patch_test)
          std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
       for (const bool upper_is_slave : {true, false})
         {
-          const std::string label =
-            "p = " + std::to_string(degree) + ", " +
-            std::to_string(upper_cells) + " elements on " +
-            std::to_string(lower_cells) + ", slave " +
-            (upper_is_slave ? "upper" : "lower");
+          const std::string label = "p = " + std::to_string(degree) + ", " +
+                                    std::to_string(upper_cells) +
+                                    " elements on " +
+                                    std::to_string(lower_cells) + ", slave " +
+                                    (upper_is_slave ? "upper" : "lower");
           Simulation simulation(SceneReader::read_string(
             nurbs_patch_scene(upper_cells, lower_cells, upper_is_slave, degree),
             "nurbs patch"));
@@ -157,7 +155,9 @@ GLISSADE_TEST(nurbs_contact_patch_test)
               if (std::abs(cell->vertex(v)[1] - 1.) < 1e-12)
                 {
                   const auto dofs =
-                    BoundaryConditions::cell_vertex_dofs(cell, v, upper.space());
+                    BoundaryConditions::cell_vertex_dofs(cell,
+                                                         v,
+                                                         upper.space());
                   const double x =
                     cell->vertex(v)[0] + upper.nodal_displacement()(dofs[0]);
                   left  = std::min(left, x);
@@ -212,23 +212,22 @@ namespace
                    const unsigned int cells,
                    const double       delta)
   {
-    const auto ring = [&](const std::string &name,
-                          const double       inner,
-                          const double       outer) {
-      return "subsection Body " + name +
-             "\n subsection Mesh\n  set Type = half ring\n"
-             "  set Inner radius = " +
-             std::to_string(inner) + "\n  set Outer radius = " +
-             std::to_string(outer) +
-             "\n  set Start angle = 0\n  set End angle = 90\n"
-             "  set Subdivisions = " +
-             std::to_string(cells) +
-             ", 4\n end\n subsection Element\n  set Space = " + space +
-             "\n end\n subsection Material\n  set Young modulus = 1000\n"
-             "  set Poisson ratio = 0.3\n  set Kinematics = small strain\n"
-             " end\n subsection Boundary conditions\n"
-             "  set Fixed = start: y; end: x\n end\nend\n";
-    };
+    const auto ring =
+      [&](const std::string &name, const double inner, const double outer) {
+        return "subsection Body " + name +
+               "\n subsection Mesh\n  set Type = half ring\n"
+               "  set Inner radius = " +
+               std::to_string(inner) +
+               "\n  set Outer radius = " + std::to_string(outer) +
+               "\n  set Start angle = 0\n  set End angle = 90\n"
+               "  set Subdivisions = " +
+               std::to_string(cells) +
+               ", 4\n end\n subsection Element\n  set Space = " + space +
+               "\n end\n subsection Material\n  set Young modulus = 1000\n"
+               "  set Poisson ratio = 0.3\n  set Kinematics = small strain\n"
+               " end\n subsection Boundary conditions\n"
+               "  set Fixed = start: y; end: x\n end\nend\n";
+      };
     return "subsection Scene\n set Bodies = inner, outer\n"
            " set Contact pairs = fit\nend\n" +
            ring("inner", 1., 1.5) + ring("outer", 1.5 - delta, 2.) +
@@ -309,8 +308,8 @@ GLISSADE_TEST(nurbs_contact_interference_fit)
   std::map<std::string, std::vector<double>> errors;
   for (const unsigned int cells : {8u, 16u, 32u})
     for (const auto &[space, surface] :
-         std::vector<std::pair<std::string, std::string>>{
-           {"nurbs", "nurbs"}, {"q1", "faceted"}})
+         std::vector<std::pair<std::string, std::string>>{{"nurbs", "nurbs"},
+                                                          {"q1", "faceted"}})
       {
         Simulation simulation(SceneReader::read_string(
           shrink_fit_scene(space, surface, cells, delta), "interference fit"));
@@ -338,4 +337,51 @@ GLISSADE_TEST(nurbs_contact_interference_fit)
     std::log(errors["q1"][0] / errors["q1"][2]) / std::log(4.);
   std::cout << "  Q1 rate " << q1_rate << std::endl;
   expect(q1_rate > 1.8 && q1_rate < 2.2, "Q1 rings converge like h^2");
+}
+
+// What contact with a NURBS body does not do yet is refused before
+// anything is computed, with the entry and the reason: a surface through
+// a NURBS master's vertices (which carry no displacement), a nurbs surface
+// on a body of another space, mortar on either side, self-contact.
+GLISSADE_TEST(nurbs_contact_input_errors)
+{
+  const std::string fit  = shrink_fit_scene("nurbs", "nurbs", 8, 1e-3);
+  const auto        with = [&](const std::string &from, const std::string &to) {
+    std::string scene = fit;
+    const auto  at    = scene.find(from);
+    check(at != std::string::npos, "the scene has '" + from + "'");
+    return scene.replace(at, from.size(), to);
+  };
+  const auto refusal = [](const std::string &scene) -> std::string {
+    try
+      {
+        Simulation simulation(SceneReader::read_string(scene, "scene.prm"));
+      }
+    catch (const InputError &e)
+      {
+        return e.what();
+      }
+    return "accepted";
+  };
+  for (const auto &[scene, expected] :
+       std::vector<std::pair<std::string, std::string>>{
+         {with("set Surface = nurbs", "set Surface = bspline"),
+          "Contact fit/Surface: the master body 'outer' uses the element "
+          "space 'nurbs'"},
+         {shrink_fit_scene("q1", "nurbs", 8, 1e-3),
+          "a nurbs surface is the exact boundary of a master body of NURBS "
+          "elements"},
+         {with("set Surface = nurbs",
+               "set Surface = nurbs\n"
+               " set Discretisation = mortar"),
+          "Contact fit/Discretisation: mortar contact with a NURBS slave"},
+         {with("set Master body = outer\n set Master boundary = inner",
+               "set Master body = inner\n set Master boundary = outer"),
+          "self-contact of a NURBS body"}})
+    {
+      const std::string message = refusal(scene);
+      std::cout << "  " << message << std::endl;
+      check(message.find(expected) != std::string::npos,
+            "expected a message with '" + expected + "'");
+    }
 }
