@@ -181,13 +181,28 @@ GLISSADE_TEST(nurbs_contact_patch_test)
           for (const auto &node : pair.nodes())
             active += node.active;
           const double load_error = consistent_load_error(pair, on_slave);
+          // Each point's force over its collocation area (reference, so
+          // against the top's force over its reference width, 1): the
+          // contact tables' traction.
+          const std::vector<double> area        = pair.tributary_areas();
+          double                    point_error = 0.;
+          for (unsigned int k = 0; k < pair.nodes().size(); ++k)
+            point_error =
+              std::max(point_error,
+                       (pair.reported_force(pair.nodes()[k]) / area[k] -
+                        (upper_is_slave ? -1. : 1.) * support)
+                           .norm() /
+                         support.norm());
           std::cout << "  " << label << ": " << active << " of "
                     << pair.nodes().size()
                     << " Greville points in contact; contact force against "
                        "the support "
                     << balance
                     << "; control forces off the consistent loads by up to "
-                    << load_error << " of the largest" << std::endl;
+                    << load_error
+                    << " of the largest; the points' traction off the "
+                       "applied one by up to "
+                    << point_error << std::endl;
           check(active == pair.nodes().size(),
                 label + ": every point in contact");
           check(balance <= 1e-9, label + ": the contact force balances");

@@ -378,8 +378,10 @@ GLISSADE_TEST(nurbs_input_errors)
                "set Space = q1\n  set Degree = 3"),
           "Element/Degree: applies to Space = nurbs only"},
          {with("set Fixed = start: y; end: x",
-               "set Fixed = start: y; end: x; point(1, 0): x"),
-          "does not have; name a boundary"},
+               "set Fixed = start: y; end: x; "
+               "point(1.0606601717798212, 1.0606601717798212): x"),
+          "is inside body 'ring', whose dofs are control points, not nodes: "
+          "its point supports and loads act at points of its boundary"},
          {with("set Fixed = start: y; end: x", "set Fixed = start: y"),
           "leave 1 rigid motion(s) free"},
          {with("subsection Newton",
@@ -601,5 +603,90 @@ GLISSADE_TEST(nurbs_blade_first_bending_frequency)
                 << " of " << energy_0 << std::endl;
       check_relative(measured, mode.omega_1, 0.03, "against Euler-Bernoulli's");
       check(energy_drift <= 1e-5 * energy_0, "the energy is not kept");
+    }
+}
+
+// Points of a NURBS body's boundary held or loaded (point(x, y) supports,
+// point loads, nodal loads), through the functions nonzero there: at a
+// knot inside a side two or three control points carry the point.
+// - A block under a uniform traction, held by its bottom in y and at the
+//   bottom's middle point in x (a knot, not a control point): the affine
+//   exact solution (plane strain, sigma_yy = -1) to round-off, and the
+//   point support's reaction zero.
+// - The block held by its bottom, loaded by a point load at a knot of its
+//   top and by nodal loads on its top: the bottom's reaction balances them
+//   (1e-10); held in x at one point only, that point's reaction is the
+//   whole x load.
+GLISSADE_TEST(nurbs_point_supports_and_loads)
+{
+  const std::string block = "  set Type = rectangle\n  set Corner 1 = 0, 0\n"
+                            "  set Corner 2 = 2, 1\n  set Subdivisions = 4, 2";
+  for (const unsigned int degree : {2u, 3u})
+    {
+      Simulation simulation(SceneReader::read_string(
+        nurbs_scene(block,
+                    degree,
+                    "small strain",
+                    "  set Fixed = bottom: y; point(1, 0): x\n"
+                    "  set Tractions = top: 0, -1*t",
+                    "point_support"),
+        "point support"));
+      simulation.advance_to(1., "increment 1");
+      const Body  &body = simulation.body("ring");
+      const double E = 1000., nu = 0.3;
+      const double e_yy = -(1. - nu * nu) / E, e_xx = nu * (1. + nu) / E;
+      double       error = 0.;
+      for (const auto &X : body.triangulation().get_vertices())
+        {
+          const Tensor<1, 2> u = vertex_displacement(body, X);
+          error                = std::max(
+            error,
+            (u - Tensor<1, 2>({e_xx * (X[0] - 1.), e_yy * X[1]})).norm() /
+              std::abs(e_yy));
+        }
+      const Tensor<1, 2> at_point = support_reaction(body, "point(1, 0)");
+      std::cout << "  p = " << degree
+                << ": traction on a block held at point(1, 0) in x: largest "
+                   "vertex error "
+                << error << " of |e_yy|, the point's x reaction " << at_point[0]
+                << std::endl;
+      check(error <= 1e-10, "the affine solution is not exact");
+      check(std::abs(at_point[0]) <= 1e-10, "the point support takes a force");
+
+      Simulation loaded(SceneReader::read_string(
+        nurbs_scene(block,
+                    degree,
+                    "small strain",
+                    "  set Fixed = bottom: xy\n"
+                    "  set Point loads = point(0.5, 1): 0.3*t, -1*t\n"
+                    "  set Nodal loads = top: 0.1*t, -0.2*t",
+                    "point_load"),
+        "point load"));
+      loaded.advance_to(1., "increment 1");
+      const Tensor<1, 2> bottom =
+        support_reaction(loaded.body("ring"), "bottom");
+      // (five vertices on the top)
+      const Tensor<1, 2> applied({0.3 + 5 * 0.1, -1. - 5 * 0.2});
+      std::cout << "  p = " << degree << ": point and nodal loads " << applied
+                << ", the bottom's reaction " << bottom << std::endl;
+      check((bottom + applied).norm() <= 1e-10 * applied.norm(),
+            "the bottom does not balance the loads");
+
+      // Held in x at one point only: that point takes the whole x load.
+      Simulation sheared(SceneReader::read_string(
+        nurbs_scene(block,
+                    degree,
+                    "small strain",
+                    "  set Fixed = bottom: y; point(1, 0): x\n"
+                    "  set Point loads = point(1.5, 1): 0.5*t, 0",
+                    "point_reaction"),
+        "point reaction"));
+      sheared.advance_to(1., "increment 1");
+      const double held =
+        support_reaction(sheared.body("ring"), "point(1, 0)")[0];
+      std::cout << "  p = " << degree
+                << ": x load 0.5 at the top, the x reaction at point(1, 0) "
+                << held << std::endl;
+      check(std::abs(held + 0.5) <= 1e-10, "the point support's reaction");
     }
 }

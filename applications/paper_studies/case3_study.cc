@@ -117,19 +117,42 @@ namespace glissade
         overrides.push_back("Body outer/Element/Space=hermite");
         overrides.push_back("Contact interface/Surface=hermite");
       }
+    else if (variant == "nurbs2-master" || variant == "nurbs3-master")
+      {
+        // The outer ring isogeometric, its exact boundary the master of the
+        // Q4 inner ring's nodes (as hermite changes the outer ring only).
+        overrides.push_back("Body outer/Element/Space=nurbs");
+        overrides.push_back("Body outer/Element/Degree=" +
+                            variant.substr(5, 1));
+        overrides.push_back("Contact interface/Surface=nurbs");
+      }
+    else if (variant == "nurbs2" || variant == "nurbs3")
+      {
+        // Both rings isogeometric (the exact circles), the outer ring's
+        // boundary the master, the inner ring's Greville points the slave
+        // points; the supports and nodal loads act through the functions
+        // at the vertices.
+        for (const std::string body : {"inner", "outer"})
+          {
+            overrides.push_back("Body " + body + "/Element/Space=nurbs");
+            overrides.push_back("Body " + body +
+                                "/Element/Degree=" + variant.substr(5));
+          }
+        overrides.push_back("Contact interface/Surface=nurbs");
+      }
     else
       throw InputError(
         "Case 3 study/Variants",
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
           "bspline-spline, hermite, mortar, mortar-bspline, "
-          "mortar-hermite)");
+          "mortar-hermite, nurbs2, nurbs3, nurbs2-master, nurbs3-master)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
     result.variant = label;
     for (const auto &b : simulation.bodies())
-      result.dofs += b->n_dofs();
+      result.dofs += b->n_unknowns();
     auto       &pair  = *simulation.contact().contact_pairs().at(0);
     const Body &inner = pair.slave();
     // The interface radius of prm/case3_rings.prm (the scale of a torque).
@@ -143,7 +166,12 @@ namespace glissade
         dynamic_cast<const CurveSurface *>(&pair.surface()) :
         nullptr;
     const double window_degrees = 2. * 360. / outer_elements;
-    simulation.on_increment     = [&](const unsigned int increment, double) {
+    // A NURBS ring's slave points are its Greville points, closer together
+    // where the ring's arcs join: what is uniform there is the pressure,
+    // a point's force over its collocation area, not the force.
+    const bool                per_area = variant.rfind("nurbs", 0) == 0;
+    const std::vector<double> area     = pair.tributary_areas();
+    simulation.on_increment = [&](const unsigned int increment, double) {
       if (curve_surface)
         {
           const MasterCurve &curve = curve_surface->master_curve();
@@ -163,10 +191,10 @@ namespace glissade
         }
       std::vector<double> forces;
       double              torque = 0., total_force = 0.;
-      for (const auto &node : pair.nodes())
-        if (node.active)
+      for (unsigned int k = 0; k < pair.nodes().size(); ++k)
+        if (const ContactNode &node = pair.nodes()[k]; node.active)
           {
-            forces.push_back(node.force().norm());
+            forces.push_back(node.force().norm() / (per_area ? area[k] : 1.));
             // The slave nodes are on the inner ring: x x f about (0, 0) at
             // the node's current position (its own value dofs: no vertex
             // search at every increment).
@@ -186,8 +214,8 @@ namespace glissade
             0.5 * (previous_force + total_force) * interface_radius * step;
           const double ratio =
             total_force > 0. ?
-                  100. * torque / (interface_radius * total_force) :
-                  0.;
+              100. * torque / (interface_radius * total_force) :
+              0.;
           result.torque_percent.push_back(ratio);
           result.worst_torque_percent =
             std::max(result.worst_torque_percent, std::abs(ratio));
@@ -294,14 +322,18 @@ namespace glissade
                       "q4, bspline, hermite",
                       Patterns::List(Patterns::Selection(
                         "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
-                        "mortar|mortar-bspline|mortar-hermite")),
+                        "mortar|mortar-bspline|mortar-hermite|nurbs2|nurbs3|"
+                        "nurbs2-master|nurbs3-master")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
                       "and kept segment (doc/contact.md); mortar, "
                       "mortar-bspline and mortar-hermite the mortar "
                       "discretisation over the faceted master, the B-spline "
-                      "and the Hermite outer ring's edge.");
+                      "and the Hermite outer ring's edge; nurbs2 and nurbs3 "
+                      "both rings isogeometric of degree 2 or 3 (the exact "
+                      "circles), knot-to-segment on the outer ring's exact "
+                      "boundary, the spread that of the points' pressure.");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

@@ -127,6 +127,20 @@ namespace glissade
     const Vector<double> &residual = body.unbalanced_forces();
     const Vector<double> &contact  = body.get_contact_forces();
     Tensor<1, 2>          sum;
+    if (where.is_vertex && !body.space().capabilities().dofs_are_nodal_values)
+      {
+        // (the functions nonzero at the point: the support's multiplier
+        // times each function's value, which sum to one)
+        Location at = where;
+        BoundaryConditions::locate_on_boundary_face(at,
+                                                    body.triangulation(),
+                                                    body.name(),
+                                                    boundary);
+        for (const auto &f : BoundaryConditions::functions_at_face_point(
+               body.dof_handler(), body.space(), at))
+          sum[f.component] += residual(f.dof) - contact(f.dof);
+        return sum;
+      }
     if (where.is_vertex)
       {
         const auto d = BoundaryConditions::vertex_dofs(body.dof_handler(),

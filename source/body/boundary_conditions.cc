@@ -151,6 +151,59 @@ namespace glissade
 
 
 
+  void
+  BoundaryConditions::locate_on_boundary_face(Location               &where,
+                                              const Triangulation<2> &tria,
+                                              const std::string      &body_name,
+                                              const std::string      &entry)
+  {
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          for (const unsigned int v : {0u, 1u})
+            if (cell->face(f)->vertex_index(v) == where.vertex)
+              {
+                where.on_face    = true;
+                where.cell_index = cell->active_cell_index();
+                where.face       = f;
+                where.fraction   = v;
+                return;
+              }
+    std::ostringstream message;
+    message << "point(" << where.point[0] << ", " << where.point[1]
+            << ") is inside body '" << body_name
+            << "', whose dofs are control points, not nodes: its point "
+               "supports and loads act at points of its boundary";
+    throw InputError(entry, message.str());
+  }
+
+
+
+  std::vector<BoundaryConditions::FunctionAtPoint>
+  BoundaryConditions::functions_at_face_point(const DoFHandler<2> &dof_handler,
+                                              const ElementSpace  &space,
+                                              const Location      &where)
+  {
+    std::vector<FunctionAtPoint> result;
+    const auto                   evaluator = space.create_evaluator();
+    for (const auto &c : dof_handler.active_cell_iterators())
+      if (c->active_cell_index() == where.cell_index)
+        {
+          evaluator->reinit_at(c, where.face, where.fraction);
+          std::vector<types::global_dof_index> local;
+          space.cell_dof_indices(c, local);
+          for (unsigned int i = 0; i < local.size(); ++i)
+            if (std::abs(evaluator->shape_value(i, 0)) > 1e-14)
+              result.push_back({local[i],
+                                evaluator->displacement_component(i),
+                                evaluator->shape_value(i, 0)});
+          break;
+        }
+    return result;
+  }
+
+
+
   std::array<types::global_dof_index, 2>
   BoundaryConditions::cell_vertex_dofs(
     const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -209,19 +262,17 @@ namespace glissade
                                          const Triangulation<2> &tria)
   {
     // A space whose dofs are not nodal values (NURBS: control points)
-    // has no dof at a vertex: what names a vertex is refused.
-    const bool        nodal = space.capabilities().dofs_are_nodal_values;
-    const std::string not_at_a_vertex =
-      " acts on a vertex's dofs, which body '" + body.name + "' (" +
-      space.name() +
-      ", whose dofs are control points) does not have; name a boundary";
+    // has no dof at a vertex: a point it is held or loaded at is a point
+    // of a boundary face, where its functions give the displacement.
+    const bool nodal = space.capabilities().dofs_are_nodal_values;
+    vertex_has_dofs  = nodal;
     // The entries name their file already ("scene.prm: Body b/...").
     for (const auto &d : body.dirichlet)
       {
         DirichletItem item;
         item.where = resolve(d.location, names, tria, body.name, d.entry);
         if (!nodal && item.where.is_vertex)
-          throw InputError(d.entry, "'" + d.location + "'" + not_at_a_vertex);
+          locate_on_boundary_face(item.where, tria, body.name, d.entry);
         item.components      = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
         if (d.direction != DirichletDescription::Direction::cartesian)
@@ -267,16 +318,15 @@ namespace glissade
 
     for (const auto &n : body.neumann)
       {
-        const Location where =
+        Location where =
           resolve(n.location,
                   names,
                   tria,
                   body.name,
                   n.entry,
                   n.kind == NeumannDescription::Kind::point_load);
-        if (!nodal && (where.is_vertex ||
-                       n.kind == NeumannDescription::Kind::nodal_loads))
-          throw InputError(n.entry, "'" + n.location + "'" + not_at_a_vertex);
+        if (!nodal && where.is_vertex)
+          locate_on_boundary_face(where, tria, body.name, n.entry);
         if (n.kind == NeumannDescription::Kind::point_load)
           point_loads.push_back({where, make_parser(n.expressions, n.entry)});
         else if (n.kind == NeumannDescription::Kind::nodal_loads)
@@ -376,7 +426,35 @@ namespace glissade
           }
         item.displacement->set_time(time);
         std::vector<DofRelation> these;
-        if (item.where.is_vertex)
+        if (item.where.is_vertex && !vertex_has_dofs)
+          {
+            // sum_i N_i(X) u_i = g per component, pivoting on the largest
+            // function not yet constrained by another item.
+            const auto functions =
+              functions_at_face_point(dof_handler, space, item.where);
+            for (unsigned int c = 0; c < 2; ++c)
+              if (item.components[c])
+                {
+                  const FunctionAtPoint *pivot = nullptr;
+                  for (const auto &f : functions)
+                    if (f.component == c && !relations.count(f.dof) &&
+                        (pivot == nullptr ||
+                         std::abs(f.value) > std::abs(pivot->value)))
+                      pivot = &f;
+                  AssertThrow(pivot != nullptr,
+                              ExcMessage("a point support finds every "
+                                         "function there held already"));
+                  DofRelation r{pivot->dof,
+                                {},
+                                item.displacement->value(item.where.point, c) /
+                                  pivot->value};
+                  for (const auto &f : functions)
+                    if (f.component == c && f.dof != pivot->dof)
+                      r.others.emplace_back(f.dof, f.value / pivot->value);
+                  these.push_back(r);
+                }
+          }
+        else if (item.where.is_vertex)
           {
             const auto dofs =
               cached_vertex_dofs(dof_handler, space, item.where.vertex);
@@ -532,6 +610,32 @@ namespace glissade
     for (const auto &load : nodal_loads)
       {
         load.force->set_time(time);
+        if (!vertex_has_dofs)
+          {
+            // At each vertex of the boundary, through a face ending there.
+            std::set<unsigned int> done;
+            for (const auto &cell : dof_handler.active_cell_iterators())
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == load.where.boundary)
+                  for (const unsigned int v : {0u, 1u})
+                    {
+                      if (!done.insert(cell->face(f)->vertex_index(v)).second)
+                        continue;
+                      Location at;
+                      at.on_face       = true;
+                      at.cell_index    = cell->active_cell_index();
+                      at.face          = f;
+                      at.fraction      = v;
+                      const Point<2> X = cell->face(f)->vertex(v);
+                      for (const auto &function :
+                           functions_at_face_point(dof_handler, space, at))
+                        forces[function.dof] +=
+                          function.value *
+                          load.force->value(X, function.component);
+                    }
+            continue;
+          }
         std::set<unsigned int> done;
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
@@ -554,7 +658,7 @@ namespace glissade
         load.force->set_time(time);
         const Tensor<1, 2> f({load.force->value(load.where.point, 0),
                               load.force->value(load.where.point, 1)});
-        if (load.where.is_vertex)
+        if (load.where.is_vertex && vertex_has_dofs)
           {
             const auto dofs =
               cached_vertex_dofs(dof_handler, space, load.where.vertex);
@@ -564,17 +668,9 @@ namespace glissade
           }
         // A point of a face: the element's shape functions there hand the
         // force to its dofs (eq. 29), derivative dofs included.
-        const auto evaluator = space.create_evaluator();
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->active_cell_index() == load.where.cell_index)
-            {
-              evaluator->reinit_at(cell, load.where.face, load.where.fraction);
-              std::vector<types::global_dof_index> local;
-              space.cell_dof_indices(cell, local);
-              for (unsigned int i = 0; i < local.size(); ++i)
-                forces[local[i]] += evaluator->shape_value(i, 0) *
-                                    f[evaluator->displacement_component(i)];
-            }
+        for (const auto &function :
+             functions_at_face_point(dof_handler, space, load.where))
+          forces[function.dof] += function.value * f[function.component];
       }
   }
 } // namespace glissade

@@ -194,6 +194,11 @@ namespace glissade
         for (const auto &[k, other] : {std::make_pair(a, b), {b, a}})
           area[k] += hypothesis.node_share_of_segment(x[k], x[other], length);
       }
+    // (a NURBS boundary's points: their collocation areas, in the reference
+    // configuration)
+    for (unsigned int k = 0; k < n; ++k)
+      if (slave_nodes[k].collocation_area != 0.)
+        area[k] = slave_nodes[k].collocation_area;
     return area;
   }
 

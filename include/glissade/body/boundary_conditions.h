@@ -122,6 +122,38 @@ namespace glissade
             const bool                      allow_face_point = false,
             const double                    known_diameter   = 0.);
 
+    /**
+     * For a space whose dofs are not nodal values (NURBS): a vertex
+     * location as a point of a boundary face that ends at it (on_face,
+     * cell_index, face, fraction 0 or 1), where the element's functions
+     * give the displacement there. An input error naming `entry` if the
+     * vertex is not on the boundary.
+     */
+    static void
+    locate_on_boundary_face(Location                       &where,
+                            const dealii::Triangulation<2> &triangulation,
+                            const std::string              &body_name,
+                            const std::string              &entry);
+
+    /** A function nonzero at a point: its dof, the displacement component
+     *  it moves, its value there. */
+    struct FunctionAtPoint
+    {
+      dealii::types::global_dof_index dof;
+      unsigned int                    component;
+      double                          value;
+    };
+
+    /**
+     * The functions nonzero at a point of a boundary face (where.on_face),
+     * so that u(X)_c = sum value u(dof) over those of component c: how a
+     * point of a space whose dofs are not nodal values is held or loaded.
+     */
+    static std::vector<FunctionAtPoint>
+    functions_at_face_point(const dealii::DoFHandler<2> &dof_handler,
+                            const ElementSpace          &space,
+                            const Location              &where);
+
     /** The two global value dofs (x, y) at vertex v of a cell. */
     static std::array<dealii::types::global_dof_index, 2>
     cell_vertex_dofs(
@@ -173,6 +205,11 @@ namespace glissade
     mutable std::map<unsigned int,
                      std::array<dealii::types::global_dof_index, 2>>
       vertex_dof_cache;
+
+    /** The space's dofs are nodal values: a vertex has dofs of its own
+     *  (not NURBS: its points are held and loaded through the functions
+     *  there, functions_at_face_point). */
+    bool vertex_has_dofs = true;
 
     std::vector<DirichletItem>                   dirichlet_items;
     std::vector<dealii::types::global_dof_index> axis_dofs;

@@ -233,7 +233,8 @@ namespace glissade
      * nodal forces of a uniform pressure divided by it give the pressure
      * back (thickness times half of each face; for a body of revolution
      * the rings 2 pi L (2 x_k + x_other) / 6 of each face, forces being
-     * for the full turn).
+     * for the full turn). A NURBS boundary's point: its collocation area
+     * in the reference configuration (ContactNode::collocation_area).
      */
     std::vector<double>
     tributary_areas() const;

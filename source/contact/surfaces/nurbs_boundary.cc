@@ -1,9 +1,13 @@
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <glissade/body/body.h>
 #include <glissade/contact/surfaces/nurbs_boundary.h>
 #include <glissade/fe/nurbs_space.h>
 
+#include <cmath>
 #include <map>
 
 namespace glissade
@@ -86,6 +90,37 @@ namespace glissade
             node.reference_outward_normal = Tensor<1, 2>({n[0], n[1]});
             nodes.push_back(std::move(node));
           }
+        // The collocation areas: sum_g R_A(x_g) w_g = int R_A dA, one
+        // equation per control point, as many as the points (Greville's
+        // are unisolvent: Schoenberg-Whitney).
+        const unsigned int n = nodes.size() - first;
+        FullMatrix<double> R(n, n);
+        Vector<double>     integral(n), area(n);
+        for (unsigned int g = 0; g < n; ++g)
+          for (const SlaveShare &share : nodes[first + g].shares)
+            for (unsigned int A = 0; A < n; ++A)
+              if (curve_of_chain.control_dofs[A] == share.dofs)
+                R(A, g) += share.weight;
+        const QGauss<1> rule(curve.degree_of_curve() + 3);
+        for (unsigned int i = 0; i < curve.n_segments(); ++i)
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              const double s  = rule.point(q)[0];
+              const auto   X  = curve.value(i, s);
+              const auto   dX = curve.derivative(i, s);
+              const double dA =
+                std::hypot(dX[0], dX[1]) * rule.weight(q) *
+                body.hypothesis().out_of_plane_measure(Point<2>(X[0], X[1]));
+              MasterCurve::NodeWeightsAndDerivatives weights;
+              curve.weights_and_derivatives(i, s, weights);
+              for (const auto &w : weights)
+                integral(w.node) += w.value * dA;
+            }
+        R.gauss_jordan();
+        R.vmult(area, integral);
+        for (unsigned int g = 0; g < n; ++g)
+          nodes[first + g].collocation_area = area(g);
+
         for (unsigned int k = first; k + 1 < nodes.size(); ++k)
           faces.push_back({{k, k + 1}});
         if (chain.closed && nodes.size() > first + 2)

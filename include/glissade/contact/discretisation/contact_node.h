@@ -32,6 +32,14 @@ namespace glissade
     /** The slave boundary's outward normal at the point, in the reference
      *  configuration (the vertex normal of a node). */
     dealii::Tensor<1, 2> reference_outward_normal;
+    /**
+     * A NURBS boundary's point: its share of the boundary's reference
+     * area, the weights w with sum_g R_A(x_g) w_g = int R_A dA for every
+     * control point A, so that a pressure p at the points, p w_g, makes the
+     * consistent loads of p (ContactPair::tributary_areas). Zero for a
+     * node, whose faces give its share.
+     */
+    double collocation_area = 0.;
 
     /** The point's displacement in the slave body's dofs u. */
     template <class VectorType>

@@ -14,6 +14,7 @@
 namespace glissade
 {
   class Body;
+  class Hypothesis;
   class NurbsSpace;
 
   /**
@@ -41,8 +42,9 @@ namespace glissade
    * points (NurbsCurve::greville_points), as many as the curve's control
    * points, each with its shares (the control points' rational functions
    * there) and the exact outward normal; appended to `nodes`, with the
-   * faces that join consecutive points along each curve (the tributary
-   * lengths). `entry` names the boundary in messages.
+   * faces that join consecutive points along each curve, and each point's
+   * collocation area (ContactNode::collocation_area, with the body's
+   * out-of-plane measure). `entry` names the boundary in messages.
    */
   void
   append_nurbs_slave_points(const Body                               &body,
