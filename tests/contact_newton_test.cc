@@ -100,12 +100,13 @@ namespace
    * element (3 degrees) in one.
    */
   void
-  check_nurbs_rings(const unsigned int degree)
+  check_nurbs_rings(const unsigned int degree,
+                    const std::string &discretisation = "node-to-segment")
   {
     const std::string widening = "(1 + 0.004*min(t, 1))";
     const std::string turn     = "pi*max(t - 1, 0)";
     const std::string label    = "nurbs master, p = " + std::to_string(degree) +
-                              ", node-to-segment, 3 degrees of sliding";
+                              ", " + discretisation + ", 3 degrees of sliding";
     std::vector<std::string> overrides = {
       "Body inner/Boundary conditions/Prescribed rotation=",
       "Body inner/Boundary conditions/Prescribed displacement=inner: x: " +
@@ -117,6 +118,7 @@ namespace
       "Body outer/Boundary conditions/Fixed=outer: xy",
       "Body outer/Boundary conditions/Nodal loads=",
       "Contact interface/Surface=nurbs",
+      "Contact interface/Discretisation=" + discretisation,
       "Load program/Stage end times=1, 1.025, " +
         std::to_string(1. + 7.5 / 180.),
       "Load program/Stage increments=2, 3, 1",
@@ -124,7 +126,8 @@ namespace
       "Newton/Displacement tolerance=1e-12",
       "Output/Progress=false",
       "Output/VTU interval=0",
-      "Output/Directory=newton_rate_nurbs_" + std::to_string(degree)};
+      "Output/Directory=newton_rate_nurbs_" + std::to_string(degree) + "_" +
+        discretisation};
     const double order =
       fitted_order(last_increment_residuals(SceneReader::read_file(
                      source_path("prm/case3_rings.prm"), overrides)),
@@ -233,4 +236,9 @@ GLISSADE_TEST(contact_newton_rate_nurbs)
 {
   check_nurbs_rings(2);
   check_nurbs_rings(3);
+}
+
+GLISSADE_TEST(contact_newton_rate_mortar_nurbs)
+{
+  check_nurbs_rings(2, "mortar");
 }

@@ -62,8 +62,9 @@ namespace
       " set Slave body = upper\n set Slave boundary = bottom\n"
       " set Alert distance = 10\n";
     // mortar_line, mortar_disk: mortar against those obstacles;
-    // mortar_bspline, mortar_bspline_spline, mortar_hermite: on the
-    // B-spline master (each force transfer) and the Hermite master.
+    // mortar_bspline, mortar_bspline_spline, mortar_hermite, mortar_nurbs:
+    // on the B-spline master (each force transfer), the Hermite master and
+    // a NURBS master's exact boundary.
     const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
     const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
     if (on_obstacle_mortar)
@@ -379,6 +380,8 @@ CONTACT_TANGENT_TEST(mortar_bspline, slip)
 CONTACT_TANGENT_TEST(mortar_bspline_spline, slip)
 CONTACT_TANGENT_TEST(mortar_hermite, frictionless)
 CONTACT_TANGENT_TEST(mortar_hermite, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs, frictionless)
+CONTACT_TANGENT_TEST(mortar_nurbs, slip)
 CONTACT_TANGENT_TEST(mortar_line, slip)
 CONTACT_TANGENT_TEST(mortar_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_disk, stick)

@@ -38,35 +38,66 @@ namespace
   nurbs_patch_scene(const unsigned int upper_cells,
                     const unsigned int lower_cells,
                     const bool         upper_is_slave,
-                    const unsigned int degree)
+                    const unsigned int degree,
+                    const bool         mortar = false)
   {
-    const std::string space = "nurbs\n  set Degree = " + std::to_string(degree);
-    const std::string slave = upper_is_slave ? "upper" : "lower";
-    const std::string master = upper_is_slave ? "lower" : "upper";
+    // (mortar: the slave of Q1 elements, its faces the integration's)
+    const std::string nurbs = "nurbs\n  set Degree = " + std::to_string(degree);
+    const std::string upper_space = mortar && upper_is_slave ? "q1" : nurbs;
+    const std::string lower_space = mortar && !upper_is_slave ? "q1" : nurbs;
+    const std::string slave       = upper_is_slave ? "upper" : "lower";
+    const std::string master      = upper_is_slave ? "lower" : "upper";
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
            rectangle_body("upper",
                           "0, 0.5",
                           "1, 1",
                           std::to_string(upper_cells) + ", 3",
-                          space,
+                          upper_space,
                           "  set Fixed = left: x\n"
                           "  set Prescribed displacement = top: y: -0.02*t") +
            rectangle_body("lower",
                           "0, 0",
                           "1, 0.5",
                           std::to_string(lower_cells) + ", 4",
-                          space,
+                          lower_space,
                           "  set Fixed = left: x; bottom: y") +
            "subsection Contact interface\n set Slave body = " + slave +
            "\n set Slave boundary = " + (upper_is_slave ? "bottom" : "top") +
            "\n set Master body = " + master +
            "\n set Master boundary = " + (upper_is_slave ? "top" : "bottom") +
-           "\n set Surface = nurbs\n set Alert distance = 0.05\nend\n"
+           "\n set Surface = nurbs\n set Alert distance = 0.05\n" +
+           (mortar ? " set Discretisation = mortar\n" : "") +
+           "end\n"
            "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
            "subsection Output\n set Progress = false\nend\n"
            "subsection Newton\n set Residual tolerance = 1e-11\n"
            " set Displacement tolerance = 1e-11\nend\n";
+  }
+
+  /**
+   * The traction on the slave side of the interface: the upper block's top
+   * support over the top's current width (its corners' nodal
+   * displacements), turned for the slave.
+   */
+  Tensor<1, 2>
+  applied_traction(Simulation &simulation, const bool upper_is_slave)
+  {
+    const Body        &upper   = simulation.body("upper");
+    const Tensor<1, 2> support = support_reaction(upper, "top");
+    double             left = 1e300, right = -1e300;
+    for (const auto &cell : upper.dof_handler().active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        if (std::abs(cell->vertex(v)[1] - 1.) < 1e-12)
+          {
+            const auto dofs =
+              BoundaryConditions::cell_vertex_dofs(cell, v, upper.space());
+            const double x =
+              cell->vertex(v)[0] + upper.nodal_displacement()(dofs[0]);
+            left  = std::min(left, x);
+            right = std::max(right, x);
+          }
+    return (upper_is_slave ? -1. : 1.) * support / (right - left);
   }
 
   /**
@@ -145,26 +176,10 @@ GLISSADE_TEST(nurbs_contact_patch_test)
             simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
           const auto &pair = *simulation.contact().contact_pairs()[0];
 
-          // The applied traction: the top's support over the top's current
-          // width (its corners' nodal displacements).
-          const Body        &upper   = simulation.body("upper");
-          const Tensor<1, 2> support = support_reaction(upper, "top");
-          double             left = 1e300, right = -1e300;
-          for (const auto &cell : upper.dof_handler().active_cell_iterators())
-            for (const unsigned int v : cell->vertex_indices())
-              if (std::abs(cell->vertex(v)[1] - 1.) < 1e-12)
-                {
-                  const auto dofs =
-                    BoundaryConditions::cell_vertex_dofs(cell,
-                                                         v,
-                                                         upper.space());
-                  const double x =
-                    cell->vertex(v)[0] + upper.nodal_displacement()(dofs[0]);
-                  left  = std::min(left, x);
-                  right = std::max(right, x);
-                }
+          const Tensor<1, 2> support =
+            support_reaction(simulation.body("upper"), "top");
           const Tensor<1, 2> on_slave =
-            (upper_is_slave ? -1. : 1.) * support / (right - left);
+            applied_traction(simulation, upper_is_slave);
 
           // Balance: the slave's contact forces against the support.
           Tensor<1, 2> total;
@@ -306,6 +321,67 @@ namespace
              -(sigma(b)[0] * x(0) + sigma(b)[1] * x(1))}};
   }
 } // namespace
+
+// The same patch test with mortar (Discretisation = mortar) on the NURBS
+// master's exact boundary and a Q1 slave: each slave node's traction (its
+// force over its current tributary length) is the applied one to 1e-8,
+// as on the other masters (mortar_patch_test).
+GLISSADE_TEST(nurbs_contact_mortar_patch_test)
+{
+  for (const unsigned int degree : {2u, 3u})
+    for (const auto &[upper_cells, lower_cells] :
+         std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
+      for (const bool upper_is_slave : {true, false})
+        {
+          const std::string label =
+            "mortar, NURBS master p = " + std::to_string(degree) + ", " +
+            std::to_string(upper_cells) + " elements on " +
+            std::to_string(lower_cells) + ", Q1 slave " +
+            (upper_is_slave ? "upper" : "lower");
+          Simulation simulation(SceneReader::read_string(
+            nurbs_patch_scene(
+              upper_cells, lower_cells, upper_is_slave, degree, true),
+            "nurbs mortar patch"));
+          for (unsigned int k = 1; k <= 2; ++k)
+            simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
+          const auto        &pair = *simulation.contact().contact_pairs()[0];
+          const Tensor<1, 2> applied =
+            applied_traction(simulation, upper_is_slave);
+          const auto &u = pair.slave().displacement();
+          std::vector<std::pair<double, const ContactNode *>> along;
+          for (const auto &node : pair.nodes())
+            along.emplace_back(node.reference_position[0] +
+                                 node.displacement(u)[0],
+                               &node);
+          std::sort(along.begin(), along.end());
+          double       error  = 0.;
+          unsigned int active = 0;
+          for (unsigned int k = 0; k < along.size(); ++k)
+            {
+              if (!along[k].second->active)
+                continue;
+              ++active;
+              const double tributary =
+                0.5 *
+                ((k + 1 < along.size() ? along[k + 1].first : along[k].first) -
+                 (k > 0 ? along[k - 1].first : along[k].first));
+              error =
+                std::max(error,
+                         (pair.reported_force(*along[k].second) / tributary -
+                          applied)
+                             .norm() /
+                           applied.norm());
+            }
+          std::cout << "  " << label << ": " << active << " of " << along.size()
+                    << " slave nodes in contact, largest relative traction "
+                       "error "
+                    << error << std::endl;
+          check(active == along.size(), label + ": every node in contact");
+          check(error <= 1e-8, label + ": the traction is not uniform");
+        }
+}
+
+
 
 // An interference fit of two quarter rings against Lame's closed form
 // (plane strain): the radial displacements of the free inner side (r = 1)

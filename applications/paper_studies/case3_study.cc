@@ -79,6 +79,17 @@ namespace glissade
           "Body outer/Boundary conditions/Nodal loads=outer: -" + f +
           "*x/sqrt(x^2+y^2)*min(t, 1), -" + f + "*y/sqrt(x^2+y^2)*min(t, 1)");
       }
+    // A NURBS outer ring takes the 400 N as the uniform traction they
+    // stand for on its radius 2 (its vertices' point forces would not be
+    // a pressure for its functions).
+    if (variant.find("nurbs") != std::string::npos)
+      {
+        const std::string p = std::to_string(400. / (4. * M_PI));
+        overrides.push_back("Body outer/Boundary conditions/Nodal loads=");
+        overrides.push_back(
+          "Body outer/Boundary conditions/Tractions=outer: -" + p +
+          "*x/sqrt(x^2+y^2)*min(t, 1), -" + p + "*y/sqrt(x^2+y^2)*min(t, 1)");
+      }
     if (variant == "q4")
       overrides.push_back("Contact interface/Surface=faceted");
     else if (variant == "q4-closest" || variant == "q4-vertex" ||
@@ -117,14 +128,19 @@ namespace glissade
         overrides.push_back("Body outer/Element/Space=hermite");
         overrides.push_back("Contact interface/Surface=hermite");
       }
-    else if (variant == "nurbs2-master" || variant == "nurbs3-master")
+    else if (variant == "nurbs2-master" || variant == "nurbs3-master" ||
+             variant == "mortar-nurbs2" || variant == "mortar-nurbs3")
       {
         // The outer ring isogeometric, its exact boundary the master of the
-        // Q4 inner ring's nodes (as hermite changes the outer ring only).
+        // Q4 inner ring's nodes (as hermite changes the outer ring only),
+        // node-to-segment or mortar.
+        const bool mortar = variant.rfind("mortar", 0) == 0;
         overrides.push_back("Body outer/Element/Space=nurbs");
         overrides.push_back("Body outer/Element/Degree=" +
-                            variant.substr(5, 1));
+                            variant.substr(mortar ? 12 : 5, 1));
         overrides.push_back("Contact interface/Surface=nurbs");
+        if (mortar)
+          overrides.push_back("Contact interface/Discretisation=mortar");
       }
     else if (variant == "nurbs2" || variant == "nurbs3")
       {
@@ -146,7 +162,8 @@ namespace glissade
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
           "bspline-spline, hermite, mortar, mortar-bspline, "
-          "mortar-hermite, nurbs2, nurbs3, nurbs2-master, nurbs3-master)");
+          "mortar-hermite, nurbs2, nurbs3, nurbs2-master, nurbs3-master, "
+          "mortar-nurbs2, mortar-nurbs3)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -323,7 +340,8 @@ namespace glissade
                       Patterns::List(Patterns::Selection(
                         "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
                         "mortar|mortar-bspline|mortar-hermite|nurbs2|nurbs3|"
-                        "nurbs2-master|nurbs3-master")),
+                        "nurbs2-master|nurbs3-master|mortar-nurbs2|"
+                        "mortar-nurbs3")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
@@ -333,7 +351,11 @@ namespace glissade
                       "and the Hermite outer ring's edge; nurbs2 and nurbs3 "
                       "both rings isogeometric of degree 2 or 3 (the exact "
                       "circles), knot-to-segment on the outer ring's exact "
-                      "boundary, the spread that of the points' pressure.");
+                      "boundary, the spread that of the points' pressure; "
+                      "nurbs2-master, nurbs3-master the outer ring only, "
+                      "node-to-segment; mortar-nurbs2, mortar-nurbs3 the "
+                      "same with mortar. A NURBS outer ring is loaded by the "
+                      "traction the 400 N stand for.");
     prm.declare_entry("Rotation angle",
                       "9",
                       Patterns::Double(0.),

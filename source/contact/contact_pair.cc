@@ -65,11 +65,6 @@ namespace glissade
                          description.surface +
                          " surface through them cannot be built; use "
                          "Surface = nurbs, its exact boundary");
-    if (nurbs_master && description.discretisation != "node-to-segment")
-      throw InputError(entry + "/Discretisation",
-                       "mortar contact on a NURBS master (body '" +
-                         master->name() +
-                         "') is not built yet: use node-to-segment");
     for (const auto &[body, role] :
          {std::pair<const Body *, const char *>{&slave, "/Slave body"},
           std::pair<const Body *, const char *>{master, "/Master body"}})

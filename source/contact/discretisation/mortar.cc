@@ -126,9 +126,13 @@ namespace glissade
       /** A point of either side: body 0 the slave, 1 the master. */
       struct SidePoint
       {
-        unsigned int                           body;
+        unsigned int body;
+        /** A node's value dofs (a faceted master's weights go to them). */
         std::array<types::global_dof_index, 2> dofs;
         Point<2>                               reference;
+        /** What the point moves with: the node's dofs, or a NURBS curve's
+         *  control points (CurveSurface::node_shares). */
+        SlaveShares shares;
       };
 
       /** The current position and the motion since the increment began. */
@@ -259,12 +263,20 @@ namespace glissade
       for (const ContactNode &node : context.nodes)
         {
           point_of_vertex[node.vertex] = slave_points.size();
-          slave_points.push_back(
-            {0, node.shares.front().dofs, node.reference_position});
+          // (mortar's slave nodes are vertices, one share each: ContactPair
+          // refuses a NURBS slave)
+          slave_points.push_back({0,
+                                  node.shares.front().dofs,
+                                  node.reference_position,
+                                  node.shares});
         }
       for (unsigned int k = 0; chain && k < chain->vertices.size(); ++k)
-        master_points.push_back(
-          {1, chain->value_dofs[k], chain->reference_points[k]});
+        master_points.push_back({1,
+                                 chain->value_dofs[k],
+                                 chain->reference_points[k],
+                                 curve_surface ?
+                                   curve_surface->node_shares(k) :
+                                   SlaveShares{{chain->value_dofs[k], 1.}}});
 
       // The slave faces, each oriented so that its left normal points out
       // of its cell (the master chain's convention, MasterChain).
@@ -316,8 +328,11 @@ namespace glissade
     Mortar::position(const SidePoint &p) const
     {
       const Vector<double> &u = (p.body == 0 ? slave : *master).displacement();
-      return Point<2>(p.reference[0] + u(p.dofs[0]),
-                      p.reference[1] + u(p.dofs[1]));
+      Point<2>              x = p.reference;
+      for (const SlaveShare &share : p.shares)
+        for (unsigned int c = 0; c < 2; ++c)
+          x[c] += share.weight * u(share.dofs[c]);
+      return x;
     }
 
 
@@ -328,8 +343,11 @@ namespace glissade
       const Body           &body = p.body == 0 ? slave : *master;
       const Vector<double> &u    = body.displacement();
       const Vector<double> &u0   = body.stored_displacement();
-      return Tensor<1, 2>(
-        {u(p.dofs[0]) - u0(p.dofs[0]), u(p.dofs[1]) - u0(p.dofs[1])});
+      Tensor<1, 2>          d;
+      for (const SlaveShare &share : p.shares)
+        for (unsigned int c = 0; c < 2; ++c)
+          d[c] += share.weight * (u(share.dofs[c]) - u0(share.dofs[c]));
+      return d;
     }
 
 
@@ -372,11 +390,11 @@ namespace glissade
           for (const unsigned int p : faces[g])
             if (!local.count(p))
               local[p] =
-                variables.add(0, slave_points[p].dofs, slave_positions[p]);
+                variables.add(0, slave_points[p].shares, slave_positions[p]);
       const unsigned int lc =
-        variables.add(1, master_points[c].dofs, master_positions[c]);
+        variables.add(1, master_points[c].shares, master_positions[c]);
       const unsigned int ld =
-        variables.add(1, master_points[d].dofs, master_positions[d]);
+        variables.add(1, master_points[d].shares, master_positions[d]);
       const unsigned int            n_used      = variables.n_used();
       const auto                   &dofs        = variables.dofs;
       const std::vector<DualPoint> &coordinates = variables.coordinates;
@@ -652,7 +670,7 @@ namespace glissade
       const unsigned int a = faces[f][0], b = faces[f][1];
       LocalVariables     variables;
       for (const unsigned int p : faces[f])
-        variables.add(0, slave_points[p].dofs, slave_positions[p]);
+        variables.add(0, slave_points[p].shares, slave_positions[p]);
       const auto      &dofs   = variables.dofs;
       const DualPoint  X[2]   = {variables.coordinates[0],
                                  variables.coordinates[1]};
@@ -740,7 +758,7 @@ namespace glissade
             for (const unsigned int p : faces[g])
               if (!local.count(p))
                 local[p] =
-                  variables.add(0, slave_points[p].dofs, slave_positions[p]);
+                  variables.add(0, slave_points[p].shares, slave_positions[p]);
           if (faces_of_point[j].empty())
             continue;
           const DualPoint n = nodal_normal(j, variables.coordinates, local);

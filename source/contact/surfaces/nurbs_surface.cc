@@ -38,6 +38,22 @@ namespace glissade
         return result;
       }
 
+      SlaveShares
+      node_shares(const unsigned int k) const override
+      {
+        // Node k starts segment k; an open curve's last node ends the last.
+        const bool                             last = k == curve->n_segments();
+        const double                           s    = last ? 1. : 0.;
+        const auto                             segment = last ? k - 1 : k;
+        MasterCurve::NodeWeightsAndDerivatives weights;
+        curve->weights_and_derivatives(segment, s, weights);
+        SlaveShares shares;
+        for (const auto &w : weights)
+          if (w.value != 0.)
+            shares.push_back({control_dofs[w.node], w.value});
+        return shares;
+      }
+
     protected:
       std::array<types::global_dof_index, 2>
       curve_data_dofs(const unsigned int index) const override

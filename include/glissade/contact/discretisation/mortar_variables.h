@@ -71,18 +71,19 @@ namespace glissade::mortar
     double    value = 0.;
     DofVector gradient;
 
-    /** Adds a segment pair's value; `dofs` maps its variables to dofs. */
+    /** Adds a segment pair's value; `dofs` maps its variables to dofs
+     *  (each variable a combination of dofs: a node's one, a NURBS curve's
+     *  node its control points'). */
     void
-    add(
-      const MortarDual                     &v,
-      const std::array<std::pair<unsigned int, dealii::types::global_dof_index>,
-                       n_mortar_variables> &dofs,
-      const unsigned int                    n_used)
+    add(const MortarDual                                &v,
+        const std::array<DofVector, n_mortar_variables> &dofs,
+        const unsigned int                               n_used)
     {
       value += v.value;
       for (unsigned int i = 0; i < n_used; ++i)
         if (v.derivative[i] != 0.)
-          gradient.push_back({dofs[i].first, dofs[i].second, v.derivative[i]});
+          for (const DofCoefficient &e : dofs[i])
+            gradient.push_back({e.body, e.dof, e.value * v.derivative[i]});
     }
   };
 
@@ -103,22 +104,25 @@ namespace glissade::mortar
    */
   struct LocalVariables
   {
-    std::vector<DualPoint> coordinates;
-    std::array<std::pair<unsigned int, dealii::types::global_dof_index>,
-               n_mortar_variables>
-      dofs{};
+    std::vector<DualPoint>                    coordinates;
+    std::array<DofVector, n_mortar_variables> dofs{};
 
-    /** Adds a point of `body` at x with dofs `point_dofs`; its index. */
+    /** Adds a point of `body` at x made of `shares` (a node: its dofs
+     *  with weight 1); its index. */
     unsigned int
-    add(const unsigned int                                    body,
-        const std::array<dealii::types::global_dof_index, 2> &point_dofs,
-        const dealii::Point<2>                               &x)
+    add(const unsigned int      body,
+        const SlaveShares      &shares,
+        const dealii::Point<2> &x)
     {
       const unsigned int l = coordinates.size();
       coordinates.push_back({MortarDual::variable(x[0], 2 * l),
                              MortarDual::variable(x[1], 2 * l + 1)});
-      dofs[2 * l]     = {body, point_dofs[0]};
-      dofs[2 * l + 1] = {body, point_dofs[1]};
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          dofs[2 * l + c].clear();
+          for (const SlaveShare &share : shares)
+            dofs[2 * l + c].push_back({body, share.dofs[c], share.weight});
+        }
       return l;
     }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glissade/contact/curves/master_curve.h>
+#include <glissade/contact/discretisation/contact_linearization.h>
 #include <glissade/contact/surfaces/master_chain.h>
 #include <glissade/contact/surfaces/master_surface.h>
 
@@ -92,6 +93,18 @@ namespace glissade
     forces_at(unsigned int                      segment,
               double                            s,
               const std::vector<SurfaceWeight> &kinematics) const;
+
+    /**
+     * What the curve's node k (MasterCurve::nodes(), a segment's end) moves
+     * with: the chain node's value dofs, or, on a curve that does not
+     * interpolate data at its nodes (NURBS), the data points' dofs with
+     * their weights there. Mortar cuts the slave faces at these nodes.
+     */
+    virtual SlaveShares
+    node_shares(const unsigned int k) const
+    {
+      return {{chain.value_dofs[k], 1.}};
+    }
 
     /**
      * True when the reaction goes to the two nodes of the straight
