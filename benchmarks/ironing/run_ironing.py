@@ -23,6 +23,12 @@ VARIANTS = [
     ("mortar", ["Contact ironing/Discretisation=mortar"]),
     ("mortar, B-spline", ["Contact ironing/Discretisation=mortar",
                           "Contact ironing/Surface=bspline"]),
+    # The slab isogeometric (NURBS of degree 2, 70 x 10 elements): the
+    # master is its exact top, mortar integrating over it.
+    ("mortar, NURBS slab", ["Contact ironing/Discretisation=mortar",
+                            "Contact ironing/Surface=nurbs",
+                            "Body slab/Element/Space=nurbs",
+                            "Body slab/Element/Degree=2"]),
     ("node-to-segment, B-spline",
      ["Contact ironing/Discretisation=node-to-segment",
       "Contact ironing/Surface=bspline"]),

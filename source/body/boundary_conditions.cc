@@ -184,21 +184,31 @@ namespace glissade
                                               const ElementSpace  &space,
                                               const Location      &where)
   {
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->active_cell_index() == where.cell_index)
+        return functions_at_face_point(space, cell, where.face, where.fraction);
+    return {};
+  }
+
+
+
+  std::vector<BoundaryConditions::FunctionAtPoint>
+  BoundaryConditions::functions_at_face_point(
+    const ElementSpace                                 &space,
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    const unsigned int                                  face,
+    const double                                        fraction)
+  {
     std::vector<FunctionAtPoint> result;
     const auto                   evaluator = space.create_evaluator();
-    for (const auto &c : dof_handler.active_cell_iterators())
-      if (c->active_cell_index() == where.cell_index)
-        {
-          evaluator->reinit_at(c, where.face, where.fraction);
-          std::vector<types::global_dof_index> local;
-          space.cell_dof_indices(c, local);
-          for (unsigned int i = 0; i < local.size(); ++i)
-            if (std::abs(evaluator->shape_value(i, 0)) > 1e-14)
-              result.push_back({local[i],
-                                evaluator->displacement_component(i),
-                                evaluator->shape_value(i, 0)});
-          break;
-        }
+    evaluator->reinit_at(cell, face, fraction);
+    std::vector<types::global_dof_index> local;
+    space.cell_dof_indices(cell, local);
+    for (unsigned int i = 0; i < local.size(); ++i)
+      if (std::abs(evaluator->shape_value(i, 0)) > 1e-14)
+        result.push_back({local[i],
+                          evaluator->displacement_component(i),
+                          evaluator->shape_value(i, 0)});
     return result;
   }
 
@@ -610,32 +620,6 @@ namespace glissade
     for (const auto &load : nodal_loads)
       {
         load.force->set_time(time);
-        if (!vertex_has_dofs)
-          {
-            // At each vertex of the boundary, through a face ending there.
-            std::set<unsigned int> done;
-            for (const auto &cell : dof_handler.active_cell_iterators())
-              for (const unsigned int f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    cell->face(f)->boundary_id() == load.where.boundary)
-                  for (const unsigned int v : {0u, 1u})
-                    {
-                      if (!done.insert(cell->face(f)->vertex_index(v)).second)
-                        continue;
-                      Location at;
-                      at.on_face       = true;
-                      at.cell_index    = cell->active_cell_index();
-                      at.face          = f;
-                      at.fraction      = v;
-                      const Point<2> X = cell->face(f)->vertex(v);
-                      for (const auto &function :
-                           functions_at_face_point(dof_handler, space, at))
-                        forces[function.dof] +=
-                          function.value *
-                          load.force->value(X, function.component);
-                    }
-            continue;
-          }
         std::set<unsigned int> done;
         for (const auto &cell : dof_handler.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
@@ -646,11 +630,23 @@ namespace glissade
                   const unsigned int vertex = cell->face(f)->vertex_index(v);
                   if (!done.insert(vertex).second)
                     continue;
-                  const Point<2> X    = cell->face(f)->vertex(v);
-                  const auto     dofs = cell_vertex_dofs(
-                    cell, GeometryInfo<2>::face_to_cell_vertices(f, v), space);
-                  for (unsigned int c = 0; c < 2; ++c)
-                    forces[dofs[c]] += load.force->value(X, c);
+                  const Point<2> X = cell->face(f)->vertex(v);
+                  if (vertex_has_dofs)
+                    {
+                      const auto dofs = cell_vertex_dofs(
+                        cell,
+                        GeometryInfo<2>::face_to_cell_vertices(f, v),
+                        space);
+                      for (unsigned int c = 0; c < 2; ++c)
+                        forces[dofs[c]] += load.force->value(X, c);
+                    }
+                  else
+                    // (through the face ending there)
+                    for (const auto &function :
+                         functions_at_face_point(space, cell, f, v))
+                      forces[function.dof] +=
+                        function.value *
+                        load.force->value(X, function.component);
                 }
       }
     for (const auto &load : point_loads)

@@ -154,6 +154,14 @@ namespace glissade
                             const ElementSpace          &space,
                             const Location              &where);
 
+    /** The same at `fraction` along face `face` of `cell`. */
+    static std::vector<FunctionAtPoint>
+    functions_at_face_point(
+      const ElementSpace                                         &space,
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      unsigned int                                                face,
+      double                                                      fraction);
+
     /** The two global value dofs (x, y) at vertex v of a cell. */
     static std::array<dealii::types::global_dof_index, 2>
     cell_vertex_dofs(
