@@ -39,7 +39,8 @@ namespace glissade
     // with nodes along their edges (q2, q3, q8, q12) would have those nodes
     // left out of contact: refused rather than answered wrongly. A body of
     // NURBS elements, whose dofs are control points, is a master through
-    // its exact boundary (Surface = nurbs).
+    // its exact boundary (Surface = nurbs) and a slave through its
+    // boundary's Greville points.
     const bool nurbs_master =
       master != nullptr &&
       !master->space().capabilities().dofs_are_nodal_values;
@@ -76,8 +77,7 @@ namespace glissade
                            "' uses the element space '" + body->space().name() +
                            "', whose nodes along the element edges "
                            "node-to-segment contact would leave out; contact "
-                           "bodies must use q1 or hermite (or nurbs as a "
-                           "master)");
+                           "bodies must use q1, hermite or nurbs");
 
     // The slave nodes: the vertices of the declared contact area, one or
     // several boundaries ("bottom, left, right"); a vertex where two of
@@ -112,12 +112,11 @@ namespace glissade
                     ContactNode node;
                     node.vertex             = vertex;
                     node.reference_position = cell->face(f)->vertex(v);
-                    node.shares             = {
-                                  {BoundaryConditions::cell_vertex_dofs(
-                         cell,
-                         GeometryInfo<2>::face_to_cell_vertices(f, v),
-                         slave.space()),
-                                   1.}};
+                    const auto dofs = BoundaryConditions::cell_vertex_dofs(
+                      cell,
+                      GeometryInfo<2>::face_to_cell_vertices(f, v),
+                      slave.space());
+                    node.shares = {{dofs, 1.}};
                     slave_nodes.push_back(node);
                   }
                 faces.push_back(face);
