@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_patch.h"
 #include "source_tree.h"
 #include "test_tools.h"
 
@@ -19,134 +20,6 @@ using namespace glissade;
 using namespace dealii;
 using namespace glissade_tests;
 
-namespace
-{
-  /**
-   * Two blocks, upper on lower, `upper_cells` and `lower_cells` along the
-   * interface; the slave is the upper block or the lower one.
-   *
-   * frictionless: the upper block's top pushed down, the sides free: a
-   * uniform uniaxial stress in both blocks (the same material expands
-   * sideways the same), so the contact pressure is uniform.
-   *
-   * friction: every outer side of both blocks moved with the homogeneous
-   * deformation x = F X, F = [1, gamma; 0, 1 - eps]: the same uniform
-   * stress in both blocks solves the problem when the interface sticks,
-   * with a shear traction below mu times the pressure.
-   */
-  std::string
-  patch_scene(const unsigned int upper_cells,
-              const unsigned int lower_cells,
-              const bool         upper_is_slave,
-              const bool         friction,
-              const std::string &method  = "condensed",
-              const std::string &surface = "faceted")
-  {
-    const std::string motion = "xy: 0.004*y*t, -0.02*y*t";
-    const std::string upper_conditions =
-      friction ? "  set Prescribed displacement = top: " + motion +
-                   "; left: " + motion + "; right: " + motion :
-                 "  set Fixed = left: x\n"
-                 "  set Prescribed displacement = top: y: -0.02*t";
-    const std::string lower_conditions =
-      friction ? "  set Prescribed displacement = bottom: " + motion +
-                   "; left: " + motion + "; right: " + motion :
-                 "  set Fixed = left: x; bottom: y";
-    const std::string slave  = upper_is_slave ? "upper" : "lower";
-    const std::string master = upper_is_slave ? "lower" : "upper";
-    // A Hermite master surface is the edge of a body of Hermite elements.
-    const std::string master_element = surface == "hermite" ? "hermite" : "q1";
-    return "subsection Scene\n set Bodies = upper, lower\n"
-           " set Contact pairs = interface\nend\n" +
-           rectangle_body("upper",
-                          "0, 0.5",
-                          "1, 1",
-                          std::to_string(upper_cells) + ", 3",
-                          upper_is_slave ? "q1" : master_element,
-                          upper_conditions) +
-           rectangle_body("lower",
-                          "0, 0",
-                          "1, 0.5",
-                          std::to_string(lower_cells) + ", 4",
-                          upper_is_slave ? master_element : "q1",
-                          lower_conditions) +
-           "subsection Contact interface\n set Slave body = " + slave +
-           "\n set Slave boundary = " + (upper_is_slave ? "bottom" : "top") +
-           "\n set Master body = " + master +
-           "\n set Master boundary = " + (upper_is_slave ? "top" : "bottom") +
-           "\n set Discretisation = mortar\n set Surface = " + surface +
-           "\n set Alert distance = 0.05\n" +
-           (friction ? " set Friction coefficient = 0.5\n" : "") +
-           "end\nsubsection Contact solver\n set Tolerance = 1e-13\n set Method = " +
-           method +
-           "\nend\n"
-           "subsection Output\n set Progress = false\nend\n"
-           "subsection Newton\n set Residual tolerance = 1e-11\n"
-           " set Displacement tolerance = 1e-11\nend\n";
-  }
-
-  /**
-   * The traction of each active slave node (its force over its current
-   * tributary length: the mortar reaction is D_j lambda_j, D_j the
-   * integral of the node's shape function) against the traction the
-   * upper block's top support applies (its reaction over the top's
-   * current width): the largest relative difference.
-   */
-  double
-  largest_traction_error(Simulation        &simulation,
-                         const bool         upper_is_slave,
-                         unsigned int      &n_checked,
-                         const std::string &label)
-  {
-    const Body        &upper   = simulation.body("upper");
-    const Tensor<1, 2> support = support_reaction(upper, "top");
-    const auto        &u       = upper.displacement();
-    // The top's current width, from its two corners.
-    double left = 1e300, right = -1e300;
-    for (const auto &cell : upper.dof_handler().active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        if (std::abs(cell->vertex(v)[1] - 1.) < 1e-12)
-          {
-            const auto dofs =
-              BoundaryConditions::cell_vertex_dofs(cell, v, upper.space());
-            left  = std::min(left, cell->vertex(v)[0] + u(dofs[0]));
-            right = std::max(right, cell->vertex(v)[0] + u(dofs[0]));
-          }
-    // The traction on the upper block's bottom is minus the top's; on the
-    // lower block's top it is the top's.
-    const Tensor<1, 2> applied =
-      (upper_is_slave ? -1. : 1.) * support / (right - left);
-
-    const auto &pair  = *simulation.contact().contact_pairs()[0];
-    const Body &slave = pair.slave();
-    const auto &us    = slave.displacement();
-    std::vector<std::pair<double, const ContactNode *>> along;
-    for (const auto &node : pair.nodes())
-      along.emplace_back(node.reference_position[0], &node);
-    std::sort(along.begin(), along.end());
-    const auto x = [&](const ContactNode &node) {
-      return node.reference_position[0] + node.displacement(us)[0];
-    };
-    double error = 0.;
-    n_checked    = 0;
-    for (unsigned int k = 0; k < along.size(); ++k)
-      {
-        const ContactNode &node = *along[k].second;
-        if (!node.active)
-          continue;
-        const double tributary =
-          0.5 * ((k + 1 < along.size() ? x(*along[k + 1].second) : x(node)) -
-                 (k > 0 ? x(*along[k - 1].second) : x(node)));
-        const Tensor<1, 2> traction = pair.reported_force(node) / tributary;
-        error = std::max(error, (traction - applied).norm() / applied.norm());
-        ++n_checked;
-      }
-    std::cout << "  " << label << ": applied traction (" << applied << "), "
-              << n_checked << " active slave nodes, largest relative error "
-              << error << std::endl;
-    return error;
-  }
-} // namespace
 
 // The contact patch test (Taylor and Papadopoulos 1991; for mortar,
 // Farah, Popp and Wall 2015): on non-matching meshes, each side as slave,

@@ -214,6 +214,41 @@ namespace glissade
 
 
 
+  const std::vector<BoundaryConditions::FunctionAtPoint> &
+  BoundaryConditions::cached_functions_at(
+    const ElementSpace                                 &space,
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    const unsigned int                                  face,
+    const double                                        fraction) const
+  {
+    const auto key = std::make_tuple(cell->active_cell_index(), face, fraction);
+    const auto found = function_cache.find(key);
+    if (found != function_cache.end())
+      return found->second;
+    return function_cache[key] =
+             functions_at_face_point(space, cell, face, fraction);
+  }
+
+
+
+  const std::vector<BoundaryConditions::FunctionAtPoint> &
+  BoundaryConditions::cached_functions_at(const DoFHandler<2> &dof_handler,
+                                          const ElementSpace  &space,
+                                          const Location      &where) const
+  {
+    const auto found = function_cache.find(
+      std::make_tuple(where.cell_index, where.face, where.fraction));
+    if (found != function_cache.end())
+      return found->second;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->active_cell_index() == where.cell_index)
+        return cached_functions_at(space, cell, where.face, where.fraction);
+    static const std::vector<FunctionAtPoint> none;
+    return none;
+  }
+
+
+
   std::array<types::global_dof_index, 2>
   BoundaryConditions::cell_vertex_dofs(
     const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -440,8 +475,8 @@ namespace glissade
           {
             // sum_i N_i(X) u_i = g per component, pivoting on the largest
             // function not yet constrained by another item.
-            const auto functions =
-              functions_at_face_point(dof_handler, space, item.where);
+            const auto &functions =
+              cached_functions_at(dof_handler, space, item.where);
             for (unsigned int c = 0; c < 2; ++c)
               if (item.components[c])
                 {
@@ -643,7 +678,7 @@ namespace glissade
                   else
                     // (through the face ending there)
                     for (const auto &function :
-                         functions_at_face_point(space, cell, f, v))
+                         cached_functions_at(space, cell, f, v))
                       forces[function.dof] +=
                         function.value *
                         load.force->value(X, function.component);
@@ -665,7 +700,7 @@ namespace glissade
         // A point of a face: the element's shape functions there hand the
         // force to its dofs (eq. 29), derivative dofs included.
         for (const auto &function :
-             functions_at_face_point(dof_handler, space, load.where))
+             cached_functions_at(dof_handler, space, load.where))
           forces[function.dof] += function.value * f[function.component];
       }
   }

@@ -14,6 +14,7 @@
 
 #include <map>
 #include <memory>
+#include <tuple>
 #include <vector>
 
 namespace glissade
@@ -213,6 +214,27 @@ namespace glissade
     mutable std::map<unsigned int,
                      std::array<dealii::types::global_dof_index, 2>>
       vertex_dof_cache;
+
+    /**
+     * functions_at_face_point() of the points that supports and loads
+     * name, found once (make_constraints and add_point_loads ask at every
+     * iteration; the mesh does not change), by (cell, face, fraction).
+     */
+    const std::vector<FunctionAtPoint> &
+    cached_functions_at(
+      const ElementSpace                                         &space,
+      const typename dealii::DoFHandler<2>::active_cell_iterator &cell,
+      unsigned int                                                face,
+      double fraction) const;
+    /** The same at a location on a face (where.on_face). */
+    const std::vector<FunctionAtPoint> &
+    cached_functions_at(const dealii::DoFHandler<2> &dof_handler,
+                        const ElementSpace          &space,
+                        const Location              &where) const;
+
+    mutable std::map<std::tuple<unsigned int, unsigned int, double>,
+                     std::vector<FunctionAtPoint>>
+      function_cache;
 
     /** The space's dofs are nodal values: a vertex has dofs of its own
      *  (not NURBS: its points are held and loaded through the functions

@@ -1001,7 +1001,7 @@ namespace glissade
         dynamic_cast<const CurveSurface *>(&context.surface) == nullptr)
       throw InputError(entry + "/Surface",
                        "mortar contact integrates over a master curve "
-                       "(Surface = faceted, bspline or hermite); '" +
+                       "(Surface = faceted, bspline, hermite or nurbs); '" +
                          context.description.surface + "' is not one");
     return std::make_unique<Mortar>(context);
   }

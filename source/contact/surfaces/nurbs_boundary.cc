@@ -75,32 +75,35 @@ namespace glissade
         const NurbsBoundary curve_of_chain = NurbsBoundary::build(space, chain);
         const NurbsCurve   &curve          = *curve_of_chain.curve;
         const unsigned int  first          = nodes.size();
-        for (const auto &[segment, s] : curve.greville_points())
+        // The collocation areas: sum_g R_A(x_g) w_g = int R_A dA, one
+        // equation per control point, as many as the points (one Greville
+        // point each; unisolvent: Schoenberg-Whitney).
+        const auto         points = curve.greville_points();
+        const unsigned int n      = points.size();
+        AssertThrow(n == curve.n_controls(),
+                    ExcMessage("a Greville point per control point"));
+        FullMatrix<double> R(n, n);
+        Vector<double>     integral(n), area(n);
+        for (unsigned int g = 0; g < n; ++g)
           {
+            const auto [segment, s] = points[g];
             ContactNode                            node;
             MasterCurve::NodeWeightsAndDerivatives weights;
             curve.weights_and_derivatives(segment, s, weights);
             for (const auto &w : weights)
-              node.shares.push_back(
-                {curve_of_chain.control_dofs[w.node], w.value});
+              {
+                node.shares.push_back(
+                  {curve_of_chain.control_dofs[w.node], w.value});
+                R(w.node, g) += w.value;
+              }
             const auto X            = curve.value(segment, s);
-            const auto n            = curve.unit_normal(segment, s);
+            const auto normal       = curve.unit_normal(segment, s);
             node.reference_position = Point<2>(X[0], X[1]);
             // (the chain has the body on its right: n = e3 x t points out)
-            node.reference_outward_normal = Tensor<1, 2>({n[0], n[1]});
+            node.reference_outward_normal =
+              Tensor<1, 2>({normal[0], normal[1]});
             nodes.push_back(std::move(node));
           }
-        // The collocation areas: sum_g R_A(x_g) w_g = int R_A dA, one
-        // equation per control point, as many as the points (Greville's
-        // are unisolvent: Schoenberg-Whitney).
-        const unsigned int n = nodes.size() - first;
-        FullMatrix<double> R(n, n);
-        Vector<double>     integral(n), area(n);
-        for (unsigned int g = 0; g < n; ++g)
-          for (const SlaveShare &share : nodes[first + g].shares)
-            for (unsigned int A = 0; A < n; ++A)
-              if (curve_of_chain.control_dofs[A] == share.dofs)
-                R(A, g) += share.weight;
         const QGauss<1> rule(curve.degree_of_curve() + 3);
         for (unsigned int i = 0; i < curve.n_segments(); ++i)
           for (unsigned int q = 0; q < rule.size(); ++q)
