@@ -56,10 +56,9 @@ namespace glissade_tests
     const std::string master = upper_is_slave ? "lower" : "upper";
     // A Hermite master surface is the edge of a body of Hermite elements
     // (a NURBS master's space is given with its degree).
-    const std::string master_element =
-      !master_space.empty() ? master_space :
-      surface == "hermite"  ? "hermite" :
-                              "q1";
+    const std::string master_element = !master_space.empty() ? master_space :
+                                       surface == "hermite"  ? "hermite" :
+                                                               "q1";
     return "subsection Scene\n set Bodies = upper, lower\n"
            " set Contact pairs = interface\nend\n" +
            rectangle_body("upper",
@@ -79,8 +78,7 @@ namespace glissade_tests
            "\n set Master body = " + master +
            "\n set Master boundary = " + (upper_is_slave ? "top" : "bottom") +
            "\n set Discretisation = " + discretisation +
-           "\n set Surface = " + surface +
-           "\n set Alert distance = 0.05\n" +
+           "\n set Surface = " + surface + "\n set Alert distance = 0.05\n" +
            (friction ? " set Friction coefficient = 0.5\n" : "") +
            "end\nsubsection Contact solver\n set Tolerance = 1e-13\n set Method = " +
            method +
