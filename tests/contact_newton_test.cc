@@ -71,11 +71,13 @@ namespace
   void
   check_rings(const std::string &surface,
               const std::string &discretisation = "node-to-segment",
-              const unsigned int degree         = 2)
+              const unsigned int degree         = 2,
+              const bool         nurbs_inner    = false)
   {
     const std::string label =
       surface + (surface == "nurbs" ? " p = " + std::to_string(degree) : "") +
-      " master, " + discretisation + ", 3 degrees of sliding";
+      " master" + (nurbs_inner ? ", NURBS slave" : "") + ", " + discretisation +
+      ", 3 degrees of sliding";
     std::vector<std::string> overrides = {
       "Contact interface/Surface=" + surface,
       "Contact interface/Discretisation=" + discretisation,
@@ -87,7 +89,7 @@ namespace
       "Output/Progress=false",
       "Output/VTU interval=0",
       "Output/Directory=newton_rate_" + surface + "_" + discretisation +
-        std::to_string(degree)};
+        std::to_string(degree) + (nurbs_inner ? "_nurbs_inner" : "")};
     if (surface == "hermite")
       overrides.push_back("Body outer/Element/Space=hermite");
     // (a NURBS outer ring keeps the scene's point supports and nodal
@@ -96,6 +98,12 @@ namespace
       {
         overrides.push_back("Body outer/Element/Space=nurbs");
         overrides.push_back("Body outer/Element/Degree=" +
+                            std::to_string(degree));
+      }
+    if (nurbs_inner)
+      {
+        overrides.push_back("Body inner/Element/Space=nurbs");
+        overrides.push_back("Body inner/Element/Degree=" +
                             std::to_string(degree));
       }
     const double order =
@@ -211,4 +219,12 @@ GLISSADE_TEST(contact_newton_rate_nurbs)
 GLISSADE_TEST(contact_newton_rate_mortar_nurbs)
 {
   check_rings("nurbs", "mortar", 2);
+}
+
+// Both rings NURBS, mortar on the inner ring's own boundary
+// (nurbs_slave_mortar.cc).
+GLISSADE_TEST(contact_newton_rate_mortar_nurbs_on_nurbs)
+{
+  check_rings("nurbs", "mortar", 2, true);
+  check_rings("nurbs", "mortar", 3, true);
 }

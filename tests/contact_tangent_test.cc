@@ -51,8 +51,11 @@ namespace
     // boundary's Greville points the slave points, held so that no rigid
     // motion is free, which a NURBS body needs) on a faceted Q1 master, or
     // on a NURBS master's exact boundary.
+    // (with mortar_ before them: mortar on the NURBS slave's own curve)
+    const std::string unprefixed =
+      master.rfind("mortar_", 0) == 0 ? master.substr(7) : master;
     const bool nurbs_slave =
-      master == "nurbs_slave" || master == "nurbs_on_nurbs";
+      unprefixed == "nurbs_slave" || unprefixed == "nurbs_on_nurbs";
     text +=
       nurbs_slave ?
         block("upper", "0, 0.5", "1, 1", "6, 2", "nurbs", "left: x; top: y") :
@@ -64,7 +67,8 @@ namespace
     // mortar_line, mortar_disk: mortar against those obstacles;
     // mortar_bspline, mortar_bspline_spline, mortar_hermite, mortar_nurbs:
     // on the B-spline master (each force transfer), the Hermite master and
-    // a NURBS master's exact boundary.
+    // a NURBS master's exact boundary; mortar_nurbs_slave,
+    // mortar_nurbs_on_nurbs: mortar on a NURBS slave's own curve.
     const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
     const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
     if (on_obstacle_mortar)
@@ -130,7 +134,7 @@ namespace
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
         else if (nurbs)
           contact += " set Surface = nurbs\n";
-        else if (master == "nurbs_slave")
+        else if (kind == "nurbs_slave")
           contact += " set Surface = faceted\n";
         else
           contact += " set Surface = " + master + "\n";
@@ -382,6 +386,11 @@ CONTACT_TANGENT_TEST(mortar_hermite, frictionless)
 CONTACT_TANGENT_TEST(mortar_hermite, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs, frictionless)
 CONTACT_TANGENT_TEST(mortar_nurbs, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave, frictionless)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, frictionless)
+CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, stick)
+CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, slip)
 CONTACT_TANGENT_TEST(mortar_line, slip)
 CONTACT_TANGENT_TEST(mortar_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_disk, stick)

@@ -162,19 +162,22 @@ namespace glissade
         if (mortar)
           overrides.push_back("Contact interface/Discretisation=mortar");
       }
-    else if (variant == "nurbs2" || variant == "nurbs3")
+    else if (variant == "nurbs2" || variant == "nurbs3" ||
+             variant == "nurbs2-mortar" || variant == "nurbs3-mortar")
       {
         // Both rings isogeometric (the exact circles), the outer ring's
-        // boundary the master, the inner ring's Greville points the slave
-        // points; the supports and nodal loads act through the functions
-        // at the vertices.
+        // boundary the master; the inner ring's Greville points the slave
+        // points, or its own boundary with mortar; the supports and nodal
+        // loads act through the functions at the vertices.
         for (const std::string body : {"inner", "outer"})
           {
             overrides.push_back("Body " + body + "/Element/Space=nurbs");
             overrides.push_back("Body " + body +
-                                "/Element/Degree=" + variant.substr(5));
+                                "/Element/Degree=" + variant.substr(5, 1));
           }
         overrides.push_back("Contact interface/Surface=nurbs");
+        if (variant.find("mortar") != std::string::npos)
+          overrides.push_back("Contact interface/Discretisation=mortar");
       }
     else
       throw InputError(
@@ -182,8 +185,8 @@ namespace glissade
         "unknown variant '" + variant +
           "' (known: q4, q4-vertex, q4-closest, q4-kept, bspline, "
           "bspline-spline, hermite, mortar, mortar-bspline, "
-          "mortar-hermite, nurbs2, nurbs3, nurbs2-master, nurbs3-master, "
-          "mortar-nurbs2, mortar-nurbs3)");
+          "mortar-hermite, nurbs2, nurbs3, nurbs2-mortar, nurbs3-mortar, "
+          "nurbs2-master, nurbs3-master, mortar-nurbs2, mortar-nurbs3)");
 
     Simulation  simulation(SceneReader::read_file(scene_file, overrides));
     Case3Result result;
@@ -360,8 +363,8 @@ namespace glissade
                       Patterns::List(Patterns::Selection(
                         "q4|q4-vertex|q4-closest|q4-kept|bspline|hermite|"
                         "mortar|mortar-bspline|mortar-hermite|nurbs2|nurbs3|"
-                        "nurbs2-master|nurbs3-master|mortar-nurbs2|"
-                        "mortar-nurbs3")),
+                        "nurbs2-mortar|nurbs3-mortar|nurbs2-master|"
+                        "nurbs3-master|mortar-nurbs2|mortar-nurbs3")),
                       "Discretisations of the interface. q4 uses the "
                       "scene's Faceted vertex rule; q4-vertex, q4-closest "
                       "and q4-kept the rules vertex normal, closest point "
@@ -372,6 +375,8 @@ namespace glissade
                       "both rings isogeometric of degree 2 or 3 (the exact "
                       "circles), knot-to-segment on the outer ring's exact "
                       "boundary, the spread that of the points' pressure; "
+                      "nurbs2-mortar, nurbs3-mortar both rings with mortar "
+                      "on the inner ring's own boundary; "
                       "nurbs2-master, nurbs3-master the outer ring only, "
                       "node-to-segment; mortar-nurbs2, mortar-nurbs3 the "
                       "same with mortar. A NURBS outer ring is loaded by the "

@@ -46,12 +46,6 @@ namespace glissade
       !master->space().capabilities().dofs_are_nodal_values;
     const bool nurbs_slave =
       !slave.space().capabilities().dofs_are_nodal_values;
-    if (nurbs_slave && description.discretisation != "node-to-segment")
-      throw InputError(entry + "/Discretisation",
-                       "mortar contact with a NURBS slave (body '" +
-                         slave.name() +
-                         "') is not built yet: use node-to-segment, whose "
-                         "slave points are the boundary's Greville points");
     if (nurbs_slave && master == &slave)
       throw InputError(entry + "/Master body",
                        "self-contact of a NURBS body ('" + slave.name() +
@@ -90,6 +84,9 @@ namespace glissade
       append_nurbs_slave_points(slave,
                                 description.slave_boundary,
                                 entry + "/Slave boundary",
+                                description.discretisation == "mortar" ?
+                                  SlavePointArea::function_integral :
+                                  SlavePointArea::collocation,
                                 slave_nodes,
                                 faces);
     else

@@ -201,11 +201,11 @@ namespace glissade
 
 
 
-  std::vector<std::pair<unsigned int, double>>
+  std::vector<NurbsCurve::GrevillePoint>
   NurbsCurve::greville_points() const
   {
-    std::vector<std::pair<unsigned int, double>> points;
-    std::vector<bool> placed(n_control_points, false);
+    std::vector<GrevillePoint> points;
+    std::vector<bool>          placed(n_control_points, false);
     for (unsigned int i = 0; i < segments.size(); ++i)
       {
         const Segment &segment = segments[i];
@@ -227,7 +227,7 @@ namespace glissade
           }
         std::sort(here.begin(), here.end());
         for (const auto &[s, m] : here)
-          points.emplace_back(i, s);
+          points.push_back({i, s, segment.controls[m]});
       }
     return points;
   }

@@ -33,11 +33,12 @@ namespace glissade
          "(the paper's method; every master surface and obstacle)",
          create_node_to_segment},
         {"mortar",
-         "segment-to-segment mortar with dual multipliers: each slave node's "
-         "gap is the integral of the gap against its dual shape function, "
-         "segment by segment (passes the contact patch test on "
-         "non-matching meshes; a faceted or B-spline master, or a rigid "
-         "obstacle)",
+         "segment-to-segment mortar: each slave node's gap is the integral "
+         "of the gap against its dual shape function (a Q1 slave) or its "
+         "control point's rational function (a NURBS slave), segment by "
+         "segment (passes the contact patch test on non-matching meshes; "
+         "a faceted, B-spline, Hermite or NURBS master, or for a Q1 slave "
+         "a rigid obstacle)",
          create_mortar}};
       return list;
     }

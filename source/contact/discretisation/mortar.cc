@@ -3,6 +3,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/body/body.h>
 #include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/discretisation/mortar_curve_point.h>
 #include <glissade/contact/discretisation/mortar_variables.h>
 #include <glissade/contact/surfaces/composite_surface.h>
 #include <glissade/contact/surfaces/curve_surface.h>
@@ -65,9 +66,10 @@ namespace glissade
      */
     struct CurveIntegrals
     {
-      std::array<DualPoint, 2>                  segment_ends;
-      MortarDual                                Y[2][2] = {}, moved[2][2] = {};
-      std::array<std::vector<SurfaceWeight>, 4> kinematics;
+      std::array<DualPoint, 2>                segment_ends;
+      MortarDual                              Y[2][2] = {}, moved[2][2] = {};
+      std::vector<std::vector<SurfaceWeight>> kinematics =
+        std::vector<std::vector<SurfaceWeight>>(4);
       std::map<std::pair<types::global_dof_index, unsigned int>,
                std::array<MortarDual, 2>>
         F;
@@ -173,16 +175,6 @@ namespace glissade
                       const MortarDual &wb,
                       MortarDual       &eta,
                       CurveIntegrals   &on_curve) const;
-
-      /**
-       * Where the line through x along n meets curve segment i, by Newton
-       * from `start`; NaN if Newton leaves.
-       */
-      double
-      curve_parameter(unsigned int     i,
-                      const DualPoint &x,
-                      const DualPoint &n,
-                      double           start) const;
 
       /**
        * Adds the integrals of slave face f against a rigid obstacle: the
@@ -470,11 +462,7 @@ namespace glissade
       const auto add = [&](Accumulated &to, const MortarDual &v) {
         to.add(v, dofs, n_used);
         if (curve)
-          for (unsigned int q = 0; q < 4; ++q)
-            for (const SurfaceWeight &e : on_curve.kinematics[q])
-              if (const double dv = v.derivative[12 + 2 * q + e.component];
-                  dv != 0.)
-                to.gradient.push_back({1, e.dof, dv * e.value});
+          mortar::add_curve_variables(v, on_curve.kinematics, 12, to);
       };
       add(state[a].D, Da);
       add(state[b].D, Db);
@@ -563,103 +551,35 @@ namespace glissade
                             MortarDual        &eta,
                             CurveIntegrals    &on_curve) const
     {
-      const double t = curve_parameter(i, x, n, eta.value);
-      if (!std::isfinite(t))
+      mortar::CurvePoint point;
+      if (!mortar::find_curve_point(
+            *curve_surface,
+            *master,
+            i,
+            12 + 2 * q,
+            x,
+            n,
+            eta.value,
+            on_curve.segment_ends,
+            {{master_points[i].dofs,
+              master_points[(i + 1) % master_points.size()].dofs}},
+            point))
         return false;
-      MasterCurve::Point c0{}, c1{}, c2{};
-      curve->evaluate(i, t, c0, c1, c2);
-      // The curve point at t, moved by its dofs: C + dC_q, with
-      // dC_q = sum_w w du_w the variables 12 + 2q, 13 + 2q; one
-      // Newton step on the Duals from t: (c(eta) - x) x n = 0.
-      const DualPoint C{MortarDual::variable(c0[0], 12 + 2 * q),
-                        MortarDual::variable(c0[1], 13 + 2 * q)};
-      const DualPoint dC{MortarDual(c1[0]), MortarDual(c1[1])};
-      eta                    = t - cross(C - x, n) / cross(dC, n);
-      on_curve.kinematics[q] = curve_surface->kinematics_at(i, t);
-      Tensor<1, 2>          m0, m1;
-      const Vector<double> &u  = master->displacement();
-      const Vector<double> &u0 = master->stored_displacement();
-      for (const SurfaceWeight &e : on_curve.kinematics[q])
-        {
-          const double moved = u(e.dof) - u0(e.dof);
-          m0[e.component] += e.value * moved;
-          m1[e.component] += e.derivative * moved;
-        }
-      // (the motion's change by the dofs is the point's, dC_q:
-      // the dofs' values at the increment's start are fixed)
-      const MortarDual deta = eta - t;
-      const MortarDual y[2] = {C.x + c1[0] * deta, C.y + c1[1] * deta};
-      const MortarDual m[2] = {m0[0] + (C.x - c0[0]) + m1[0] * deta,
-                               m0[1] + (C.y - c0[1]) + m1[1] * deta};
+      on_curve.kinematics[q] = std::move(point.kinematics);
       for (unsigned int k = 0; k < 2; ++k)
         {
-          on_curve.Y[0][k] += wa * y[k];
-          on_curve.Y[1][k] += wb * y[k];
-          on_curve.moved[0][k] += wa * m[k];
-          on_curve.moved[1][k] += wb * m[k];
+          on_curve.Y[0][k] += wa * point.y[k];
+          on_curve.Y[1][k] += wb * point.y[k];
+          on_curve.moved[0][k] += wa * point.motion[k];
+          on_curve.moved[1][k] += wb * point.motion[k];
         }
-      const auto add_force_weight = [&](const types::global_dof_index dof,
-                                        const unsigned int            component,
-                                        const MortarDual             &weight) {
-        auto &[to_a, to_b] = on_curve.F[{dof, component}];
-        to_a += wa * weight;
-        to_b += wb * weight;
-      };
-      if (curve_surface->transfers_by_segment())
+      for (const mortar::CurveForceWeight &e : point.forces)
         {
-          // The underlying segment's two nodes, by the hat
-          // functions at the curve point's place along the chord
-          // (not at the curve's parameter, whose speed need not be
-          // uniform: on a straight master the two differ near its
-          // ends, and the patch test would fail by their
-          // difference).
-          const DualPoint &Yc = on_curve.segment_ends[0],
-                          &Yd = on_curve.segment_ends[1];
-          const DualPoint  Y{y[0], y[1]}, chord = Yd - Yc;
-          const DualPoint  from_c = Y - Yc;
-          const MortarDual along  = (from_c.x * chord.x + from_c.y * chord.y) /
-                                   (chord.x * chord.x + chord.y * chord.y);
-          for (unsigned int k = 0; k < 2; ++k)
-            {
-              add_force_weight(master_points[i].dofs[k], k, 1. - along);
-              add_force_weight(
-                master_points[(i + 1) % master_points.size()].dofs[k],
-                k,
-                along);
-            }
+          auto &[to_a, to_b] = on_curve.F[{e.dof, e.component}];
+          to_a += wa * e.weight;
+          to_b += wb * e.weight;
         }
-      else
-        // The curve's own weights (the Hermite edge's, the
-        // spline's): the reaction's work conjugate to the gap.
-        for (const SurfaceWeight &e :
-             curve_surface->forces_at(i, t, on_curve.kinematics[q]))
-          add_force_weight(e.dof, e.component, e.value + e.derivative * deta);
       return true;
-    }
-
-
-
-    double
-    Mortar::curve_parameter(const unsigned int i,
-                            const DualPoint   &x,
-                            const DualPoint   &n,
-                            const double       start) const
-    {
-      // Newton on (c(t) - x) x n = 0 in plain numbers.
-      double             t = std::min(1., std::max(0., start));
-      MasterCurve::Point c0{}, c1{}, c2{};
-      for (unsigned int it = 0; it < 30; ++it)
-        {
-          curve->evaluate(i, t, c0, c1, c2);
-          const double F =
-            (c0[0] - x.x.value) * n.y.value - (c0[1] - x.y.value) * n.x.value;
-          const double dF   = c1[0] * n.y.value - c1[1] * n.x.value;
-          const double step = F / dF;
-          t -= step;
-          if (!std::isfinite(t) || std::abs(step) < 1e-15)
-            break;
-        }
-      return t;
     }
 
 
@@ -983,6 +903,9 @@ namespace glissade
 
 
   std::unique_ptr<ContactDiscretisation>
+  create_nurbs_slave_mortar(const ContactDiscretisation::Context &context);
+
+  std::unique_ptr<ContactDiscretisation>
   create_mortar(const ContactDiscretisation::Context &context)
   {
     const std::string entry = context.description.entry;
@@ -1003,6 +926,10 @@ namespace glissade
                        "mortar contact integrates over a master curve "
                        "(Surface = faceted, bspline, hermite or nurbs); '" +
                          context.description.surface + "' is not one");
+    // A slave whose dofs are control points integrates over its own
+    // boundary curve (nurbs_slave_mortar.cc).
+    if (!context.slave.space().capabilities().dofs_are_nodal_values)
+      return create_nurbs_slave_mortar(context);
     return std::make_unique<Mortar>(context);
   }
 } // namespace glissade

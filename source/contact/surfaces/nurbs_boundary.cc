@@ -65,6 +65,7 @@ namespace glissade
   append_nurbs_slave_points(const Body                               &body,
                             const std::string                        &boundary,
                             const std::string                        &entry,
+                            const SlavePointArea                      area_kind,
                             std::vector<ContactNode>                 &nodes,
                             std::vector<std::array<unsigned int, 2>> &faces)
   {
@@ -86,7 +87,8 @@ namespace glissade
         Vector<double>     integral(n), area(n);
         for (unsigned int g = 0; g < n; ++g)
           {
-            const auto [segment, s] = points[g];
+            const unsigned int                     segment = points[g].segment;
+            const double                           s       = points[g].s;
             ContactNode                            node;
             MasterCurve::NodeWeightsAndDerivatives weights;
             curve.weights_and_derivatives(segment, s, weights);
@@ -119,8 +121,14 @@ namespace glissade
               for (const auto &w : weights)
                 integral(w.node) += w.value * dA;
             }
-        R.gauss_jordan();
-        R.vmult(area, integral);
+        if (area_kind == SlavePointArea::collocation)
+          {
+            R.gauss_jordan();
+            R.vmult(area, integral);
+          }
+        else
+          for (unsigned int g = 0; g < n; ++g)
+            area(g) = integral(points[g].control);
         for (unsigned int g = 0; g < n; ++g)
           nodes[first + g].collocation_area = area(g);
 

@@ -76,14 +76,23 @@ namespace glissade
       return segments[segment];
     }
 
+    /** A control point's Greville point: (segment, s) on the curve. */
+    struct GrevillePoint
+    {
+      unsigned int segment;
+      double       s;
+      /** The control point (an index of the data given to update()). */
+      unsigned int control;
+    };
+
     /**
      * The Greville abscissae of the control points (the mean of the p knots
      * each function's support starts with, Hughes, Cottrell & Bazilevs
-     * 2005): where each control point's function peaks, as (segment, s),
-     * each control point once, in the order of the segments. The slave
-     * points of a NURBS body (Matzen, Cichosz & Bischoff 2013).
+     * 2005): where each control point's function peaks, each control point
+     * once, in the order of the segments. The slave points of a NURBS body
+     * (Matzen, Cichosz & Bischoff 2013).
      */
-    std::vector<std::pair<unsigned int, double>>
+    std::vector<GrevillePoint>
     greville_points() const;
 
     /** The number of control points update() expects. */
@@ -114,8 +123,9 @@ namespace glissade
                             double                     s,
                             NodeWeightsAndDerivatives &weights) const override;
 
-  private:
-    /** R_k, dR_k/ds and d2R_k/ds2 of the segment's controls at s. */
+    /** R_k, dR_k/ds and d2R_k/ds2 of the segment's controls at s, in the
+     *  order of Segment::controls (mortar on a NURBS slave differentiates
+     *  the curve's points and normals through them). */
     void
     rational_functions(unsigned int         segment,
                        double               s,
@@ -123,6 +133,7 @@ namespace glissade
                        std::vector<double> &dR,
                        std::vector<double> &d2R) const;
 
+  private:
     const unsigned int         degree;
     const bool                 closed;
     const std::vector<Segment> segments;

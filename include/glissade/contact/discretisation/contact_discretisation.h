@@ -28,7 +28,8 @@ namespace glissade
    *   point on the master surface (the paper's method).
    * - mortar (mortar.cc): the node's dual shape function's integral of the
    *   gap over the slave segments, segment-based (doc/contact.md,
-   *   "Mortar").
+   *   "Mortar"); on a NURBS slave (nurbs_slave_mortar.cc) the control
+   *   point's rational function's integral over the slave's own curve.
    *
    * A new discretisation is a class here and a line in the table of
    * contact_discretisation.cc.

@@ -36,20 +36,32 @@ namespace glissade
     build(const NurbsSpace &space, const MasterChain &chain);
   };
 
+  /** What a NURBS slave point's area (ContactNode::collocation_area) is. */
+  enum class SlavePointArea
+  {
+    /** The collocation weights: sum_g R_A(x_g) w_g = int R_A dA for every
+     *  A (knot-to-segment, whose point forces go by R_A(x_g)). */
+    collocation,
+    /** int R_A dA of the point's control point A (mortar, whose point A
+     *  carries lambda_A int R_A). */
+    function_integral
+  };
+
   /**
    * The slave points of a NURBS body's boundary `boundary` (one name or
    * several): on each of its curves the Greville points of the control
    * points (NurbsCurve::greville_points), as many as the curve's control
-   * points, each with its shares (the control points' rational functions
-   * there) and the exact outward normal; appended to `nodes`, with the
-   * faces that join consecutive points along each curve, and each point's
-   * collocation area (ContactNode::collocation_area, with the body's
-   * out-of-plane measure). `entry` names the boundary in messages.
+   * points, in the order of greville_points(), each with its shares (the
+   * control points' rational functions there) and the exact outward
+   * normal; appended to `nodes`, with the faces that join consecutive
+   * points along each curve, and each point's area (`area`, with the
+   * body's out-of-plane measure). `entry` names the boundary in messages.
    */
   void
   append_nurbs_slave_points(const Body                               &body,
                             const std::string                        &boundary,
                             const std::string                        &entry,
+                            SlavePointArea                            area,
                             std::vector<ContactNode>                 &nodes,
                             std::vector<std::array<unsigned int, 2>> &faces);
 } // namespace glissade

@@ -1,0 +1,658 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/vector.h>
+
+#include <glissade/base/input_error.h>
+#include <glissade/body/body.h>
+#include <glissade/contact/discretisation/contact_discretisation.h>
+#include <glissade/contact/discretisation/mortar_curve_point.h>
+#include <glissade/contact/discretisation/mortar_variables.h>
+#include <glissade/contact/surfaces/curve_surface.h>
+#include <glissade/contact/surfaces/master_chain.h>
+#include <glissade/contact/surfaces/nurbs_boundary.h>
+#include <glissade/description/scene_description.h>
+#include <glissade/fe/nurbs_space.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace glissade
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using mortar::Accumulated;
+    using mortar::add_curve_variables;
+    using mortar::add_scaled;
+    using mortar::DualPoint;
+    using mortar::LocalVariables;
+    using mortar::merge_entries;
+    using mortar::merge_proportional_terms;
+    using mortar::MortarDual;
+
+    /** The curve points' dual variables start here (mortar_variables.h:
+     *  the slave span's p + 1 <= 4 control points and the master segment's
+     *  two nodes come first). */
+    constexpr unsigned int first_curve_variable = 12;
+    constexpr unsigned int n_gauss_points       = 4;
+
+    /** What NurbsSlaveMortar::update() finds for each slave point A. */
+    struct PointState
+    {
+      /** D_A over int R_A on the whole slave curve (1: fully covered). */
+      double coverage = 0.;
+      /** int R_A n (the point's mean normal, for its frame). */
+      Tensor<1, 2> mean_normal;
+      /** D_A = int R_A: the point's share of the covered slave curve. */
+      Accumulated D;
+      /** int R_A n . (x - y) and int R_A t . (motion of x - motion of y),
+       *  x the slave curve, y its master point on the normal n. */
+      Accumulated G, U;
+      /** int R_A R_k (n_x, n_y, t_x, t_y) by slave control point k: where
+       *  a unit normal and tangential reaction go on the slave. */
+      std::map<unsigned int, std::array<Accumulated, 4>> S;
+      /** int R_A w (n_c, t_c) by (master dof, component c), w the master
+       *  curve's force weights: where they go on the master. */
+      std::map<std::pair<types::global_dof_index, unsigned int>,
+               std::array<Accumulated, 2>>
+        F;
+    };
+
+
+
+    /**
+     * Mortar contact with a NURBS slave (Discretisation = mortar on a body
+     * of Element/Space = nurbs): the slave side is the body's own boundary
+     * curve, the multiplier of slave point A is lambda_A R_A, R_A the
+     * boundary's rational function of control point A (the standard basis,
+     * as De Lorenzis, Temizer, Wriggers & Zavarise 2011: positive, so that
+     * int R_A > 0, not biorthogonal). Each point's constraint is its
+     * weighted gap written per unit D_A = int R_A,
+     *
+     *   g_A = int R_A n . (x - y) / D_A,
+     *
+     * x the slave curve, n its normal there (C^(p-1): continuous), y where
+     * that normal meets the master curve, and the reaction r_A = D_A
+     * lambda_A goes to slave control point k by int R_A R_k n / D_A and to
+     * the master by its curve's force weights, int R_A w n / D_A (the
+     * tangential reaction likewise with t): the force is the weighted
+     * gap's work. A uniform lambda makes the consistent loads of a uniform
+     * pressure on both sides (sum_A R_A = 1), so the contact patch test
+     * holds on any pair of patches, and on a curved interface the force
+     * keeps the normal's turn across each function's support (a nodal
+     * normal n_A in its place converged like h^2 on the interference fit,
+     * the curve's own like knot-to-segment). Each slave span is cut where
+     * the master segment's ends fall along the slave normals and
+     * integrated with four Gauss points a cut, every integral
+     * differentiated exactly (forward mode). doc/contact.md, "Mortar with a
+     * NURBS slave".
+     */
+    class NurbsSlaveMortar : public ContactDiscretisation
+    {
+    public:
+      explicit NurbsSlaveMortar(const Context &context);
+
+      void
+      update() override;
+
+      bool
+      project(ContactNode &node, bool keep_segment) const override;
+
+    private:
+      /** One knot span of a slave curve. */
+      struct Span
+      {
+        unsigned int curve, segment;
+      };
+
+      /** A slave point's Greville point and its control point. */
+      struct Greville
+      {
+        unsigned int curve, segment;
+        double       s;
+        unsigned int control; // numbered over all slave curves
+      };
+
+      /**
+       * Cheap tests in plain numbers: master segment i faces the span and
+       * lies within reach, and its ends' images along the slave normals,
+       * s_c and s_d, overlap the span.
+       */
+      bool
+      may_overlap(const Span  &span,
+                  unsigned int i,
+                  double      &s_c,
+                  double      &s_d) const;
+
+      /**
+       * Where the slave normal through y meets span's curve: the s with
+       * (x(s) - y) . x'(s) = 0, by Newton from `start`; NaN if it leaves.
+       */
+      double
+      image(const Span &span, const Point<2> &y, double start) const;
+
+      /** Adds the integrals of the span over master segment i. */
+      void
+      integrate(unsigned int span, unsigned int i);
+
+      /** The dof forces of a unit reaction at point A (state s):
+       *  `direction` 0 normal, 1 tangential. */
+      void
+      add_unit_reaction(const PointState &s,
+                        unsigned int      direction,
+                        DofVector        &out) const;
+
+      const Body         &slave;
+      const Body         &master;
+      const CurveSurface &surface;
+      const MasterChain  &chain;
+      const double        search_distance;
+
+      std::vector<NurbsBoundary> slave_curves;
+      /** The first control point of each slave curve in the numbering
+       *  over all of them. */
+      std::vector<unsigned int>                           first_control;
+      std::vector<std::array<types::global_dof_index, 2>> control_dofs;
+      std::vector<Span>                                   spans;
+      std::vector<Greville>                               greville_of_point;
+      std::vector<unsigned int>                           point_of_control;
+      /** The slave points by their reference place (project() gets copies
+       *  of the pair's nodes too). */
+      std::map<std::pair<double, double>, unsigned int> point_of_place;
+      std::vector<SlaveShares>                          master_node_shares;
+
+      std::vector<PointState> state;
+      /** The current slave control points, their motion since the
+       *  increment began, the current master nodes, and int R_A over each
+       *  slave curve. */
+      std::vector<Point<2>>     control_positions;
+      std::vector<Tensor<1, 2>> control_motions;
+      std::vector<Point<2>>     master_positions;
+      std::vector<double>       function_integrals;
+    };
+
+
+
+    NurbsSlaveMortar::NurbsSlaveMortar(const Context &context)
+      : slave(context.slave)
+      , master(*context.master)
+      , surface(dynamic_cast<const CurveSurface &>(context.surface))
+      , chain(surface.master_chain())
+      , search_distance(context.description.alert_distance)
+    {
+      const auto &space = dynamic_cast<const NurbsSpace &>(slave.space());
+      const std::string &entry = context.description.entry;
+      for (const MasterChain &slave_chain :
+           MasterChain::build_all(slave,
+                                  context.description.slave_boundary,
+                                  entry + "/Slave boundary"))
+        {
+          NurbsBoundary boundary   = NurbsBoundary::build(space, slave_chain);
+          const unsigned int curve = slave_curves.size();
+          const unsigned int first = control_dofs.size();
+          first_control.push_back(first);
+          control_dofs.insert(control_dofs.end(),
+                              boundary.control_dofs.begin(),
+                              boundary.control_dofs.end());
+          for (unsigned int i = 0; i < boundary.curve->n_segments(); ++i)
+            spans.push_back({curve, i});
+          // The pair's points are these curves' Greville points, in this
+          // order (append_nurbs_slave_points).
+          for (const auto &g : boundary.curve->greville_points())
+            greville_of_point.push_back(
+              {curve, g.segment, g.s, first + g.control});
+          slave_curves.push_back(std::move(boundary));
+        }
+      AssertThrow(greville_of_point.size() == context.nodes.size(),
+                  ExcMessage("a slave point per control point"));
+      point_of_control.resize(control_dofs.size());
+      for (unsigned int j = 0; j < context.nodes.size(); ++j)
+        {
+          const Point<2> &X            = context.nodes[j].reference_position;
+          point_of_place[{X[0], X[1]}] = j;
+          point_of_control[greville_of_point[j].control] = j;
+        }
+      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
+        master_node_shares.push_back(surface.node_shares(k));
+      state.resize(context.nodes.size());
+    }
+
+
+
+    double
+    NurbsSlaveMortar::image(const Span     &span,
+                            const Point<2> &y,
+                            const double    start) const
+    {
+      const NurbsCurve  &curve = *slave_curves[span.curve].curve;
+      double             s     = start;
+      MasterCurve::Point x{}, dx{}, ddx{};
+      for (unsigned int it = 0; it < 30; ++it)
+        {
+          curve.evaluate(span.segment, s, x, dx, ddx);
+          const double rx = x[0] - y[0], ry = x[1] - y[1];
+          const double F = rx * dx[0] + ry * dx[1];
+          const double dF =
+            dx[0] * dx[0] + dx[1] * dx[1] + rx * ddx[0] + ry * ddx[1];
+          const double step = F / dF;
+          s -= step;
+          if (!std::isfinite(s) || std::abs(s) > 10.)
+            return std::numeric_limits<double>::quiet_NaN();
+          if (std::abs(step) < 1e-15)
+            break;
+        }
+      return s;
+    }
+
+
+
+    bool
+    NurbsSlaveMortar::may_overlap(const Span        &span,
+                                  const unsigned int i,
+                                  double            &s_c,
+                                  double            &s_d) const
+    {
+      const NurbsCurve &curve = *slave_curves[span.curve].curve;
+      const auto        a     = curve.value(span.segment, 0.),
+                 b            = curve.value(span.segment, 1.);
+      const Point<2>  xa(a[0], a[1]), xb(b[0], b[1]);
+      const Point<2> &yc = master_positions[i],
+                     &yd = master_positions[(i + 1) % master_positions.size()];
+      // The chains have their bodies on the right: the left normals of
+      // the chords point out of each, and face each other.
+      const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
+      const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
+      if (slave_out * master_out >= 0.)
+        return false;
+      const double reach =
+        search_distance + (xb - xa).norm() + (yd - yc).norm();
+      if ((0.5 * (xa + xb)).distance(0.5 * (yc + yd)) > reach)
+        return false;
+      const auto chord_estimate = [&](const Point<2> &y) {
+        return (y - xa) * (xb - xa) / (xb - xa).norm_square();
+      };
+      s_c = image(span, yc, chord_estimate(yc));
+      s_d = image(span, yd, chord_estimate(yd));
+      return std::isfinite(s_c) && std::isfinite(s_d) &&
+             std::min(1., std::max(s_c, s_d)) -
+                 std::max(0., std::min(s_c, s_d)) >
+               1e-12;
+    }
+
+
+
+    void
+    NurbsSlaveMortar::integrate(const unsigned int span_index,
+                                const unsigned int i)
+    {
+      const Span       &span     = spans[span_index];
+      const NurbsCurve &curve    = *slave_curves[span.curve].curve;
+      const auto &local_controls = curve.segment_data(span.segment).controls;
+      const unsigned int n_functions = local_controls.size();
+      const unsigned int c = i, d = (i + 1) % master_positions.size();
+      double             s_c = 0., s_d = 0.;
+      if (!may_overlap(span, i, s_c, s_d))
+        return;
+
+      // The local variables: the span's control points, then the master
+      // segment's end nodes; the curve points' from first_curve_variable.
+      LocalVariables            variables;
+      std::vector<unsigned int> controls;
+      for (const unsigned int m : local_controls)
+        {
+          const unsigned int k = first_control[span.curve] + m;
+          controls.push_back(k);
+          variables.add(0, {{control_dofs[k], 1.}}, control_positions[k]);
+        }
+      const unsigned int lc =
+        variables.add(1, master_node_shares[c], master_positions[c]);
+      const unsigned int ld =
+        variables.add(1, master_node_shares[d], master_positions[d]);
+      const unsigned int n_used = variables.n_used();
+      const DualPoint    Yc     = variables.coordinates[lc];
+      const DualPoint    Yd     = variables.coordinates[ld];
+      const auto         P = [&](const unsigned int m) -> const DualPoint         &{
+        return variables.coordinates[m];
+      };
+
+      // The span's functions, point and tangent at a dual parameter s:
+      // R_m(s) to first order in s's dual part, which is all the
+      // derivatives need.
+      std::vector<double>     r, dr, d2r;
+      std::vector<MortarDual> R(n_functions);
+      const auto              on_span =
+        [&](const MortarDual &s, DualPoint &x, DualPoint &dx) {
+          curve.rational_functions(span.segment, s.value, r, dr, d2r);
+          const MortarDual ds = s - s.value;
+          x = dx = {MortarDual(0.), MortarDual(0.)};
+          for (unsigned int m = 0; m < n_functions; ++m)
+            {
+              R[m] = r[m] + dr[m] * ds;
+              x    = x + R[m] * P(m);
+              dx   = dx + (dr[m] + d2r[m] * ds) * P(m);
+            }
+        };
+      // A master end's image: one Newton step on the duals from the plain
+      // root s of (x(s) - y) . x'(s) = 0.
+      const auto cut = [&](const DualPoint &y, const double s) {
+        curve.rational_functions(span.segment, s, r, dr, d2r);
+        DualPoint x{MortarDual(0.), MortarDual(0.)}, dx = x, ddx = x;
+        for (unsigned int m = 0; m < n_functions; ++m)
+          {
+            x   = x + MortarDual(r[m]) * P(m);
+            dx  = dx + MortarDual(dr[m]) * P(m);
+            ddx = ddx + MortarDual(d2r[m]) * P(m);
+          }
+        const DualPoint  to = x - y;
+        const MortarDual F  = to.x * dx.x + to.y * dx.y;
+        const MortarDual dF =
+          dx.x * dx.x + dx.y * dx.y + to.x * ddx.x + to.y * ddx.y;
+        return s - F / dF;
+      };
+      const MortarDual  sc = cut(Yc, s_c), sd = cut(Yd, s_d);
+      const MortarDual &first = sd.value < sc.value ? sd : sc;
+      const MortarDual &last  = sd.value < sc.value ? sc : sd;
+      const MortarDual  lower = first.value > 0. ? first : MortarDual(0.);
+      const MortarDual  upper = last.value < 1. ? last : MortarDual(1.);
+
+      // Per function m of the span: D, G, U, S (by the span's function),
+      // F (by master dof and component), as in PointState.
+      struct Integrals
+      {
+        MortarDual              D = 0., G = 0., U = 0.;
+        Tensor<1, 2>            mean_normal;
+        std::vector<MortarDual> S;
+        std::map<std::pair<types::global_dof_index, unsigned int>,
+                 std::array<MortarDual, 2>>
+          F;
+      };
+      std::vector<Integrals> integrals(n_functions);
+      for (auto &in : integrals)
+        in.S.assign(4 * n_functions, MortarDual(0.));
+      std::vector<std::vector<SurfaceWeight>> kinematics(n_gauss_points);
+
+      // Gauss-Legendre, four points a cut: exact for the flat patch
+      // (R_A R_k of degree 2p <= 6 on straight spans of uniform speed).
+      static const QGauss<1> gauss(n_gauss_points);
+      for (unsigned int q = 0; q < n_gauss_points; ++q)
+        {
+          const MortarDual s = lower + gauss.point(q)[0] * (upper - lower);
+          DualPoint        x, dx;
+          on_span(s, x, dx);
+          const MortarDual speed = sqrt(dx.x * dx.x + dx.y * dx.y);
+          const MortarDual w     = gauss.weight(q) * (upper - lower) * speed;
+          // The slave normal, from the master into the slave (as a master
+          // surface's normal points): minus the chain's left normal.
+          const DualPoint n{dx.y / speed, -dx.x / speed};
+          const double    eta_estimate =
+            (mortar::cross(x - Yc, n) / mortar::cross(Yd - Yc, n)).value;
+          mortar::CurvePoint point;
+          if (!mortar::find_curve_point(surface,
+                                        master,
+                                        i,
+                                        first_curve_variable + 2 * q,
+                                        x,
+                                        n,
+                                        eta_estimate,
+                                        {{Yc, Yd}},
+                                        {{chain.value_dofs[c],
+                                          chain.value_dofs[d]}},
+                                        point))
+            return; // (the normal runs along the master: nothing added)
+          kinematics[q] = std::move(point.kinematics);
+          // The slave's motion: sum_k R_k (u_k - u0_k), which changes with
+          // the control points as they do.
+          MortarDual moved[2] = {0., 0.};
+          for (unsigned int m = 0; m < n_functions; ++m)
+            for (unsigned int k = 0; k < 2; ++k)
+              {
+                const MortarDual &Pk = k == 0 ? P(m).x : P(m).y;
+                moved[k] +=
+                  R[m] * (control_motions[controls[m]][k] + (Pk - Pk.value));
+              }
+          const DualPoint  t{n.y, -n.x};
+          const MortarDual gap =
+            n.x * (x.x - point.y[0]) + n.y * (x.y - point.y[1]);
+          const MortarDual slip = t.x * (moved[0] - point.motion[0]) +
+                                  t.y * (moved[1] - point.motion[1]);
+          const MortarDual directions[4] = {n.x, n.y, t.x, t.y};
+          for (unsigned int m = 0; m < n_functions; ++m)
+            {
+              Integrals       &in = integrals[m];
+              const MortarDual wR = w * R[m];
+              in.D += wR;
+              in.G += wR * gap;
+              in.U += wR * slip;
+              in.mean_normal += wR.value * Tensor<1, 2>({n.x.value, n.y.value});
+              for (unsigned int l = 0; l < n_functions; ++l)
+                {
+                  const MortarDual wRR = wR * R[l];
+                  for (unsigned int e = 0; e < 4; ++e)
+                    in.S[4 * l + e] += wRR * directions[e];
+                }
+              for (const mortar::CurveForceWeight &f : point.forces)
+                {
+                  auto &[normal, tangential] = in.F[{f.dof, f.component}];
+                  normal += wR * f.weight * directions[f.component];
+                  tangential += wR * f.weight * directions[2 + f.component];
+                }
+            }
+        }
+
+      const auto add = [&](Accumulated &to, const MortarDual &v) {
+        to.add(v, variables.dofs, n_used);
+        add_curve_variables(v, kinematics, first_curve_variable, to);
+      };
+      for (unsigned int m = 0; m < n_functions; ++m)
+        {
+          PointState      &to = state[point_of_control[controls[m]]];
+          const Integrals &in = integrals[m];
+          add(to.D, in.D);
+          add(to.G, in.G);
+          add(to.U, in.U);
+          to.mean_normal += in.mean_normal;
+          for (unsigned int l = 0; l < n_functions; ++l)
+            for (unsigned int e = 0; e < 4; ++e)
+              add(to.S[controls[l]][e], in.S[4 * l + e]);
+          for (const auto &[key, weights] : in.F)
+            for (unsigned int e = 0; e < 2; ++e)
+              add(to.F[key][e], weights[e]);
+        }
+    }
+
+
+
+    void
+    NurbsSlaveMortar::update()
+    {
+      const Vector<double> &u  = slave.displacement();
+      const Vector<double> &u0 = slave.stored_displacement();
+      control_positions.resize(control_dofs.size());
+      control_motions.resize(control_dofs.size());
+      for (unsigned int c = 0; c < slave_curves.size(); ++c)
+        {
+          NurbsBoundary                  &boundary = slave_curves[c];
+          std::vector<MasterCurve::Point> current;
+          for (unsigned int m = 0; m < boundary.control_points.size(); ++m)
+            {
+              const unsigned int k = first_control[c] + m;
+              for (unsigned int e = 0; e < 2; ++e)
+                {
+                  control_positions[k][e] =
+                    boundary.control_points[m][e] + u(control_dofs[k][e]);
+                  control_motions[k][e] =
+                    u(control_dofs[k][e]) - u0(control_dofs[k][e]);
+                }
+              current.push_back(
+                {{control_positions[k][0], control_positions[k][1]}});
+            }
+          boundary.curve->update(current);
+        }
+      const Vector<double> &um = master.displacement();
+      master_positions.resize(chain.vertices.size());
+      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
+        {
+          master_positions[k] = chain.reference_points[k];
+          for (const SlaveShare &share : master_node_shares[k])
+            for (unsigned int e = 0; e < 2; ++e)
+              master_positions[k][e] += share.weight * um(share.dofs[e]);
+        }
+
+      // int R_A over each whole slave curve: what covers a point fully.
+      function_integrals.assign(control_dofs.size(), 0.);
+      for (const Span &span : spans)
+        {
+          const NurbsCurve   &curve = *slave_curves[span.curve].curve;
+          const QGauss<1>     rule(curve.degree_of_curve() + 3);
+          std::vector<double> r, dr, d2r;
+          for (unsigned int q = 0; q < rule.size(); ++q)
+            {
+              const auto dx = curve.derivative(span.segment, rule.point(q)[0]);
+              curve.rational_functions(
+                span.segment, rule.point(q)[0], r, dr, d2r);
+              const auto &local = curve.segment_data(span.segment).controls;
+              for (unsigned int m = 0; m < local.size(); ++m)
+                function_integrals[first_control[span.curve] + local[m]] +=
+                  r[m] * std::hypot(dx[0], dx[1]) * rule.weight(q);
+            }
+        }
+
+      for (PointState &s : state)
+        s = PointState();
+      for (unsigned int f = 0; f < spans.size(); ++f)
+        for (unsigned int i = 0;
+             i + (chain.closed ? 0 : 1) < master_positions.size();
+             ++i)
+          integrate(f, i);
+
+      for (unsigned int j = 0; j < state.size(); ++j)
+        {
+          PointState &s = state[j];
+          s.coverage =
+            s.F.empty() ?
+              0. :
+              s.D.value / function_integrals[greville_of_point[j].control];
+          for (Accumulated *a : {&s.D, &s.G, &s.U})
+            merge_entries(a->gradient);
+          for (auto &[k, S] : s.S)
+            for (Accumulated &a : S)
+              merge_entries(a.gradient);
+          for (auto &[key, F] : s.F)
+            for (Accumulated &a : F)
+              merge_entries(a.gradient);
+        }
+    }
+
+
+
+    void
+    NurbsSlaveMortar::add_unit_reaction(const PointState  &s,
+                                        const unsigned int direction,
+                                        DofVector         &out) const
+    {
+      // The slave's control point k with int R_A R_k n / D_A (or t), the
+      // master's dofs with minus int R_A w n / D_A.
+      const double D = s.D.value;
+      for (const auto &[k, S] : s.S)
+        for (unsigned int c = 0; c < 2; ++c)
+          out.push_back(
+            {0, control_dofs[k][c], S[2 * direction + c].value / D});
+      for (const auto &[key, F] : s.F)
+        out.push_back({1, key.first, -F[direction].value / D});
+    }
+
+
+
+    bool
+    NurbsSlaveMortar::project(ContactNode &node, const bool keep_segment) const
+    {
+      const auto at = point_of_place.find(
+        {node.reference_position[0], node.reference_position[1]});
+      if (at == point_of_place.end())
+        return false;
+      // Half the point's function covered to come into contact, a
+      // twentieth to keep its counterpart within the increment (as for Q1
+      // slaves, mortar.cc).
+      const PointState &s = state[at->second];
+      if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
+        return false;
+      const double D = s.D.value;
+
+      ContactLinearization l;
+      l.gap  = s.G.value / D;
+      l.slip = s.U.value / D;
+      add_unit_reaction(s, 0, l.normal_force);
+      add_unit_reaction(s, 1, l.tangential_force);
+      // d(G / D) = dG / D - g dD / D, and the slip likewise.
+      add_scaled(l.gap_row, 1. / D, s.G.gradient);
+      add_scaled(l.gap_row, -l.gap / D, s.D.gradient);
+      add_scaled(l.slip_row, 1. / D, s.U.gradient);
+      add_scaled(l.slip_row, -l.slip / D, s.D.gradient);
+
+      // The contact tangent at fixed reaction (r_t, r_n): each force
+      // entry r_n N / D + r_t T / D changes with its integrals and D.
+      const double r_t = node.reaction[0], r_n = node.reaction[1];
+      const auto   change_of = [&](const Accumulated &normal,
+                                 const Accumulated &tangential) {
+        DofVector dw;
+        add_scaled(dw, r_n / D, normal.gradient);
+        add_scaled(dw, r_t / D, tangential.gradient);
+        add_scaled(dw,
+                   -(r_n * normal.value + r_t * tangential.value) / D / D,
+                   s.D.gradient);
+        return dw;
+      };
+      if (r_n != 0. || r_t != 0.)
+        {
+          for (const auto &[k, S] : s.S)
+            for (unsigned int c = 0; c < 2; ++c)
+              l.tangent_terms.push_back(
+                {{{0, control_dofs[k][c], 1.}}, change_of(S[c], S[2 + c])});
+          for (const auto &[key, F] : s.F)
+            l.tangent_terms.push_back(
+              {{{1, key.first, -1.}}, change_of(F[0], F[1])});
+        }
+      merge_proportional_terms(l.tangent_terms);
+      merge_entries(l.gap_row);
+      merge_entries(l.slip_row);
+      // The point's frame: its mean normal (the force's direction where
+      // the curve is straight).
+      const Tensor<1, 2> n = s.mean_normal / s.mean_normal.norm();
+      node.segment         = -1;
+      node.s               = 0.;
+      node.at_vertex       = false;
+      node.normal          = n;
+      node.tangent         = Tensor<1, 2>({n[1], -n[0]});
+      node.gap             = l.gap;
+      node.linearization   = std::move(l);
+      return true;
+    }
+  } // namespace
+
+
+
+  std::unique_ptr<ContactDiscretisation>
+  create_nurbs_slave_mortar(const ContactDiscretisation::Context &context)
+  {
+    const std::string &entry = context.description.entry;
+    if (context.master == nullptr)
+      throw InputError(entry + "/Discretisation",
+                       "mortar contact with a NURBS slave (body '" +
+                         context.slave.name() +
+                         "') integrates against a deformable master's "
+                         "curve; against a rigid obstacle use "
+                         "node-to-segment (the Greville points)");
+    const auto &space = dynamic_cast<const NurbsSpace &>(context.slave.space());
+    // The slave span's p + 1 control points and the master segment's two
+    // nodes take the first twelve dual variables (mortar_variables.h).
+    if (space.patch().xi.degree() > 3)
+      throw InputError(entry + "/Discretisation",
+                       "mortar contact with a NURBS slave is built for "
+                       "degrees 2 and 3; body '" +
+                         context.slave.name() + "' has Element/Degree = " +
+                         std::to_string(space.patch().xi.degree()) +
+                         ": use node-to-segment");
+    return std::make_unique<NurbsSlaveMortar>(context);
+  }
+} // namespace glissade
