@@ -509,34 +509,43 @@ GLISSADE_TEST(nurbs_contact_input_errors)
 // prm/nurbs_interference_fit.prm, as its header says: the fit's free
 // sides within 2e-5 of Lame's radial displacements, and the contact
 // force on the quarter, p b in each direction (the pressure's resultant
-// on a quarter arc of radius b), within 1e-5.
+// on a quarter arc of radius b), within 1e-5; knot-to-segment as the file
+// has it, and mortar on both NURBS boundaries (the nodes' reported forces
+// the resultants of their forces, which follow the curve's normal).
 GLISSADE_TEST(nurbs_interference_fit_scene)
 {
-  Simulation simulation(
-    SceneReader::read_file(source_path("prm/nurbs_interference_fit.prm"),
-                           {"Output/Directory=output/nurbs_interference_fit",
-                            "Output/Progress=false",
-                            "Output/Plots=false"}));
-  simulation.advance_to(1., "increment 1");
-  const auto exact = lame_interference_fit(1., 1.5, 2., 1e-3, 1000., 0.3);
-  check_relative(vertex_displacement(simulation.body("inner"),
-                                     Point<2>(1., 0.))[0],
-                 exact[0],
-                 2e-5,
-                 "u_r(1)");
-  check_relative(vertex_displacement(simulation.body("outer"),
-                                     Point<2>(2., 0.))[0],
-                 exact[1],
-                 2e-5,
-                 "u_r(2)");
-  Tensor<1, 2> on_inner;
-  for (const auto &node : simulation.contact().contact_pairs()[0]->nodes())
-    if (node.active)
-      on_inner += node.force();
-  for (unsigned int c = 0; c < 2; ++c)
-    check_relative(-on_inner[c],
-                   exact[2] * 1.5,
-                   1e-5,
-                   "the contact force on the inner quarter, component " +
-                     std::to_string(c));
+  // (and with mortar on both NURBS boundaries, as the README says)
+  for (const std::string discretisation : {"node-to-segment", "mortar"})
+    {
+      Simulation simulation(SceneReader::read_file(
+        source_path("prm/nurbs_interference_fit.prm"),
+        {"Output/Directory=output/nurbs_interference_fit_" + discretisation,
+         "Output/Progress=false",
+         "Output/Plots=false",
+         "Contact fit/Discretisation=" + discretisation}));
+      simulation.advance_to(1., "increment 1");
+      const auto exact = lame_interference_fit(1., 1.5, 2., 1e-3, 1000., 0.3);
+      check_relative(vertex_displacement(simulation.body("inner"),
+                                         Point<2>(1., 0.))[0],
+                     exact[0],
+                     2e-5,
+                     discretisation + ": u_r(1)");
+      check_relative(vertex_displacement(simulation.body("outer"),
+                                         Point<2>(2., 0.))[0],
+                     exact[1],
+                     2e-5,
+                     discretisation + ": u_r(2)");
+      Tensor<1, 2> on_inner;
+      for (const auto &node : simulation.contact().contact_pairs()[0]->nodes())
+        if (node.active)
+          on_inner += node.force();
+      for (unsigned int c = 0; c < 2; ++c)
+        check_relative(-on_inner[c],
+                       exact[2] * 1.5,
+                       1e-5,
+                       discretisation +
+                         ": the contact force on the inner quarter, "
+                         "component " +
+                         std::to_string(c));
+    }
 }

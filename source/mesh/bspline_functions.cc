@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace glissade
@@ -19,17 +21,22 @@ namespace glissade
                             std::vector<double>       &second_derivatives)
   {
     const unsigned int p = degree;
+    // (on the stack: the curves evaluate this at every Gauss point and
+    // Newton step of the contact search)
+    constexpr unsigned int max_degree = 10;
+    if (p > max_degree)
+      throw std::invalid_argument("B-spline functions of degree " +
+                                  std::to_string(p) + " (at most " +
+                                  std::to_string(max_degree) + ")");
     // Piegl & Tiller's A2.3: the triangle ndu of the functions of every
     // degree up to p and the knot differences, then the derivatives from
     // it.
-    std::vector<std::vector<double>> ndu(p + 1, std::vector<double>(p + 1, 0.));
-    std::vector<double>              left(p + 1), right(p + 1);
-    std::array<std::vector<double>, 2> a{
-      {std::vector<double>(p + 1), std::vector<double>(p + 1)}};
-    const unsigned int                 n_derivatives = std::min(2u, p);
-    std::array<std::vector<double>, 3> ders;
-    for (auto &row : ders)
-      row.assign(p + 1, 0.);
+    using Row = std::array<double, max_degree + 1>;
+    std::array<Row, max_degree + 1> ndu{};
+    Row                             left{}, right{};
+    std::array<Row, 2>              a{};
+    const unsigned int              n_derivatives = std::min(2u, p);
+    std::array<Row, 3>              ders{};
     ndu[0][0] = 1.;
     for (unsigned int j = 1; j <= p; ++j)
       {
@@ -83,9 +90,9 @@ namespace glissade
           ders[k][j] *= factor;
         factor *= double(p) - double(k);
       }
-    values             = ders[0];
-    first_derivatives  = ders[1];
-    second_derivatives = ders[2];
+    values.assign(ders[0].begin(), ders[0].begin() + p + 1);
+    first_derivatives.assign(ders[1].begin(), ders[1].begin() + p + 1);
+    second_derivatives.assign(ders[2].begin(), ders[2].begin() + p + 1);
   }
 
 } // namespace glissade

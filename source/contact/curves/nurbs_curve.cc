@@ -103,7 +103,9 @@ namespace glissade
     const double   a = segment.knots[degree - 1], b = segment.knots[degree];
     const double   du_ds = segment.reversed ? a - b : b - a;
     const double   u     = segment.reversed ? b + s * du_ds : a + s * du_ds;
-    std::vector<double> N, dN, d2N;
+    // (kept between calls: the contact search evaluates this at every
+    // Gauss point and Newton step)
+    thread_local std::vector<double> N, dN, d2N;
     bspline_functions_on_span(degree, segment.knots, degree - 1, u, N, dN, d2N);
     // R = N w / W, differentiated in u, then in s by the chain rule.
     double W = 0., dW = 0., d2W = 0.;

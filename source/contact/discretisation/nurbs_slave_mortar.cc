@@ -28,7 +28,6 @@ namespace glissade
     using mortar::DualPoint;
     using mortar::LocalVariables;
     using mortar::merge_entries;
-    using mortar::merge_proportional_terms;
     using mortar::MortarDual;
 
     /** The curve points' dual variables start here (mortar_variables.h:
@@ -49,9 +48,10 @@ namespace glissade
       /** int R_A n . (x - y) and int R_A t . (motion of x - motion of y),
        *  x the slave curve, y its master point on the normal n. */
       Accumulated G, U;
-      /** int R_A R_k (n_x, n_y, t_x, t_y) by slave control point k: where
-       *  a unit normal and tangential reaction go on the slave. */
-      std::map<unsigned int, std::array<Accumulated, 4>> S;
+      /** int R_A R_k (n_x, n_y) by slave control point k: where a unit
+       *  normal reaction goes on the slave; a tangential one by
+       *  t = (n_y, -n_x). */
+      std::map<unsigned int, std::array<Accumulated, 2>> S;
       /** int R_A w (n_c, t_c) by (master dof, component c), w the master
        *  curve's force weights: where they go on the master. */
       std::map<std::pair<types::global_dof_index, unsigned int>,
@@ -85,8 +85,8 @@ namespace glissade
      * the curve's own like knot-to-segment). Each slave span is cut where
      * the master segment's ends fall along the slave normals and
      * integrated with four Gauss points a cut, every integral
-     * differentiated exactly (forward mode). doc/contact.md, "Mortar with a
-     * NURBS slave".
+     * differentiated exactly (forward mode). doc/contact.md, "Isogeometric
+     * contact", "Mortar with a NURBS slave".
      */
     class NurbsSlaveMortar : public ContactDiscretisation
     {
@@ -369,7 +369,7 @@ namespace glissade
       };
       std::vector<Integrals> integrals(n_functions);
       for (auto &in : integrals)
-        in.S.assign(4 * n_functions, MortarDual(0.));
+        in.S.assign(2 * n_functions, MortarDual(0.));
       std::vector<std::vector<SurfaceWeight>> kinematics(n_gauss_points);
 
       // Gauss-Legendre, four points a cut: exact for the flat patch
@@ -428,8 +428,8 @@ namespace glissade
               for (unsigned int l = 0; l < n_functions; ++l)
                 {
                   const MortarDual wRR = wR * R[l];
-                  for (unsigned int e = 0; e < 4; ++e)
-                    in.S[4 * l + e] += wRR * directions[e];
+                  in.S[2 * l] += wRR * n.x;
+                  in.S[2 * l + 1] += wRR * n.y;
                 }
               for (const mortar::CurveForceWeight &f : point.forces)
                 {
@@ -453,8 +453,8 @@ namespace glissade
           add(to.U, in.U);
           to.mean_normal += in.mean_normal;
           for (unsigned int l = 0; l < n_functions; ++l)
-            for (unsigned int e = 0; e < 4; ++e)
-              add(to.S[controls[l]][e], in.S[4 * l + e]);
+            for (unsigned int e = 0; e < 2; ++e)
+              add(to.S[controls[l]][e], in.S[2 * l + e]);
           for (const auto &[key, weights] : in.F)
             for (unsigned int e = 0; e < 2; ++e)
               add(to.F[key][e], weights[e]);
@@ -554,10 +554,15 @@ namespace glissade
       // The slave's control point k with int R_A R_k n / D_A (or t), the
       // master's dofs with minus int R_A w n / D_A.
       const double D = s.D.value;
+      // (t = (n_y, -n_x))
       for (const auto &[k, S] : s.S)
         for (unsigned int c = 0; c < 2; ++c)
-          out.push_back(
-            {0, control_dofs[k][c], S[2 * direction + c].value / D});
+          out.push_back({0,
+                         control_dofs[k][c],
+                         (direction == 0 ? S[c].value :
+                          c == 0         ? S[1].value :
+                                           -S[0].value) /
+                           D});
       for (const auto &[key, F] : s.F)
         out.push_back({1, key.first, -F[direction].value / D});
     }
@@ -593,39 +598,48 @@ namespace glissade
       // The contact tangent at fixed reaction (r_t, r_n): each force
       // entry r_n N / D + r_t T / D changes with its integrals and D.
       const double r_t = node.reaction[0], r_n = node.reaction[1];
-      const auto   change_of = [&](const Accumulated &normal,
-                                 const Accumulated &tangential) {
-        DofVector dw;
+      // (tangential_sign: the slave's t_y = -n_x)
+      const auto change_of = [&](const Accumulated &normal,
+                                 const Accumulated &tangential,
+                                 const double       tangential_sign = 1.) {
+        const double t = tangential_sign * r_t;
+        DofVector    dw;
         add_scaled(dw, r_n / D, normal.gradient);
-        add_scaled(dw, r_t / D, tangential.gradient);
+        add_scaled(dw, t / D, tangential.gradient);
         add_scaled(dw,
-                   -(r_n * normal.value + r_t * tangential.value) / D / D,
+                   -(r_n * normal.value + t * tangential.value) / D / D,
                    s.D.gradient);
         return dw;
       };
       if (r_n != 0. || r_t != 0.)
         {
           for (const auto &[k, S] : s.S)
-            for (unsigned int c = 0; c < 2; ++c)
+            {
               l.tangent_terms.push_back(
-                {{{0, control_dofs[k][c], 1.}}, change_of(S[c], S[2 + c])});
+                {{{0, control_dofs[k][0], 1.}}, change_of(S[0], S[1])});
+              l.tangent_terms.push_back(
+                {{{0, control_dofs[k][1], 1.}}, change_of(S[1], S[0], -1.)});
+            }
           for (const auto &[key, F] : s.F)
             l.tangent_terms.push_back(
               {{{1, key.first, -1.}}, change_of(F[0], F[1])});
         }
-      merge_proportional_terms(l.tangent_terms);
+      // (each term's load is one dof: the contact problem sums them over
+      // the nodes, ContactProblem::active_nodes)
       merge_entries(l.gap_row);
       merge_entries(l.slip_row);
-      // The point's frame: its mean normal (the force's direction where
-      // the curve is straight).
-      const Tensor<1, 2> n = s.mean_normal / s.mean_normal.norm();
-      node.segment         = -1;
-      node.s               = 0.;
-      node.at_vertex       = false;
-      node.normal          = n;
-      node.tangent         = Tensor<1, 2>({n[1], -n[0]});
-      node.gap             = l.gap;
-      node.linearization   = std::move(l);
+      // The point's frame: its mean normal int R_A n / D_A, whose length
+      // (1 where the curve is straight) is what a unit reaction's forces
+      // sum to.
+      const Tensor<1, 2> n  = s.mean_normal / s.mean_normal.norm();
+      node.resultant_factor = s.mean_normal.norm() / D;
+      node.segment          = -1;
+      node.s                = 0.;
+      node.at_vertex        = false;
+      node.normal           = n;
+      node.tangent          = Tensor<1, 2>({n[1], -n[0]});
+      node.gap              = l.gap;
+      node.linearization    = std::move(l);
       return true;
     }
   } // namespace

@@ -4,6 +4,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/base/timing_sections.h>
+#include <glissade/contact/discretisation/mortar_variables.h>
 #include <glissade/contact/step/contact_problem.h>
 #include <glissade/contact/step/held_by_contact.h>
 #include <glissade/contact/surfaces/surface_registry.h>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace glissade
@@ -394,8 +396,12 @@ namespace glissade
       nodes.terms.push_back(
         {{&spring_loads[s], {{spring_body[s], numbers::invalid_unsigned_int}}},
          {&spring_rows[s], {{spring_body[s], numbers::invalid_unsigned_int}}}});
+    merged_loads.clear();
+    merged_rows.clear();
     for (auto &pair : pairs)
       {
+        std::map<std::pair<unsigned int, types::global_dof_index>, DofVector>
+                                          on_one_dof;
         const std::array<unsigned int, 2> b = {
           {body_index(&pair->slave()),
            pair->master() ? body_index(pair->master()) :
@@ -416,9 +422,30 @@ namespace glissade
               nodes.rows.push_back({&l.slip_row, b});
               nodes.rows.push_back({&l.gap_row, b});
               for (const auto &term : l.tangent_terms)
-                if (!term.load.empty() && !term.row.empty())
+                if (term.load.size() == 1 && !term.row.empty())
+                  {
+                    // (summed below with the other nodes' terms on the
+                    // same dof)
+                    const DofCoefficient &e = term.load.front();
+                    mortar::add_scaled(on_one_dof[{e.body, e.dof}],
+                                       e.value,
+                                       term.row);
+                  }
+                else if (!term.load.empty() && !term.row.empty())
                   nodes.terms.push_back({{&term.load, b}, {&term.row, b}});
             }
+        // The terms whose load is one dof (mortar's force weights: each
+        // dof is reached by several nodes) as one term per dof: every term
+        // costs the condensed step a solve and a column of its Woodbury
+        // system.
+        for (auto &[dof, row] : on_one_dof)
+          {
+            mortar::merge_entries(row);
+            merged_loads.push_back({{dof.first, dof.second, 1.}});
+            merged_rows.push_back(std::move(row));
+            nodes.terms.push_back(
+              {{&merged_loads.back(), b}, {&merged_rows.back(), b}});
+          }
       }
     return nodes;
   }

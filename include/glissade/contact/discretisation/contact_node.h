@@ -136,10 +136,19 @@ namespace glissade
       status = static_cast<BiPotentialSolver::NodeStatus>(status_code);
     }
 
+    /**
+     * What the forces of a unit reaction sum to on the slave, along the
+     * node's frame: 1, but for mortar on a NURBS slave, whose forces follow
+     * the curve's normal across the point's function, |int R_A n| / int
+     * R_A (set by its projection).
+     */
+    double resultant_factor = 1.;
+
+    /** The resultant of the node's forces on the slave. */
     dealii::Tensor<1, 2>
     force() const
     {
-      return reaction[0] * tangent + reaction[1] * normal;
+      return resultant_factor * (reaction[0] * tangent + reaction[1] * normal);
     }
   };
 } // namespace glissade

@@ -9,6 +9,7 @@
 #include <glissade/description/scene_description.h>
 
 #include <algorithm>
+#include <deque>
 #include <memory>
 #include <vector>
 
@@ -233,6 +234,12 @@ namespace glissade
     /** The springs of bodies held by contact, as rank-one terms (active_nodes).
      */
     std::vector<DofVector> spring_loads, spring_rows;
+    /**
+     * A pair's tangent terms whose load is one dof, summed over its nodes
+     * into one term per dof (active_nodes): the unit loads and the summed
+     * rows. A deque, so that the terms' pointers stay put.
+     */
+    std::deque<DofVector> merged_loads, merged_rows;
 
     /** The bodies of the contact pairs. */
     std::vector<unsigned int> bodies_in_contact;
