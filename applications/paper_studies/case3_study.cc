@@ -220,8 +220,8 @@ namespace glissade
     const double window_degrees = 2. * 360. / outer_elements;
     // A NURBS ring's slave points are its Greville points, closer together
     // where the ring's arcs join: what is uniform there is the pressure,
-    // a point's force over its area (its collocation area, or int R_A with
-    // mortar), not the force.
+    // a point's reaction over its area (its collocation area, or int R_A
+    // with mortar), not the force.
     const bool                per_area = variant.rfind("nurbs", 0) == 0;
     const std::vector<double> area     = pair.tributary_areas();
     simulation.on_increment = [&](const unsigned int increment, double) {
@@ -247,7 +247,14 @@ namespace glissade
       for (unsigned int k = 0; k < pair.nodes().size(); ++k)
         if (const ContactNode &node = pair.nodes()[k]; node.active)
           {
-            forces.push_back(node.force().norm() / (per_area ? area[k] : 1.));
+            // (per area: the reaction over it, the contact tables'
+            // pressure; with mortar on a NURBS slave the resultant of the
+            // point's forces is shorter, their normal turning across its
+            // function's support)
+            forces.push_back(per_area ?
+                               std::hypot(node.reaction[0], node.reaction[1]) /
+                                 area[k] :
+                               node.force().norm());
             // The slave nodes are on the inner ring: x x f about (0, 0) at
             // the node's current position (its own value dofs: no vertex
             // search at every increment).
