@@ -54,8 +54,10 @@ namespace
     // (with mortar_ before them: mortar on the NURBS slave's own curve)
     const std::string unprefixed =
       master.rfind("mortar_", 0) == 0 ? master.substr(7) : master;
-    const bool nurbs_slave =
-      unprefixed == "nurbs_slave" || unprefixed == "nurbs_on_nurbs";
+    // nurbs_slave_on_<obstacle>: a NURBS slave on that rigid obstacle.
+    const bool nurbs_slave = unprefixed == "nurbs_slave" ||
+                             unprefixed == "nurbs_on_nurbs" ||
+                             unprefixed.rfind("nurbs_slave_on_", 0) == 0;
     text +=
       nurbs_slave ?
         block("upper", "0, 0.5", "1, 1", "6, 2", "nurbs", "left: x; top: y") :
@@ -70,7 +72,9 @@ namespace
     // a NURBS master's exact boundary; mortar_nurbs_slave,
     // mortar_nurbs_on_nurbs: mortar on a NURBS slave's own curve.
     const bool        on_obstacle_mortar = master.rfind("mortar_", 0) == 0;
-    const std::string kind = on_obstacle_mortar ? master.substr(7) : master;
+    const std::string kind = unprefixed.rfind("nurbs_slave_on_", 0) == 0 ?
+                               unprefixed.substr(15) :
+                               unprefixed;
     if (on_obstacle_mortar)
       contact += " set Discretisation = mortar\n";
     if (kind == "line" || kind == "disk" || kind == "hole" || kind == "casing")
@@ -391,6 +395,9 @@ CONTACT_TANGENT_TEST(mortar_nurbs_slave, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, frictionless)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, stick)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_disk, frictionless)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_disk, stick)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_casing, slip)
 CONTACT_TANGENT_TEST(mortar_line, slip)
 CONTACT_TANGENT_TEST(mortar_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_disk, stick)

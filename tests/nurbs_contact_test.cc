@@ -98,6 +98,103 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /** What the NURBS-on-NURBS patch test measures in one configuration. */
+  struct NurbsPatchFigures
+  {
+    std::string  label;
+    unsigned int active = 0, points = 0;
+    /** The contact force in y against the top's support, relative. */
+    double balance = 0.;
+    /** The slave's control forces against the consistent loads of the
+     *  applied traction, relative to the largest. */
+    double load_error = 0.;
+    /** Each point's reaction over its area against the applied traction
+     *  (the contact tables' pressure), relative. */
+    double point_error = 0.;
+  };
+
+  /**
+   * The patch test with NURBS on both sides, p = 2 and 3, 5 elements on 8
+   * and 7 on 13, each block as slave, by `discretisation`: its figures,
+   * printed.
+   */
+  std::vector<NurbsPatchFigures>
+  nurbs_patch_figures(const std::string &discretisation)
+  {
+    std::vector<NurbsPatchFigures> all;
+    for (const unsigned int degree : {2u, 3u})
+      for (const auto &[upper_cells, lower_cells] :
+           std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
+        for (const bool upper_is_slave : {true, false})
+          {
+            NurbsPatchFigures f;
+            f.label = discretisation + ", p = " + std::to_string(degree) +
+                      ", " + std::to_string(upper_cells) + " elements on " +
+                      std::to_string(lower_cells) + ", slave " +
+                      (upper_is_slave ? "upper" : "lower");
+            Simulation simulation(
+              SceneReader::read_string(nurbs_patch_scene(upper_cells,
+                                                         lower_cells,
+                                                         upper_is_slave,
+                                                         degree,
+                                                         discretisation,
+                                                         true),
+                                       "nurbs patch"));
+            for (unsigned int k = 1; k <= 2; ++k)
+              simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
+            const auto        &pair = *simulation.contact().contact_pairs()[0];
+            const Tensor<1, 2> support =
+              support_reaction(simulation.body("upper"), "top");
+            const double sign = upper_is_slave ? -1. : 1.;
+            // Balance in y (the left sides' x supports take what x force
+            // the transfer leaves).
+            Tensor<1, 2> total;
+            for (const auto &node : pair.nodes())
+              if (node.active)
+                {
+                  ++f.active;
+                  total += pair.reported_force(node);
+                }
+            f.points = pair.nodes().size();
+            f.balance =
+              std::abs(total[1] - sign * support[1]) / std::abs(support[1]);
+            f.load_error = consistent_load_error(
+              pair, applied_traction(simulation, upper_is_slave));
+            // Each point's reaction over its area (reference: a collocation
+            // area, or int R_A with mortar), against the top's force over
+            // its reference width, 1, as the stretch is uniform.
+            const std::vector<double> area = pair.tributary_areas();
+            for (unsigned int k = 0; k < f.points; ++k)
+              {
+                const ContactNode &node = pair.nodes()[k];
+                const auto         r    = pair.reported_reaction(node);
+                const Tensor<1, 2> traction =
+                  (r[0] * node.tangent + r[1] * node.normal) / area[k];
+                f.point_error =
+                  std::max(f.point_error,
+                           (traction - sign * support).norm() / support.norm());
+              }
+            std::cout << "  " << f.label << ": " << f.active << " of "
+                      << f.points
+                      << " points in contact; contact force against the "
+                         "support "
+                      << f.balance
+                      << "; control forces off the consistent loads by up "
+                         "to "
+                      << f.load_error
+                      << " of the largest; the points' traction off the "
+                         "applied one by up to "
+                      << f.point_error << std::endl;
+            all.push_back(f);
+          }
+    return all;
+  }
+} // namespace
+
+
+
 // The contact patch test on non-matching NURBS patches (5 elements on 8
 // and 7 on 13, each side as slave, p = 2 and 3), knot-to-segment on the
 // exact master: every Greville point is in contact, the contact force balances
@@ -109,74 +206,11 @@ namespace
 // by how much.
 GLISSADE_TEST(nurbs_contact_patch_test)
 {
-  for (const unsigned int degree : {2u, 3u})
-    for (const auto &[upper_cells, lower_cells] :
-         std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
-      for (const bool upper_is_slave : {true, false})
-        {
-          const std::string label = "p = " + std::to_string(degree) + ", " +
-                                    std::to_string(upper_cells) +
-                                    " elements on " +
-                                    std::to_string(lower_cells) + ", slave " +
-                                    (upper_is_slave ? "upper" : "lower");
-          Simulation simulation(
-            SceneReader::read_string(nurbs_patch_scene(upper_cells,
-                                                       lower_cells,
-                                                       upper_is_slave,
-                                                       degree,
-                                                       "node-to-segment",
-                                                       true),
-                                     "nurbs patch"));
-          for (unsigned int k = 1; k <= 2; ++k)
-            simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
-          const auto &pair = *simulation.contact().contact_pairs()[0];
-
-          const Tensor<1, 2> support =
-            support_reaction(simulation.body("upper"), "top");
-          const Tensor<1, 2> on_slave =
-            applied_traction(simulation, upper_is_slave);
-
-          // Balance: the slave's contact forces against the support.
-          Tensor<1, 2> total;
-          for (const auto &node : pair.nodes())
-            if (node.active)
-              total += pair.reported_force(node);
-          // (in y: the left sides' x supports take what x force the
-          // transfer leaves)
-          const double balance =
-            std::abs(total[1] - (upper_is_slave ? -1. : 1.) * support[1]) /
-            std::abs(support[1]);
-
-          unsigned int active = 0;
-          for (const auto &node : pair.nodes())
-            active += node.active;
-          const double load_error = consistent_load_error(pair, on_slave);
-          // Each point's force over its collocation area (reference, so
-          // against the top's force over its reference width, 1): the
-          // contact tables' traction.
-          const std::vector<double> area        = pair.tributary_areas();
-          double                    point_error = 0.;
-          for (unsigned int k = 0; k < pair.nodes().size(); ++k)
-            point_error =
-              std::max(point_error,
-                       (pair.reported_force(pair.nodes()[k]) / area[k] -
-                        (upper_is_slave ? -1. : 1.) * support)
-                           .norm() /
-                         support.norm());
-          std::cout << "  " << label << ": " << active << " of "
-                    << pair.nodes().size()
-                    << " Greville points in contact; contact force against "
-                       "the support "
-                    << balance
-                    << "; control forces off the consistent loads by up to "
-                    << load_error
-                    << " of the largest; the points' traction off the "
-                       "applied one by up to "
-                    << point_error << std::endl;
-          check(active == pair.nodes().size(),
-                label + ": every point in contact");
-          check(balance <= 1e-9, label + ": the contact force balances");
-        }
+  for (const NurbsPatchFigures &f : nurbs_patch_figures("node-to-segment"))
+    {
+      check(f.active == f.points, f.label + ": every point in contact");
+      check(f.balance <= 1e-9, f.label + ": the contact force balances");
+    }
 }
 
 
@@ -328,67 +362,15 @@ GLISSADE_TEST(nurbs_contact_mortar_patch_test)
 // nurbs_contact_patch_test's.
 GLISSADE_TEST(nurbs_contact_mortar_on_nurbs_patch_test)
 {
-  for (const unsigned int degree : {2u, 3u})
-    for (const auto &[upper_cells, lower_cells] :
-         std::vector<std::pair<unsigned int, unsigned int>>{{5, 8}, {7, 13}})
-      for (const bool upper_is_slave : {true, false})
-        {
-          const std::string label =
-            "mortar, NURBS on NURBS, p = " + std::to_string(degree) + ", " +
-            std::to_string(upper_cells) + " elements on " +
-            std::to_string(lower_cells) + ", slave " +
-            (upper_is_slave ? "upper" : "lower");
-          Simulation simulation(SceneReader::read_string(
-            nurbs_patch_scene(
-              upper_cells, lower_cells, upper_is_slave, degree, "mortar", true),
-            "nurbs on nurbs mortar patch"));
-          for (unsigned int k = 1; k <= 2; ++k)
-            simulation.advance_to(0.5 * k, "increment " + std::to_string(k));
-          const auto        &pair = *simulation.contact().contact_pairs()[0];
-          const Tensor<1, 2> support =
-            support_reaction(simulation.body("upper"), "top");
-          const Tensor<1, 2> on_slave =
-            applied_traction(simulation, upper_is_slave);
-
-          unsigned int active = 0;
-          Tensor<1, 2> total;
-          for (const auto &node : pair.nodes())
-            if (node.active)
-              {
-                ++active;
-                total += pair.reported_force(node);
-              }
-          const double balance =
-            std::abs(total[1] - (upper_is_slave ? -1. : 1.) * support[1]) /
-            std::abs(support[1]);
-          const double load_error = consistent_load_error(pair, on_slave);
-          // lambda_A = r_A / int R_A, in the reference (the tables'
-          // tributary areas): against the top's force over its reference
-          // width, 1, as the stretch is uniform.
-          const std::vector<double> area        = pair.tributary_areas();
-          double                    point_error = 0.;
-          for (unsigned int k = 0; k < pair.nodes().size(); ++k)
-            point_error =
-              std::max(point_error,
-                       (pair.reported_force(pair.nodes()[k]) / area[k] -
-                        (upper_is_slave ? -1. : 1.) * support)
-                           .norm() /
-                         support.norm());
-          std::cout << "  " << label << ": " << active << " of "
-                    << pair.nodes().size()
-                    << " points in contact; contact force against the "
-                       "support "
-                    << balance << "; control forces off the consistent loads "
-                    << load_error << "; lambda_A off the applied traction "
-                    << point_error << std::endl;
-          check(active == pair.nodes().size(),
-                label + ": every point in contact");
-          check(balance <= 1e-9, label + ": the contact force balances");
-          check(load_error <= 1e-8,
-                label + ": the control forces are the consistent loads");
-          check(point_error <= 1e-8,
-                label + ": every lambda_A is the applied traction");
-        }
+  for (const NurbsPatchFigures &f : nurbs_patch_figures("mortar"))
+    {
+      check(f.active == f.points, f.label + ": every point in contact");
+      check(f.balance <= 1e-9, f.label + ": the contact force balances");
+      check(f.load_error <= 1e-8,
+            f.label + ": the control forces are the consistent loads");
+      check(f.point_error <= 1e-8,
+            f.label + ": every lambda_A is the applied traction");
+    }
 }
 
 
@@ -454,10 +436,87 @@ GLISSADE_TEST(nurbs_contact_interference_fit)
   expect(q1_rate > 1.8 && q1_rate < 2.2, "Q1 rings converge like h^2");
 }
 
+// A NURBS quarter ring (r = 1 to 1.5, plane strain, small strain) pushed
+// into a rigid circular hole of radius 1.5 - 1e-3: its outer side's radial
+// displacement is -1e-3 where it touches, and Lame's ring free at r = 1
+// gives u_r(1) and the pressure. Mortar on the ring's own boundary against
+// the obstacle (nurbs_slave_mortar.cc, the obstacle's closest points) and
+// knot-to-segment at 8 and 16 elements around.
+GLISSADE_TEST(nurbs_contact_ring_in_rigid_hole)
+{
+  const double delta = 1e-3, a = 1., b = 1.5, E = 1000., nu = 0.3;
+  const double lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
+  const double mu     = E / (2. * (1. + nu));
+  // u = A r + B / r: sigma_rr(a) = 2 (lambda + mu) A - 2 mu B / a^2 = 0,
+  // u(b) = -delta.
+  const double B        = -delta / (b * mu / (a * a * (lambda + mu)) + 1. / b);
+  const double A        = mu * B / (a * a * (lambda + mu));
+  const double u_a      = A * a + B / a;
+  const double pressure = -(2. * (lambda + mu) * A - 2. * mu * B / (b * b));
+  std::cout << "  Lame: u_r(1) = " << u_a << ", p = " << pressure << std::endl;
+  for (const std::string discretisation : {"node-to-segment", "mortar"})
+    for (const unsigned int cells : {8u, 16u})
+      {
+        const std::string scene =
+          "subsection Scene\n set Bodies = ring\n set Contact pairs = fit\n"
+          "end\nsubsection Body ring\n subsection Mesh\n"
+          "  set Type = half ring\n  set Inner radius = 1\n"
+          "  set Outer radius = 1.5\n  set Start angle = 0\n"
+          "  set End angle = 90\n  set Subdivisions = " +
+          std::to_string(cells) +
+          ", 4\n end\n subsection Element\n  set Space = nurbs\n end\n"
+          " subsection Material\n  set Young modulus = 1000\n"
+          "  set Poisson ratio = 0.3\n  set Kinematics = small strain\n"
+          " end\n subsection Boundary conditions\n"
+          "  set Fixed = start: y; end: x\n end\nend\n"
+          "subsection Contact fit\n set Slave body = ring\n"
+          " set Slave boundary = outer\n set Discretisation = " +
+          discretisation +
+          "\n set Alert distance = 0.05\n subsection Obstacle\n"
+          "  set Type = hole\n  set Point = 0, 0\n  set Radius = " +
+          std::to_string(b - delta) +
+          "\n end\nend\n"
+          "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
+          "subsection Output\n set Progress = false\nend\n"
+          "subsection Newton\n set Residual tolerance = 1e-11\n"
+          " set Displacement tolerance = 1e-11\nend\n";
+        Simulation simulation(SceneReader::read_string(scene, "ring in hole"));
+        simulation.run();
+        const double u =
+          vertex_displacement(simulation.body("ring"), Point<2>(1., 0.))[0];
+        Tensor<1, 2> on_ring;
+        for (const auto &node :
+             simulation.contact().contact_pairs()[0]->nodes())
+          if (node.active)
+            on_ring += node.force();
+        const double u_error = std::abs(u - u_a) / std::abs(u_a);
+        const double force_error =
+          std::max(std::abs(-on_ring[0] - pressure * b),
+                   std::abs(-on_ring[1] - pressure * b)) /
+          (pressure * b);
+        std::cout << "  " << discretisation << ", " << cells
+                  << " elements: u_r(1) = " << u << " (relative error "
+                  << u_error << "), the contact force on the quarter off p b "
+                  << "by " << force_error << std::endl;
+        if (discretisation == "mortar")
+          {
+            expect(u_error <= 3e-6,
+                   "mortar: u_r(1) within 3e-6 of Lame at " +
+                     std::to_string(cells) + " elements");
+            expect(force_error <= 1e-5,
+                   "mortar: the contact force within 1e-5 of p b at " +
+                     std::to_string(cells) + " elements");
+          }
+      }
+}
+
+
+
 // What contact with a NURBS body does not do yet is refused before
 // anything is computed, with the entry and the reason: a surface through
 // a NURBS master's vertices (which carry no displacement), a nurbs surface
-// on a body of another space, mortar on either side, self-contact.
+// on a body of another space, mortar on a NURBS slave of degree 4,
+// self-contact.
 GLISSADE_TEST(nurbs_contact_input_errors)
 {
   const std::string fit = shrink_fit_scene("nurbs", "nurbs", 8, 1e-3);

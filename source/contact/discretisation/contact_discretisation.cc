@@ -37,8 +37,8 @@ namespace glissade
          "of the gap against its dual shape function (a Q1 slave) or its "
          "control point's rational function (a NURBS slave), segment by "
          "segment (passes the contact patch test on non-matching meshes; "
-         "a faceted, B-spline, Hermite or NURBS master, or for a Q1 slave "
-         "a rigid obstacle)",
+         "a faceted, B-spline, Hermite or NURBS master, or a rigid "
+         "obstacle)",
          create_mortar}};
       return list;
     }

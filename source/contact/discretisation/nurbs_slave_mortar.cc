@@ -41,6 +41,8 @@ namespace glissade
     {
       /** D_A over int R_A on the whole slave curve (1: fully covered). */
       double coverage = 0.;
+      /** Against an obstacle: a point of its spans had no counterpart. */
+      bool uncovered = false;
       /** int R_A n (the point's mean normal, for its frame). */
       Tensor<1, 2> mean_normal;
       /** D_A = int R_A: the point's share of the covered slave curve. */
@@ -62,6 +64,98 @@ namespace glissade
 
 
     /**
+     * The span's functions R_m, point x and tangent dx at a dual
+     * parameter s, the span's control points P: R_m(s) to first order in
+     * s's dual part, which is all the derivatives need.
+     */
+    void
+    evaluate_span(const NurbsCurve             &curve,
+                  const unsigned int            segment,
+                  const MortarDual             &s,
+                  const std::vector<DualPoint> &P,
+                  std::vector<MortarDual>      &R,
+                  DualPoint                    &x,
+                  DualPoint                    &dx)
+    {
+      thread_local std::vector<double> r, dr, d2r;
+      curve.rational_functions(segment, s.value, r, dr, d2r);
+      const MortarDual ds = s - s.value;
+      R.resize(r.size());
+      x = dx = {MortarDual(0.), MortarDual(0.)};
+      for (unsigned int m = 0; m < r.size(); ++m)
+        {
+          R[m] = r[m] + dr[m] * ds;
+          x    = x + R[m] * P[m];
+          dx   = dx + (dr[m] + d2r[m] * ds) * P[m];
+        }
+    }
+
+
+
+    /** What one slave span adds to each of its functions' points, as
+     *  duals (PointState's integrals). */
+    struct SpanIntegrals
+    {
+      struct OfFunction
+      {
+        MortarDual              D = 0., G = 0., U = 0.;
+        Tensor<1, 2>            mean_normal;
+        std::vector<MortarDual> S; // (function l, component)
+        std::map<std::pair<types::global_dof_index, unsigned int>,
+                 std::array<MortarDual, 2>>
+          F;
+      };
+      std::vector<OfFunction> of;
+
+      explicit SpanIntegrals(const unsigned int n_functions)
+        : of(n_functions)
+      {
+        for (OfFunction &f : of)
+          f.S.assign(2 * n_functions, MortarDual(0.));
+      }
+
+      /**
+       * A Gauss point of weight w (its length in it), the span's functions
+       * R there, the slave normal n, the gap n . (x - y) and the slip, and
+       * where the master takes a unit force (none for an obstacle).
+       */
+      void
+      add(const MortarDual                            &w,
+          const std::vector<MortarDual>               &R,
+          const DualPoint                             &n,
+          const MortarDual                            &gap,
+          const MortarDual                            &slip,
+          const std::vector<mortar::CurveForceWeight> &forces)
+      {
+        // (t = (n_y, -n_x))
+        const MortarDual directions[4] = {n.x, n.y, n.y, -n.x};
+        for (unsigned int m = 0; m < of.size(); ++m)
+          {
+            OfFunction      &in = of[m];
+            const MortarDual wR = w * R[m];
+            in.D += wR;
+            in.G += wR * gap;
+            in.U += wR * slip;
+            in.mean_normal += wR.value * Tensor<1, 2>({n.x.value, n.y.value});
+            for (unsigned int l = 0; l < of.size(); ++l)
+              {
+                const MortarDual wRR = wR * R[l];
+                in.S[2 * l] += wRR * n.x;
+                in.S[2 * l + 1] += wRR * n.y;
+              }
+            for (const mortar::CurveForceWeight &f : forces)
+              {
+                auto &[normal, tangential] = in.F[{f.dof, f.component}];
+                normal += wR * f.weight * directions[f.component];
+                tangential += wR * f.weight * directions[2 + f.component];
+              }
+          }
+      }
+    };
+
+
+
+    /**
      * Mortar contact with a NURBS slave (Discretisation = mortar on a body
      * of Element/Space = nurbs): the slave side is the body's own boundary
      * curve, the multiplier of slave point A is lambda_A R_A, R_A the
@@ -73,16 +167,19 @@ namespace glissade
      *   g_A = int R_A n . (x - y) / D_A,
      *
      * x the slave curve, n its normal there (C^(p-1): continuous), y where
-     * that normal meets the master curve, and the reaction r_A = D_A
+     * that normal meets the master curve (against a rigid obstacle: the
+     * obstacle's point closest to x, each span integrated whole), and the
+     * reaction r_A = D_A
      * lambda_A goes to slave control point k by int R_A R_k n / D_A and to
      * the master by its curve's force weights, int R_A w n / D_A (the
      * tangential reaction likewise with t): the force is the weighted
      * gap's work. A uniform lambda makes the consistent loads of a uniform
      * pressure on both sides (sum_A R_A = 1), so the contact patch test
      * holds on any pair of patches, and on a curved interface the force
-     * keeps the normal's turn across each function's support (a nodal
-     * normal n_A in its place converged like h^2 on the interference fit,
-     * the curve's own like knot-to-segment). Each slave span is cut where
+     * keeps the normal's turn across each function's support (with a
+     * nodal normal n_A in its place the interference fit converged like
+     * h^2; with the curve's own it sits at its converged figure from 8
+     * elements on). Each slave span is cut where
      * the master segment's ends fall along the slave normals and
      * integrated with four Gauss points a cut, every integral
      * differentiated exactly (forward mode). doc/contact.md, "Isogeometric
@@ -136,6 +233,30 @@ namespace glissade
       void
       integrate(unsigned int span, unsigned int i);
 
+      /** Adds the integrals of the span against a rigid obstacle. */
+      void
+      integrate_on_obstacle(unsigned int span);
+
+      /** The span's control points as the first dual variables; their
+       *  indices over all slave curves. */
+      std::vector<unsigned int>
+      add_span_variables(const Span &span, LocalVariables &variables) const;
+
+      /** The slave's motion since the increment began at a point of the
+       *  span, sum_k R_k (u_k - u0_k), changing with the control points. */
+      std::array<MortarDual, 2>
+      slave_motion(const std::vector<MortarDual>   &R,
+                   const std::vector<unsigned int> &controls,
+                   const LocalVariables            &variables) const;
+
+      /** The span's integrals added to its points' states; the curve
+       *  points' variables by their kinematics (none on an obstacle). */
+      void
+      add_to_points(const std::vector<unsigned int>               &controls,
+                    const SpanIntegrals                           &integrals,
+                    const LocalVariables                          &variables,
+                    const std::vector<std::vector<SurfaceWeight>> &kinematics);
+
       /** The dof forces of a unit reaction at point A (state s):
        *  `direction` 0 normal, 1 tangential. */
       void
@@ -143,10 +264,12 @@ namespace glissade
                         unsigned int      direction,
                         DofVector        &out) const;
 
-      const Body         &slave;
-      const Body         &master;
-      const CurveSurface &surface;
-      const MasterChain  &chain;
+      const Body          &slave;
+      const MasterSurface &surface;
+      /** nullptr for a rigid obstacle (no master body, curve or chain). */
+      const Body         *master;
+      const CurveSurface *curve_surface;
+      const MasterChain  *chain;
       const double        search_distance;
 
       std::vector<NurbsBoundary> slave_curves;
@@ -176,9 +299,12 @@ namespace glissade
 
     NurbsSlaveMortar::NurbsSlaveMortar(const Context &context)
       : slave(context.slave)
-      , master(*context.master)
-      , surface(dynamic_cast<const CurveSurface &>(context.surface))
-      , chain(surface.master_chain())
+      , surface(context.surface)
+      , master(context.master)
+      , curve_surface(context.master ?
+                        &dynamic_cast<const CurveSurface &>(context.surface) :
+                        nullptr)
+      , chain(curve_surface ? &curve_surface->master_chain() : nullptr)
       , search_distance(context.description.alert_distance)
     {
       const auto &space = dynamic_cast<const NurbsSpace &>(slave.space());
@@ -213,8 +339,8 @@ namespace glissade
           point_of_place[{X[0], X[1]}] = j;
           point_of_control[greville_of_point[j].control] = j;
         }
-      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
-        master_node_shares.push_back(surface.node_shares(k));
+      for (unsigned int k = 0; chain && k < chain->vertices.size(); ++k)
+        master_node_shares.push_back(curve_surface->node_shares(k));
       state.resize(context.nodes.size());
     }
 
@@ -282,14 +408,79 @@ namespace glissade
 
 
 
+    std::vector<unsigned int>
+    NurbsSlaveMortar::add_span_variables(const Span     &span,
+                                         LocalVariables &variables) const
+    {
+      std::vector<unsigned int> controls;
+      for (const unsigned int m :
+           slave_curves[span.curve].curve->segment_data(span.segment).controls)
+        {
+          const unsigned int k = first_control[span.curve] + m;
+          controls.push_back(k);
+          variables.add(0, {{control_dofs[k], 1.}}, control_positions[k]);
+        }
+      return controls;
+    }
+
+
+
+    std::array<MortarDual, 2>
+    NurbsSlaveMortar::slave_motion(const std::vector<MortarDual>   &R,
+                                   const std::vector<unsigned int> &controls,
+                                   const LocalVariables &variables) const
+    {
+      std::array<MortarDual, 2> moved = {{0., 0.}};
+      for (unsigned int m = 0; m < controls.size(); ++m)
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            const MortarDual &P =
+              k == 0 ? variables.coordinates[m].x : variables.coordinates[m].y;
+            moved[k] +=
+              R[m] * (control_motions[controls[m]][k] + (P - P.value));
+          }
+      return moved;
+    }
+
+
+
+    void
+    NurbsSlaveMortar::add_to_points(
+      const std::vector<unsigned int>               &controls,
+      const SpanIntegrals                           &integrals,
+      const LocalVariables                          &variables,
+      const std::vector<std::vector<SurfaceWeight>> &kinematics)
+    {
+      const unsigned int n_used = variables.n_used();
+      const auto         add    = [&](Accumulated &to, const MortarDual &v) {
+        to.add(v, variables.dofs, n_used);
+        add_curve_variables(v, kinematics, first_curve_variable, to);
+      };
+      for (unsigned int m = 0; m < controls.size(); ++m)
+        {
+          PointState &to = state[point_of_control[controls[m]]];
+          const SpanIntegrals::OfFunction &in = integrals.of[m];
+          add(to.D, in.D);
+          add(to.G, in.G);
+          add(to.U, in.U);
+          to.mean_normal += in.mean_normal;
+          for (unsigned int l = 0; l < controls.size(); ++l)
+            for (unsigned int e = 0; e < 2; ++e)
+              add(to.S[controls[l]][e], in.S[2 * l + e]);
+          for (const auto &[key, weights] : in.F)
+            for (unsigned int e = 0; e < 2; ++e)
+              add(to.F[key][e], weights[e]);
+        }
+    }
+
+
+
     void
     NurbsSlaveMortar::integrate(const unsigned int span_index,
                                 const unsigned int i)
     {
-      const Span       &span     = spans[span_index];
-      const NurbsCurve &curve    = *slave_curves[span.curve].curve;
-      const auto &local_controls = curve.segment_data(span.segment).controls;
-      const unsigned int n_functions = local_controls.size();
+      const Span        &span  = spans[span_index];
+      const NurbsCurve  &curve = *slave_curves[span.curve].curve;
       const unsigned int c = i, d = (i + 1) % master_positions.size();
       double             s_c = 0., s_d = 0.;
       if (!may_overlap(span, i, s_c, s_d))
@@ -297,52 +488,31 @@ namespace glissade
 
       // The local variables: the span's control points, then the master
       // segment's end nodes; the curve points' from first_curve_variable.
-      LocalVariables            variables;
-      std::vector<unsigned int> controls;
-      for (const unsigned int m : local_controls)
-        {
-          const unsigned int k = first_control[span.curve] + m;
-          controls.push_back(k);
-          variables.add(0, {{control_dofs[k], 1.}}, control_positions[k]);
-        }
+      LocalVariables                  variables;
+      const std::vector<unsigned int> controls =
+        add_span_variables(span, variables);
+      const unsigned int n_functions = controls.size();
       const unsigned int lc =
         variables.add(1, master_node_shares[c], master_positions[c]);
       const unsigned int ld =
         variables.add(1, master_node_shares[d], master_positions[d]);
-      const unsigned int n_used = variables.n_used();
-      const DualPoint    Yc     = variables.coordinates[lc];
-      const DualPoint    Yd     = variables.coordinates[ld];
-      const auto         P = [&](const unsigned int m) -> const DualPoint         &{
-        return variables.coordinates[m];
-      };
+      const DualPoint              Yc = variables.coordinates[lc];
+      const DualPoint              Yd = variables.coordinates[ld];
+      const std::vector<DualPoint> P(variables.coordinates.begin(),
+                                     variables.coordinates.begin() +
+                                       n_functions);
 
-      // The span's functions, point and tangent at a dual parameter s:
-      // R_m(s) to first order in s's dual part, which is all the
-      // derivatives need.
-      std::vector<double>     r, dr, d2r;
-      std::vector<MortarDual> R(n_functions);
-      const auto              on_span =
-        [&](const MortarDual &s, DualPoint &x, DualPoint &dx) {
-          curve.rational_functions(span.segment, s.value, r, dr, d2r);
-          const MortarDual ds = s - s.value;
-          x = dx = {MortarDual(0.), MortarDual(0.)};
-          for (unsigned int m = 0; m < n_functions; ++m)
-            {
-              R[m] = r[m] + dr[m] * ds;
-              x    = x + R[m] * P(m);
-              dx   = dx + (dr[m] + d2r[m] * ds) * P(m);
-            }
-        };
       // A master end's image: one Newton step on the duals from the plain
       // root s of (x(s) - y) . x'(s) = 0.
-      const auto cut = [&](const DualPoint &y, const double s) {
+      std::vector<double> r, dr, d2r;
+      const auto          cut = [&](const DualPoint &y, const double s) {
         curve.rational_functions(span.segment, s, r, dr, d2r);
         DualPoint x{MortarDual(0.), MortarDual(0.)}, dx = x, ddx = x;
         for (unsigned int m = 0; m < n_functions; ++m)
           {
-            x   = x + MortarDual(r[m]) * P(m);
-            dx  = dx + MortarDual(dr[m]) * P(m);
-            ddx = ddx + MortarDual(d2r[m]) * P(m);
+            x   = x + MortarDual(r[m]) * P[m];
+            dx  = dx + MortarDual(dr[m]) * P[m];
+            ddx = ddx + MortarDual(d2r[m]) * P[m];
           }
         const DualPoint  to = x - y;
         const MortarDual F  = to.x * dx.x + to.y * dx.y;
@@ -356,22 +526,9 @@ namespace glissade
       const MortarDual  lower = first.value > 0. ? first : MortarDual(0.);
       const MortarDual  upper = last.value < 1. ? last : MortarDual(1.);
 
-      // Per function m of the span: D, G, U, S (by the span's function),
-      // F (by master dof and component), as in PointState.
-      struct Integrals
-      {
-        MortarDual              D = 0., G = 0., U = 0.;
-        Tensor<1, 2>            mean_normal;
-        std::vector<MortarDual> S;
-        std::map<std::pair<types::global_dof_index, unsigned int>,
-                 std::array<MortarDual, 2>>
-          F;
-      };
-      std::vector<Integrals> integrals(n_functions);
-      for (auto &in : integrals)
-        in.S.assign(2 * n_functions, MortarDual(0.));
+      SpanIntegrals                           integrals(n_functions);
       std::vector<std::vector<SurfaceWeight>> kinematics(n_gauss_points);
-
+      std::vector<MortarDual>                 R;
       // Gauss-Legendre, four points a cut: exact for the flat patch
       // (R_A R_k of degree 2p <= 6 on straight spans of uniform speed).
       static const QGauss<1> gauss(n_gauss_points);
@@ -379,7 +536,7 @@ namespace glissade
         {
           const MortarDual s = lower + gauss.point(q)[0] * (upper - lower);
           DualPoint        x, dx;
-          on_span(s, x, dx);
+          evaluate_span(curve, span.segment, s, P, R, x, dx);
           const MortarDual speed = sqrt(dx.x * dx.x + dx.y * dx.y);
           const MortarDual w     = gauss.weight(q) * (upper - lower) * speed;
           // The slave normal, from the master into the slave (as a master
@@ -388,77 +545,85 @@ namespace glissade
           const double    eta_estimate =
             (mortar::cross(x - Yc, n) / mortar::cross(Yd - Yc, n)).value;
           mortar::CurvePoint point;
-          if (!mortar::find_curve_point(surface,
-                                        master,
+          if (!mortar::find_curve_point(*curve_surface,
+                                        *master,
                                         i,
                                         first_curve_variable + 2 * q,
                                         x,
                                         n,
                                         eta_estimate,
                                         {{Yc, Yd}},
-                                        {{chain.value_dofs[c],
-                                          chain.value_dofs[d]}},
+                                        {{chain->value_dofs[c],
+                                          chain->value_dofs[d]}},
                                         point))
             return; // (the normal runs along the master: nothing added)
-          kinematics[q] = std::move(point.kinematics);
-          // The slave's motion: sum_k R_k (u_k - u0_k), which changes with
-          // the control points as they do.
-          MortarDual moved[2] = {0., 0.};
-          for (unsigned int m = 0; m < n_functions; ++m)
-            for (unsigned int k = 0; k < 2; ++k)
-              {
-                const MortarDual &Pk = k == 0 ? P(m).x : P(m).y;
-                moved[k] +=
-                  R[m] * (control_motions[controls[m]][k] + (Pk - Pk.value));
-              }
-          const DualPoint  t{n.y, -n.x};
+          kinematics[q]          = std::move(point.kinematics);
+          const auto       moved = slave_motion(R, controls, variables);
           const MortarDual gap =
             n.x * (x.x - point.y[0]) + n.y * (x.y - point.y[1]);
-          const MortarDual slip = t.x * (moved[0] - point.motion[0]) +
-                                  t.y * (moved[1] - point.motion[1]);
-          const MortarDual directions[4] = {n.x, n.y, t.x, t.y};
-          for (unsigned int m = 0; m < n_functions; ++m)
-            {
-              Integrals       &in = integrals[m];
-              const MortarDual wR = w * R[m];
-              in.D += wR;
-              in.G += wR * gap;
-              in.U += wR * slip;
-              in.mean_normal += wR.value * Tensor<1, 2>({n.x.value, n.y.value});
-              for (unsigned int l = 0; l < n_functions; ++l)
-                {
-                  const MortarDual wRR = wR * R[l];
-                  in.S[2 * l] += wRR * n.x;
-                  in.S[2 * l + 1] += wRR * n.y;
-                }
-              for (const mortar::CurveForceWeight &f : point.forces)
-                {
-                  auto &[normal, tangential] = in.F[{f.dof, f.component}];
-                  normal += wR * f.weight * directions[f.component];
-                  tangential += wR * f.weight * directions[2 + f.component];
-                }
-            }
+          const MortarDual slip = n.y * (moved[0] - point.motion[0]) -
+                                  n.x * (moved[1] - point.motion[1]);
+          integrals.add(w, R, n, gap, slip, point.forces);
         }
+      add_to_points(controls, integrals, variables, kinematics);
+    }
 
-      const auto add = [&](Accumulated &to, const MortarDual &v) {
-        to.add(v, variables.dofs, n_used);
-        add_curve_variables(v, kinematics, first_curve_variable, to);
-      };
-      for (unsigned int m = 0; m < n_functions; ++m)
+
+
+    void
+    NurbsSlaveMortar::integrate_on_obstacle(const unsigned int span_index)
+    {
+      const Span                     &span  = spans[span_index];
+      const NurbsCurve               &curve = *slave_curves[span.curve].curve;
+      LocalVariables                  variables;
+      const std::vector<unsigned int> controls =
+        add_span_variables(span, variables);
+      const std::vector<DualPoint> &P = variables.coordinates;
+
+      // Six Gauss points over the whole span: the obstacle's points are
+      // not polynomial in s (a point not facing the obstacle uncovers the
+      // span's points: they have no counterpart).
+      static const QGauss<1>  gauss(6);
+      SpanIntegrals           integrals(controls.size());
+      std::vector<MortarDual> R;
+      for (unsigned int q = 0; q < gauss.size(); ++q)
         {
-          PointState      &to = state[point_of_control[controls[m]]];
-          const Integrals &in = integrals[m];
-          add(to.D, in.D);
-          add(to.G, in.G);
-          add(to.U, in.U);
-          to.mean_normal += in.mean_normal;
-          for (unsigned int l = 0; l < n_functions; ++l)
-            for (unsigned int e = 0; e < 2; ++e)
-              add(to.S[controls[l]][e], in.S[2 * l + e]);
-          for (const auto &[key, weights] : in.F)
-            for (unsigned int e = 0; e < 2; ++e)
-              add(to.F[key][e], weights[e]);
+          DualPoint x, dx;
+          evaluate_span(
+            curve, span.segment, MortarDual(gauss.point(q)[0]), P, R, x, dx);
+          const MortarDual   speed = sqrt(dx.x * dx.x + dx.y * dx.y);
+          const MortarDual   w     = gauss.weight(q) * speed;
+          const DualPoint    n{dx.y / speed, -dx.x / speed};
+          const SurfacePoint point =
+            surface.project(Point<2>(x.x.value, x.y.value));
+          if (!point.valid)
+            {
+              for (const unsigned int k : controls)
+                state[point_of_control[k]].uncovered = true;
+              return;
+            }
+          // The closest point moves with x by c' ds, ds = c' . dx / (c' . c'
+          // - (x - c) . c''), and the obstacle's material there by m' ds
+          // (as for Q1 slaves, mortar.cc).
+          const Tensor<1, 2> &dc = point.first_derivative;
+          const Tensor<1, 2>  r_plain(
+            {x.x.value - point.point[0], x.y.value - point.point[1]});
+          const MortarDual ds =
+            (dc[0] * (x.x - x.x.value) + dc[1] * (x.y - x.y.value)) /
+            MortarDual(dc * dc - r_plain * point.second_derivative);
+          const MortarDual y[2]      = {point.point[0] + dc[0] * ds,
+                                        point.point[1] + dc[1] * ds};
+          const MortarDual motion[2] = {point.motion_since_step_start[0] +
+                                          point.motion_derivative[0] * ds,
+                                        point.motion_since_step_start[1] +
+                                          point.motion_derivative[1] * ds};
+          const auto       moved     = slave_motion(R, controls, variables);
+          const MortarDual gap       = n.x * (x.x - y[0]) + n.y * (x.y - y[1]);
+          const MortarDual slip =
+            n.y * (moved[0] - motion[0]) - n.x * (moved[1] - motion[1]);
+          integrals.add(w, R, n, gap, slip, {});
         }
+      add_to_points(controls, integrals, variables, {});
     }
 
 
@@ -489,14 +654,14 @@ namespace glissade
             }
           boundary.curve->update(current);
         }
-      const Vector<double> &um = master.displacement();
-      master_positions.resize(chain.vertices.size());
-      for (unsigned int k = 0; k < chain.vertices.size(); ++k)
+      master_positions.resize(master_node_shares.size());
+      for (unsigned int k = 0; k < master_node_shares.size(); ++k)
         {
-          master_positions[k] = chain.reference_points[k];
+          master_positions[k] = chain->reference_points[k];
           for (const SlaveShare &share : master_node_shares[k])
             for (unsigned int e = 0; e < 2; ++e)
-              master_positions[k][e] += share.weight * um(share.dofs[e]);
+              master_positions[k][e] +=
+                share.weight * master->displacement()(share.dofs[e]);
         }
 
       // int R_A over each whole slave curve: what covers a point fully.
@@ -521,15 +686,23 @@ namespace glissade
       for (PointState &s : state)
         s = PointState();
       for (unsigned int f = 0; f < spans.size(); ++f)
-        for (unsigned int i = 0;
-             i + (chain.closed ? 0 : 1) < master_positions.size();
-             ++i)
-          integrate(f, i);
+        if (chain == nullptr)
+          integrate_on_obstacle(f);
+        else
+          for (unsigned int i = 0;
+               i + (chain->closed ? 0 : 1) < master_positions.size();
+               ++i)
+            integrate(f, i);
 
       for (unsigned int j = 0; j < state.size(); ++j)
         {
           PointState &s = state[j];
+          // (against an obstacle every span is integrated whole: the
+          // point is covered unless a point of its spans had no
+          // counterpart)
           s.coverage =
+            chain == nullptr ?
+              (s.uncovered ? 0. : 1.) :
             s.F.empty() ?
               0. :
               s.D.value / function_integrals[greville_of_point[j].control];
@@ -650,13 +823,6 @@ namespace glissade
   create_nurbs_slave_mortar(const ContactDiscretisation::Context &context)
   {
     const std::string &entry = context.description.entry;
-    if (context.master == nullptr)
-      throw InputError(entry + "/Discretisation",
-                       "mortar contact with a NURBS slave (body '" +
-                         context.slave.name() +
-                         "') integrates against a deformable master's "
-                         "curve; against a rigid obstacle use "
-                         "node-to-segment (the Greville points)");
     const auto &space = dynamic_cast<const NurbsSpace &>(context.slave.space());
     // The slave span's p + 1 control points and the master segment's two
     // nodes take the first twelve dual variables (mortar_variables.h).

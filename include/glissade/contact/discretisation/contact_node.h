@@ -36,8 +36,9 @@ namespace glissade
      * A NURBS boundary's point: its share of the boundary's reference
      * area, the weights w with sum_g R_A(x_g) w_g = int R_A dA for every
      * control point A, so that a pressure p at the points, p w_g, makes the
-     * consistent loads of p (ContactPair::tributary_areas). Zero for a
-     * node, whose faces give its share.
+     * consistent loads of p (ContactPair::tributary_areas); with mortar,
+     * int R_A dA of its control point A, which its lambda_A acts on
+     * (SlavePointArea). Zero for a node, whose faces give its share.
      */
     double collocation_area = 0.;
 
