@@ -614,21 +614,11 @@ namespace glissade
               state[a].uncovered = state[b].uncovered = true;
               return;
             }
-          // The closest point moves with x by c' ds, ds = c' . dx / (c' . c'
-          // - (x - c) . c''), and the material there by m' ds.
-          const Tensor<1, 2> &dc = point.first_derivative;
-          const Tensor<1, 2>  r(
-            {x.x.value - point.point[0], x.y.value - point.point[1]});
-          const double curvature_term = dc * dc - r * point.second_derivative;
-          const MortarDual ds =
-            (dc[0] * (x.x - x.x.value) + dc[1] * (x.y - x.y.value)) /
-            MortarDual(curvature_term);
-          const MortarDual y[2] = {point.point[0] + dc[0] * ds,
-                                   point.point[1] + dc[1] * ds};
-          const MortarDual m[2] = {point.motion_since_step_start[0] +
-                                     point.motion_derivative[0] * ds,
-                                   point.motion_since_step_start[1] +
-                                     point.motion_derivative[1] * ds};
+          // The closest point and its material's motion, moving with x.
+          const mortar::CurvePoint on_obstacle =
+            mortar::obstacle_point(point, x);
+          const auto      &y    = on_obstacle.y;
+          const auto      &m    = on_obstacle.motion;
           const MortarDual phia = MortarDual(2. - 3. * s),
                            phib = MortarDual(3. * s - 1.);
           Da += w * phia;

@@ -113,6 +113,27 @@ namespace glissade::mortar
 
 
 
+  CurvePoint
+  obstacle_point(const SurfacePoint &point, const DualPoint &x)
+  {
+    const dealii::Tensor<1, 2> &dc = point.first_derivative;
+    const dealii::Tensor<1, 2>  r(
+      {x.x.value - point.point[0], x.y.value - point.point[1]});
+    const MortarDual ds =
+      (dc[0] * (x.x - x.x.value) + dc[1] * (x.y - x.y.value)) /
+      MortarDual(dc * dc - r * point.second_derivative);
+    CurvePoint result;
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        result.y[c] = point.point[c] + dc[c] * ds;
+        result.motion[c] =
+          point.motion_since_step_start[c] + point.motion_derivative[c] * ds;
+      }
+    return result;
+  }
+
+
+
   void
   add_curve_variables(const MortarDual                              &v,
                       const std::vector<std::vector<SurfaceWeight>> &kinematics,

@@ -602,23 +602,13 @@ namespace glissade
                 state[point_of_control[k]].uncovered = true;
               return;
             }
-          // The closest point moves with x by c' ds, ds = c' . dx / (c' . c'
-          // - (x - c) . c''), and the obstacle's material there by m' ds
-          // (as for Q1 slaves, mortar.cc).
-          const Tensor<1, 2> &dc = point.first_derivative;
-          const Tensor<1, 2>  r_plain(
-            {x.x.value - point.point[0], x.y.value - point.point[1]});
-          const MortarDual ds =
-            (dc[0] * (x.x - x.x.value) + dc[1] * (x.y - x.y.value)) /
-            MortarDual(dc * dc - r_plain * point.second_derivative);
-          const MortarDual y[2]      = {point.point[0] + dc[0] * ds,
-                                        point.point[1] + dc[1] * ds};
-          const MortarDual motion[2] = {point.motion_since_step_start[0] +
-                                          point.motion_derivative[0] * ds,
-                                        point.motion_since_step_start[1] +
-                                          point.motion_derivative[1] * ds};
-          const auto       moved     = slave_motion(R, controls, variables);
-          const MortarDual gap       = n.x * (x.x - y[0]) + n.y * (x.y - y[1]);
+          // The closest point and its material's motion, moving with x.
+          const mortar::CurvePoint on_obstacle =
+            mortar::obstacle_point(point, x);
+          const auto      &y      = on_obstacle.y;
+          const auto      &motion = on_obstacle.motion;
+          const auto       moved  = slave_motion(R, controls, variables);
+          const MortarDual gap    = n.x * (x.x - y[0]) + n.y * (x.y - y[1]);
           const MortarDual slip =
             n.y * (moved[0] - motion[0]) - n.x * (moved[1] - motion[1]);
           integrals.add(w, R, n, gap, slip, {});

@@ -73,6 +73,15 @@ namespace glissade::mortar
     CurvePoint &point);
 
   /**
+   * A rigid obstacle's point closest to the slave point x (`point`, from
+   * MasterSurface::project), moved with x as duals: by c' ds, ds = c' . dx
+   * / (c' . c' - (x - c) . c''), and its material's motion by m' ds. The
+   * y and motion of a CurvePoint (no kinematics, no force weights).
+   */
+  CurvePoint
+  obstacle_point(const SurfacePoint &point, const DualPoint &x);
+
+  /**
    * The derivatives of v in the curve points' variables (`first_variable`
    * + 2q + component for the Gauss point q whose kinematics are
    * kinematics[q]) as master dofs, appended to `to`'s gradient.
