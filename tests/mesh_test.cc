@@ -3,14 +3,18 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <glissade/base/input_error.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/mesh/mesh_diameter.h>
+#include <glissade/mesh/mesh_factory.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
 #include <cmath>
 #include <iomanip>
+#include <iterator>
 #include <map>
+#include <set>
 #include <vector>
 
 #include "test_tools.h"
@@ -321,4 +325,103 @@ end
         ++faces[face->boundary_id()];
   check(faces[1] == 8 && faces[2] == 8 && faces[3] == 16 && faces[4] == 16,
         "the faces of left, right, bottom, top are not 8, 8, 16, 16");
+}
+
+
+
+// Mesh/Grading: sizes in geometric progression, the last `ratio` times the
+// first, summing to the side (closed form: the first of n is L (q - 1) /
+// (q^n - 1), q = ratio^(1 / (n - 1))). Q4 cells of a rectangle, the knot
+// spans of its NURBS patch and of a patch file's elements alike; a ring,
+// which has no grid of intervals, refuses it with the entry.
+GLISSADE_TEST(mesh_grading)
+{
+  const auto body = [](const std::string &mesh) {
+    return SceneReader::read_string("subsection Scene\n set Bodies = b\nend\n"
+                                    "subsection Body b\n subsection Mesh\n" +
+                                      mesh +
+                                      "\n end\n subsection Boundary "
+                                      "conditions\n  set Fixed = left: xy\n"
+                                      " end\nend\n",
+                                    "graded.prm")
+      .bodies[0]
+      .mesh;
+  };
+  const auto check_progression = [](std::vector<double> sizes,
+                                    const double        length,
+                                    const double        ratio,
+                                    const std::string  &what) {
+    const unsigned int n = sizes.size();
+    const double       q = std::pow(ratio, 1. / (n - 1.));
+    check_relative(sizes.front(),
+                   ratio == 1. ? length / n :
+                                 length * (q - 1.) / (std::pow(q, n) - 1.),
+                   1e-12,
+                   what + ": the first size");
+    for (unsigned int i = 1; i < n; ++i)
+      check_relative(sizes[i] / sizes[i - 1], q, 1e-10, what + ": growth");
+  };
+
+  const MeshDescription rectangle =
+    body("  set Type = rectangle\n  set Corner 1 = 0, 0\n"
+         "  set Corner 2 = 2, 1\n  set Subdivisions = 6, 4\n"
+         "  set Grading = 8, 0.5");
+  Triangulation<2> mesh;
+  MeshFactory::create(rectangle, mesh, "graded.prm");
+  std::set<double> x, y;
+  for (const auto &vertex : mesh.get_vertices())
+    {
+      x.insert(vertex[0]);
+      y.insert(vertex[1]);
+    }
+  std::vector<double> widths, heights;
+  for (auto i = x.begin(); std::next(i) != x.end(); ++i)
+    widths.push_back(*std::next(i) - *i);
+  for (auto i = y.begin(); std::next(i) != y.end(); ++i)
+    heights.push_back(*std::next(i) - *i);
+  check(widths.size() == 6 && heights.size() == 4, "6 by 4 cells");
+  check_progression(widths, 2., 8., "Q4 rectangle, x");
+  check_progression(heights, 1., 0.5, "Q4 rectangle, y");
+
+  const auto spans = [](const BSplineBasis &basis) {
+    std::vector<double> sizes;
+    for (unsigned int s = 0; s < basis.n_spans(); ++s)
+      sizes.push_back(basis.span_range(s)[1] - basis.span_range(s)[0]);
+    return sizes;
+  };
+  const NurbsPatch patch =
+    MeshFactory::type("rectangle").exact_patch(rectangle, 2, "graded.prm");
+  check_progression(spans(patch.xi), 1., 8., "NURBS rectangle, xi");
+  check_progression(spans(patch.eta), 1., 0.5, "NURBS rectangle, eta");
+
+  const MeshDescription file =
+    body("  set Type = nurbs patch\n  set File = " +
+         source_path("prm/meshes/quarter_annulus.nurbs") +
+         "\n  set Subdivisions = 5, 3\n  set Grading = 3, 1");
+  const NurbsPatch from_file =
+    MeshFactory::type("nurbs patch").exact_patch(file, 2, "graded.prm");
+  check_progression(spans(from_file.xi), 1., 3., "patch file, xi");
+  check_progression(spans(from_file.eta), 1., 1., "patch file, eta");
+
+  for (const auto &[mesh_text, expected] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"  set Type = ring\n  set Grading = 2, 1",
+          "Mesh/Grading: applies to Type = rectangle, square and nurbs patch "
+          "(this mesh is a ring)"},
+         {"  set Type = rectangle\n  set Grading = 1, 0",
+          "Mesh/Grading: each ratio must lie between 1e-4 and 1e4"}})
+    {
+      std::string message = "accepted";
+      try
+        {
+          body(mesh_text);
+        }
+      catch (const InputError &e)
+        {
+          message = e.what();
+        }
+      std::cout << "  " << message << std::endl;
+      check(message.find(expected) != std::string::npos,
+            "the message does not say '" + expected + "'");
+    }
 }

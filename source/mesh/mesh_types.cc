@@ -10,6 +10,7 @@
 #include <glissade/base/input_error.h>
 #include <glissade/base/text.h>
 #include <glissade/mesh/gmsh_reader.h>
+#include <glissade/mesh/graded_intervals.h>
 #include <glissade/mesh/mesh_factory.h>
 #include <glissade/mesh/nurbs_patch_file.h>
 
@@ -138,9 +139,19 @@ namespace glissade
                      Triangulation<2>      &triangulation)
     {
       // colorize = true numbers the sides 0 (x = x0), 1 (x = x1), 2 (y = y0)
-      // and 3 (y = y1).
+      // and 3 (y = y1); the steps as Mesh/Grading asks (equal by default).
+      std::vector<std::vector<double>> steps(2);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const std::vector<double> ends =
+            graded_interval_ends(description.subdivisions[d],
+                                 description.grading[d]);
+          for (unsigned int i = 0; i + 1 < ends.size(); ++i)
+            steps[d].push_back((ends[i + 1] - ends[i]) *
+                               (upper_right[d] - lower_left[d]));
+        }
       GridGenerator::subdivided_hyper_rectangle(
-        triangulation, description.subdivisions, lower_left, upper_right, true);
+        triangulation, steps, lower_left, upper_right, true);
       return {{"left", 0}, {"right", 1}, {"bottom", 2}, {"top", 3}};
     }
 
@@ -248,13 +259,43 @@ namespace glissade
     }
 
 
-    /** A patch file's patch, its elements split as Subdivisions asks. */
+    /** The knots of a rectangle's patch: the ends of its graded cells. */
+    NurbsPatch
+    rectangle_patch(const Point<2>        &corner_1,
+                    const Point<2>        &corner_2,
+                    const MeshDescription &d,
+                    const unsigned int     degree)
+    {
+      return NurbsPatch::rectangle(
+        corner_1,
+        corner_2,
+        degree,
+        graded_interval_ends(d.subdivisions[0], d.grading[0]),
+        graded_interval_ends(d.subdivisions[1], d.grading[1]));
+    }
+
+    /** Mesh/Grading is for the types whose cells are a grid of intervals. */
+    void
+    refuse_grading(const MeshDescription &d,
+                   const std::string     &type,
+                   const std::string     &where)
+    {
+      if (d.grading[0] != 1. || d.grading[1] != 1.)
+        throw InputError(where + "/Mesh/Grading",
+                         "applies to Type = rectangle, square and nurbs patch "
+                         "(this mesh is a " +
+                           type + ")");
+    }
+
+    /** A patch file's patch, its elements split as Subdivisions and
+     *  Grading ask. */
     NurbsPatchFile
     patch_of_file(const MeshDescription &description, const std::string &where)
     {
       NurbsPatchFile file =
         NurbsPatchFile::read(description.file, where + "/Mesh/File");
-      file.refine({{description.subdivisions[0], description.subdivisions[1]}});
+      file.refine({{description.subdivisions[0], description.subdivisions[1]}},
+                  description.grading);
       return file;
     }
   } // namespace
@@ -300,11 +341,7 @@ namespace glissade
           const unsigned int     degree,
           const std::string &) {
          const auto &shape = std::any_cast<const RectangleShape &>(d.shape);
-         return NurbsPatch::rectangle(shape.corner_1,
-                                      shape.corner_2,
-                                      degree,
-                                      d.subdivisions[0],
-                                      d.subdivisions[1]);
+         return rectangle_patch(shape.corner_1, shape.corner_2, d, degree);
        }},
       {"square",
        "centred at Center with side Side, same boundary names",
@@ -335,11 +372,10 @@ namespace glissade
           const std::string &) {
          const auto        &shape = std::any_cast<const SquareShape &>(d.shape);
          const Tensor<1, 2> half({shape.side / 2, shape.side / 2});
-         return NurbsPatch::rectangle(shape.center - half,
-                                      shape.center + half,
-                                      degree,
-                                      d.subdivisions[0],
-                                      d.subdivisions[1]);
+         return rectangle_patch(shape.center - half,
+                                shape.center + half,
+                                d,
+                                degree);
        }},
       {"half ring",
        "centred at Center between Inner radius and Outer radius, "
@@ -349,7 +385,9 @@ namespace glissade
        [](const ParameterHandler &prm, const std::string &where) -> std::any {
          return parse_ring(prm, where, true);
        },
-       [](const MeshDescription &, const std::string &) {},
+       [](const MeshDescription &d, const std::string &where) {
+         refuse_grading(d, "half ring", where);
+       },
        [](const MeshDescription &d, Triangulation<2> &t, const std::string &) {
          MeshLabels labels;
          labels.boundaries =
@@ -367,6 +405,7 @@ namespace glissade
          return parse_ring(prm, where, false);
        },
        [](const MeshDescription &d, const std::string &where) {
+         refuse_grading(d, "ring", where);
          if (d.subdivisions[0] < 3)
            throw InputError(where + "/Mesh/Subdivisions",
                             "a ring needs at least 3 elements around");
@@ -428,6 +467,7 @@ namespace glissade
          return {};
        },
        [](const MeshDescription &d, const std::string &where) {
+         refuse_grading(d, "gmsh", where);
          if (d.file.empty())
            throw InputError(where + "/Mesh/File", "gmsh meshes need a File");
        },

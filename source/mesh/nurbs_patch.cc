@@ -384,11 +384,11 @@ namespace glissade
 
 
   NurbsPatch
-  NurbsPatch::rectangle(const Point<2>    &corner_1,
-                        const Point<2>    &corner_2,
-                        const unsigned int degree,
-                        const unsigned int n_x,
-                        const unsigned int n_y)
+  NurbsPatch::rectangle(const Point<2>            &corner_1,
+                        const Point<2>            &corner_2,
+                        const unsigned int         degree,
+                        const std::vector<double> &x_knots,
+                        const std::vector<double> &y_knots)
   {
     const Segment      line = unit_line(degree);
     const BSplineBasis basis(degree, piecewise_knots(degree, 1));
@@ -400,10 +400,12 @@ namespace glissade
             corner_1[1] + line[b][0] * (corner_2[1] - corner_1[1]),
             1.}});
     NurbsPatch patch = from_homogeneous(basis, basis, control);
-    for (unsigned int i = 1; i < n_x; ++i)
-      patch.insert_knot(0, double(i) / n_x);
-    for (unsigned int j = 1; j < n_y; ++j)
-      patch.insert_knot(1, double(j) / n_y);
+    for (const double u : x_knots)
+      if (u > 0. && u < 1.)
+        patch.insert_knot(0, u);
+    for (const double v : y_knots)
+      if (v > 0. && v < 1.)
+        patch.insert_knot(1, v);
     return patch;
   }
 

@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <glissade/base/input_error.h>
+#include <glissade/mesh/graded_intervals.h>
 #include <glissade/mesh/nurbs_patch_file.h>
 
 #include <cmath>
@@ -248,18 +249,19 @@ namespace glissade
 
 
   void
-  NurbsPatchFile::refine(const std::array<unsigned int, 2> &subdivisions)
+  NurbsPatchFile::refine(const std::array<unsigned int, 2> &subdivisions,
+                         const std::array<double, 2>       &grading)
   {
     for (unsigned int d = 0; d < 2; ++d)
       {
-        const BSplineBasis basis = d == 0 ? patch.xi : patch.eta;
+        const BSplineBasis        basis = d == 0 ? patch.xi : patch.eta;
+        const std::vector<double> ends =
+          graded_interval_ends(subdivisions[d], grading[d]);
         for (unsigned int s = 0; s < basis.n_spans(); ++s)
           {
             const auto range = basis.span_range(s);
             for (unsigned int k = 1; k < subdivisions[d]; ++k)
-              patch.insert_knot(d,
-                                range[0] +
-                                  (range[1] - range[0]) * k / subdivisions[d]);
+              patch.insert_knot(d, range[0] + (range[1] - range[0]) * ends[k]);
           }
       }
   }

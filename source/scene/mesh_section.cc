@@ -35,6 +35,16 @@ namespace glissade
       Patterns::List(Patterns::Integer(1), 2, 2, ","),
       "Elements along and across: (x, y) for rectangles and squares, "
       "(circumference, thickness) for rings.");
+    prm.declare_entry(
+      "Grading",
+      "1, 1",
+      Patterns::List(Patterns::Double(0.), 2, 2, ","),
+      "For each count of Subdivisions, the ratio of the last interval to "
+      "the first, the sizes in geometric progression: 1, 1 for equal "
+      "intervals; 20 makes them grow twentyfold from the low end of x (or "
+      "xi), 0.05 shrink twentyfold towards its high end. rectangle, square "
+      "and nurbs patch (each element of the file graded alike); a contact "
+      "zone meshed finely without a mesh file.");
     prm.declare_entry("File",
                       "",
                       Patterns::Anything(),
@@ -70,6 +80,17 @@ namespace glissade
     for (const auto &n :
          Utilities::split_string_list(prm.get("Subdivisions"), ','))
       subdivisions.push_back(Utilities::string_to_int(n));
+    {
+      const auto ratios = Utilities::split_string_list(prm.get("Grading"), ',');
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          grading[d] = Utilities::string_to_double(ratios[d]);
+          if (!(grading[d] >= 1e-4 && grading[d] <= 1e4))
+            throw InputError(where + "/Mesh/Grading",
+                             "each ratio must lie between 1e-4 and 1e4 (is " +
+                               ratios[d] + ")");
+        }
+    }
     file       = prm.get("File");
     distortion = prm.get_double("Distortion");
     {

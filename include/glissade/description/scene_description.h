@@ -6,6 +6,7 @@
 #include <glissade/description/plane_hypothesis.h>
 
 #include <any>
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -36,8 +37,15 @@ namespace glissade
   {
     std::string               type;
     std::vector<unsigned int> subdivisions;
-    std::string               file;
-    double                    distortion = 0.;
+    /**
+     * Mesh/Grading: for each direction of Subdivisions, the ratio of the
+     * last interval to the first (a geometric progression; 1 for equal
+     * intervals), for the types that take it (rectangle, square, nurbs
+     * patch).
+     */
+    std::array<double, 2> grading = {{1., 1.}};
+    std::string           file;
+    double                distortion = 0.;
     /**
      * A part of a named boundary under a name of its own (Mesh/Boundary
      * parts): the faces of `boundary` whose centre, in the reference

@@ -178,14 +178,14 @@ namespace glissade
               unsigned int span_eta,
               unsigned int face) const;
 
-    /** The rectangle [x0, x1] x [y0, y1], its knots at n_x and n_y equal
-     *  intervals. */
+    /** The rectangle [x0, x1] x [y0, y1], a knot at each fraction of
+     *  x_knots and y_knots inside (0, 1) (graded_interval_ends). */
     static NurbsPatch
-    rectangle(const dealii::Point<2> &corner_1,
-              const dealii::Point<2> &corner_2,
-              const unsigned int      degree,
-              const unsigned int      n_x,
-              const unsigned int      n_y);
+    rectangle(const dealii::Point<2>    &corner_1,
+              const dealii::Point<2>    &corner_2,
+              const unsigned int         degree,
+              const std::vector<double> &x_knots,
+              const std::vector<double> &y_knots);
 
     /**
      * The annulus r_in <= |X - c| <= r_out between the angles theta_0 and

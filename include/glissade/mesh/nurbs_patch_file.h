@@ -40,11 +40,14 @@ namespace glissade
     read(const std::string &file, const std::string &entry);
 
     /**
-     * Splits every element into `subdivisions` equal parts in each
-     * parameter by knot insertion (the patch unchanged).
+     * Splits every element into `subdivisions` parts in each parameter by
+     * knot insertion (the patch unchanged), their parametric lengths in
+     * geometric progression, the last `grading` times the first (1: equal
+     * parts).
      */
     void
-    refine(const std::array<unsigned int, 2> &subdivisions);
+    refine(const std::array<unsigned int, 2> &subdivisions,
+           const std::array<double, 2>       &grading = {{1., 1.}});
 
     /**
      * The mesh of the patch's elements: cell k is span (k % n_xi,
