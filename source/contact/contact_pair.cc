@@ -436,6 +436,9 @@ namespace glissade
   void
   ContactPair::check_initial_state()
   {
+    // (the detection section holds the surface build it makes, as the
+    // run's table reads them)
+    TimerOutput::Scope scope(timer, timing::detection);
     begin_step(0., 0.);
     double       deepest = 0.;
     unsigned int behind  = 0;
