@@ -140,7 +140,7 @@ namespace glissade
     /**
      * What the forces of a unit reaction sum to on the slave, along the
      * node's frame: 1, but for mortar on a NURBS slave, whose forces follow
-     * the curve's normal across the point's function, |int R_A n| / int
+     * the curve's normal across the point's function, |int psi_A n| / int
      * R_A (set by its projection).
      */
     double resultant_factor = 1.;
