@@ -40,8 +40,16 @@ namespace
 
   /** A slave block on a master block, or on a rigid obstacle. */
   std::string
-  scene(const std::string &master)
+  scene(const std::string &named)
   {
+    // <master>_standard: mortar with a NURBS slave on its standard
+    // multipliers (Mortar multipliers = standard) instead of the dual ones.
+    const std::string suffix = "_standard";
+    const bool        standard =
+      named.size() > suffix.size() &&
+      named.compare(named.size() - suffix.size(), suffix.size(), suffix) == 0;
+    const std::string master =
+      standard ? named.substr(0, named.size() - suffix.size()) : named;
     // faceted_vertex: slave nodes above the master's nodes (both blocks
     // 4 x 2), met as vertices with their cone (Faceted vertex rule =
     // vertex normal).
@@ -143,6 +151,8 @@ namespace
         else
           contact += " set Surface = " + master + "\n";
       }
+    if (standard)
+      contact += " set Mortar multipliers = standard\n";
     return text + contact + "end\n";
   }
 
@@ -395,6 +405,7 @@ CONTACT_TANGENT_TEST(mortar_nurbs_slave, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, frictionless)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, stick)
 CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_on_nurbs_standard, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_disk, frictionless)
 CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_disk, stick)
 CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_casing, slip)

@@ -556,7 +556,14 @@ GLISSADE_TEST(nurbs_contact_input_errors)
           "built for degrees 2 and 3"},
          {with("set Master body = outer\n set Master boundary = inner",
                "set Master body = inner\n set Master boundary = outer"),
-          "self-contact of a NURBS body"}})
+          "self-contact of a NURBS body"},
+         {replaced(shrink_fit_scene("q1", "faceted", 8, 1e-3, "mortar"),
+                   "set Discretisation = mortar",
+                   "set Discretisation = mortar\n"
+                   " set Mortar multipliers = standard"),
+          "Contact fit/Mortar multipliers: standard multipliers are built "
+          "for a NURBS slave; mortar on the faces of body 'inner' is dual "
+          "only"}})
     {
       const std::string message = refusal(scene);
       std::cout << "  " << message << std::endl;

@@ -167,6 +167,19 @@ namespace glissade
                       "How the contact constraint is written per slave "
                       "node: " +
                         ContactDiscretisation::documentation());
+    prm.declare_entry(
+      "Mortar multipliers",
+      "dual",
+      Patterns::Selection("dual|standard"),
+      "Mortar with a NURBS slave: the functions of the multiplier. dual: "
+      "the element-wise dual functions of the slave boundary's R_A (Seitz "
+      "et al. 2016), a pressure without point-to-point oscillation (Hertz's "
+      "p0 within 0.5 %); standard: R_A themselves (De Lorenzis et al. "
+      "2011), whose pressure alternates from point to point by up to 18 % "
+      "of p0 on Hertz, but which holds where dual stops: a coarse curved "
+      "slave sliding deep into a soft master (the NURBS die of the ironing "
+      "study). Mortar on Q1 faces is dual only (doc/contact.md, 'Mortar "
+      "with a NURBS slave').");
     // The master surfaces' own entries (Faceted vertex rule, ...).
     SurfaceRegistry::declare_parameters(prm, SurfaceRegistry::Kind::deformable);
     prm.declare_entry("Alert distance",
@@ -315,8 +328,11 @@ namespace glissade
   void
   ContactDescription::parse_settings(SectionReader &prm)
   {
-    surface        = prm.get("Surface");
-    discretisation = prm.get("Discretisation");
+    surface            = prm.get("Surface");
+    discretisation     = prm.get("Discretisation");
+    mortar_multipliers = prm.get("Mortar multipliers") == "standard" ?
+                           MortarMultipliers::standard :
+                           MortarMultipliers::dual;
     if (master == MasterKind::body)
       surface_settings = SurfaceRegistry::parse_parameters(
         prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);

@@ -464,8 +464,18 @@ namespace glissade
     std::any surface_settings;
     /** node-to-segment | mortar (ContactDiscretisation). */
     std::string discretisation = "node-to-segment";
-    double      alert_distance = 0.;
-    double      friction       = 0.;
+    /**
+     * Mortar multipliers (mortar with a NURBS slave): the element-wise dual
+     * functions of the slave boundary's R_A, or R_A themselves.
+     */
+    enum class MortarMultipliers
+    {
+      dual,
+      standard
+    };
+    MortarMultipliers mortar_multipliers = MortarMultipliers::dual;
+    double            alert_distance     = 0.;
+    double            friction           = 0.;
     // A rigid obstacle: its kind and its pose (its shape, Normal, Radius,
     // ..., is the kind's own, in surface_settings).
     std::string              obstacle = "line"; // line | disk | hole | casing

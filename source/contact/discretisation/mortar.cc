@@ -920,6 +920,13 @@ namespace glissade
     // boundary curve (nurbs_slave_mortar.cc).
     if (!context.slave.space().capabilities().dofs_are_nodal_values)
       return create_nurbs_slave_mortar(context);
+    if (context.description.mortar_multipliers ==
+        ContactDescription::MortarMultipliers::standard)
+      throw InputError(entry + "/Mortar multipliers",
+                       "standard multipliers are built for a NURBS slave; "
+                       "mortar on the faces of body '" +
+                         context.slave.name() +
+                         "' is dual only (set Mortar multipliers = dual)");
     return std::make_unique<Mortar>(context);
   }
 } // namespace glissade

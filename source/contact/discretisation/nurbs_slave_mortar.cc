@@ -181,12 +181,14 @@ namespace glissade
      * interface the force keeps the normal's turn across each function's
      * support (with a nodal normal n_A in its place the interference fit
      * converged like h^2; with the curve's own it sits at its converged
-     * figure from 8 elements on). The standard basis R_A in place of psi_A
-     * (De Lorenzis, Temizer, Wriggers & Zavarise 2011) also passes the
-     * patch test, but its lambda_A alternate from point to point on
-     * Hertz's cylinder (by 18 % of p0): an alternating multiplier's
-     * compliance is smaller by about the square of the mass matrix's
-     * symbol there. Each slave span is cut where
+     * figure from 8 elements on). Mortar multipliers = standard takes R_A
+     * in place of psi_A (De Lorenzis, Temizer, Wriggers & Zavarise 2011):
+     * it also passes the patch test, but its lambda_A alternate from point
+     * to point on Hertz's cylinder (by 18 % of p0: an alternating
+     * multiplier's compliance is smaller by about the square of the mass
+     * matrix's symbol there); it holds where the dual functions' negative
+     * lobes make a point near a contact edge unstable (the NURBS ironing
+     * die). Each slave span is cut where
      * the master segment's ends fall along the slave normals and
      * integrated with four Gauss points a cut, every integral
      * differentiated exactly (forward mode). doc/contact.md, "Isogeometric
@@ -381,6 +383,12 @@ namespace glissade
           for (unsigned int m = 0; m < n; ++m)
             for (unsigned int l = 0; l < n; ++l)
               M(m, l) *= D[m];
+          // (Mortar multipliers = standard: psi_m = R_m)
+          if (context.description.mortar_multipliers ==
+              ContactDescription::MortarMultipliers::standard)
+            for (unsigned int m = 0; m < n; ++m)
+              for (unsigned int l = 0; l < n; ++l)
+                M(m, l) = m == l ? 1. : 0.;
           dual_of_span.push_back(std::move(M));
         }
       point_of_control.resize(control_dofs.size());
