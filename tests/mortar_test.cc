@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "contact_patch.h"
+#include "hertz_line_contact.h"
 #include "source_tree.h"
 #include "test_tools.h"
 
@@ -154,79 +155,31 @@ namespace
            "subsection Output\n set Progress = false\nend\n";
   }
 
-  struct CylinderFigures
-  {
-    double load, half_width, peak_pressure, profile_error, oscillation;
-  };
-
   /**
-   * Hertz's figures of a plane contact read off the slave nodes (the
-   * quarter model: the node on the axis carries half its full force):
-   * the load per unit length P = 2 sum f_k; the half-width from the
-   * second moment, sum f_k x_k^2 / sum f_k = a^2 / 4 for
-   * p = p0 sqrt(1 - x^2 / a^2); the peak pressure at the axis node (its
-   * force over its tributary length); inside 0.9 a, the largest
-   * |p_k - Hertz| / p0 and the largest node-to-node oscillation of that
-   * error, |e_k - (e_k-1 + e_k+1) / 2| / p0 (Hertz's own curvature taken
-   * out), with Hertz's a and p0 of the measured load.
+   * The slave nodes of the quarter model as Hertz's points: each node's
+   * pressure its force over its tributary length (the axis node: twice
+   * its force, the quarter model's half, over the mirrored tributary).
    */
-  CylinderFigures
-  cylinder_figures(const ContactPair &pair,
-                   const double       reduced_modulus,
-                   CylinderFigures   &hertz)
+  std::vector<HertzPoint>
+  cylinder_points(const ContactPair &pair)
   {
-    const Body                                         &body = pair.slave();
-    const auto                                         &u = body.displacement();
+    const auto &u = pair.slave().displacement();
     std::vector<std::pair<double, const ContactNode *>> along;
     for (const ContactNode &node : pair.nodes())
       along.emplace_back(node.reference_position[0] + node.displacement(u)[0],
                          &node);
     std::sort(along.begin(), along.end());
-    CylinderFigures measured{0., 0., 0., 0., 0.};
-    double          sum = 0., moment = 0.;
-    for (const auto &[x, node] : along)
-      if (node->active)
-        {
-          sum += node->force()[1];
-          moment += node->force()[1] * x * x;
-        }
-    measured.load       = 2. * sum;
-    measured.half_width = 2. * std::sqrt(moment / sum);
-    hertz.load          = measured.load;
-    hertz.half_width    = std::sqrt(4. * hertz.load / (M_PI * reduced_modulus));
-    hertz.peak_pressure = 2. * hertz.load / (M_PI * hertz.half_width);
-    const double        a = hertz.half_width;
-    std::vector<double> x, error;
+    std::vector<HertzPoint> points;
     for (unsigned int k = 0; k + 1 < along.size(); ++k)
       {
         const double left      = k > 0 ? along[k - 1].first : -along[1].first;
         const double tributary = 0.5 * (along[k + 1].first - left);
-        // (the axis node: twice its force over the mirrored tributary)
-        const double p =
-          (k == 0 ? 2. : 1.) * along[k].second->force()[1] / tributary;
-        if (k == 0)
-          measured.peak_pressure = p;
-        if (along[k].first > 1.2 * a)
-          break;
-        x.push_back(along[k].first);
-        error.push_back(
-          p - hertz.peak_pressure *
-                std::sqrt(std::max(0., 1. - std::pow(along[k].first / a, 2))));
+        const double force =
+          along[k].second->active ? along[k].second->force()[1] : 0.;
+        points.push_back(
+          {along[k].first, force, (k == 0 ? 2. : 1.) * force / tributary});
       }
-    for (unsigned int k = 0; k < x.size(); ++k)
-      if (x[k] < 0.9 * a)
-        {
-          measured.profile_error =
-            std::max(measured.profile_error,
-                     std::abs(error[k]) / hertz.peak_pressure);
-          // (the axis node's mirror image has the same error)
-          const double before = k > 0 ? error[k - 1] : error[1];
-          measured.oscillation =
-            std::max(measured.oscillation,
-                     std::abs(error[k] - 0.5 * (before + error[k + 1])) /
-                       hertz.peak_pressure);
-        }
-    return measured;
+    return points;
   }
 } // namespace
 
@@ -253,10 +206,11 @@ GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
                                              rigid),
                                  "hertz"));
       simulation.run();
-      const ContactPair    &pair = *simulation.contact().contact_pairs()[0];
-      CylinderFigures       hertz{};
-      const CylinderFigures measured = cylinder_figures(pair, E_star, hertz);
-      const double          reaction =
+      const ContactPair &pair = *simulation.contact().contact_pairs()[0];
+      HertzFigures       hertz;
+      const HertzFigures measured =
+        hertz_line_contact(cylinder_points(pair), E_star, hertz);
+      const double reaction =
         support_reaction(simulation.body("cylinder"), "top")[1];
       std::cout << "  " << discretisation << ": P = " << measured.load
                 << " (support " << -2. * reaction
@@ -294,75 +248,104 @@ GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
 
 
 
-// Ironing (prm/ironing.prm: MOOSE's ironing test, after Yang, Laursen and
-// Meng 2005): a stiff die pressed 1 deep into a soft slab and slid along
-// it with mu = 0.5. With mortar, the normal force on the die over the
-// steady slide (t in [2.5, 6.5]) oscillates by less than 1 % of its mean
-// about its slow trend (a quadratic in t, fitted by least squares): the
-// die's nodes pass the slab's element edges without the force jumping.
-// The contact force balances the support's reaction at every increment.
+namespace
+{
+  /**
+   * Ironing (prm/ironing.prm: MOOSE's ironing test, after Yang, Laursen and
+   * Meng 2005): a stiff die pressed 1 deep into a soft slab and slid along
+   * it with mu = 0.5, with mortar (`scene`: ironing.prm or a variant of
+   * it). The normal force
+   * on the die over the steady slide (t in [2.5, 6.5]) must oscillate by
+   * less than 1 % of its mean about its slow trend (a quadratic in t,
+   * fitted by least squares): the die's points pass the slab's element
+   * edges without the force jumping. The contact force must balance the
+   * support's reaction at every increment.
+   */
+  void
+  check_steady_ironing(const std::string &scene, const std::string &directory)
+  {
+    Simulation simulation(
+      SceneReader::read_file(source_path(scene),
+                             {"Output/Directory=" + directory,
+                              "Output/VTU interval=0",
+                              "Output/Contact table interval=0",
+                              "Output/Progress=false"}));
+    std::vector<double> time, normal, tangential;
+    double              worst_balance = 0., largest_support = 0.;
+    simulation.on_increment = [&](unsigned int, const double t) {
+      const Tensor<1, 2> support =
+        support_reaction(simulation.body("die"), "top");
+      const Tensor<1, 2> contact =
+        simulation.contact().contact_pairs()[0]->total_force();
+      worst_balance   = std::max(worst_balance, (support + contact).norm());
+      largest_support = std::max(largest_support, support.norm());
+      if (t >= 2.5 - 1e-9)
+        {
+          time.push_back(t);
+          normal.push_back(-support[1]);
+          tangential.push_back(support[0]);
+        }
+    };
+    simulation.run();
+    worst_balance /= largest_support;
+
+    // Least squares on 1, t, t^2 (normal equations, 3 x 3).
+    const auto oscillation = [&](const std::vector<double> &f) {
+      FullMatrix<double> A(3, 3);
+      Vector<double>     b(3), c(3);
+      for (unsigned int k = 0; k < time.size(); ++k)
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            b(i) += std::pow(time[k], i) * f[k];
+            for (unsigned int j = 0; j < 3; ++j)
+              A(i, j) += std::pow(time[k], i + j);
+          }
+      A.gauss_jordan();
+      A.vmult(c, b);
+      double mean = 0., largest = 0.;
+      for (unsigned int k = 0; k < time.size(); ++k)
+        {
+          mean += f[k] / time.size();
+          largest = std::max(largest,
+                             std::abs(f[k] - c(0) - c(1) * time[k] -
+                                      c(2) * time[k] * time[k]));
+        }
+      return std::make_pair(mean, largest / mean);
+    };
+    const auto [normal_mean, normal_oscillation] = oscillation(normal);
+    const auto [tangential_mean, tangential_oscillation] =
+      oscillation(tangential);
+    std::cout << "  steady slide, " << time.size()
+              << " increments: normal force " << normal_mean
+              << ", oscillation about its trend " << 100. * normal_oscillation
+              << " %; tangential force " << tangential_mean << " ("
+              << tangential_mean / normal_mean
+              << " of the normal), oscillation "
+              << 100. * tangential_oscillation
+              << " %; contact force against the support's reaction: "
+              << worst_balance << std::endl;
+    check(time.size() >= 100, "the slide was not computed");
+    check(worst_balance <= 1e-8, "the contact force does not balance the die");
+    check(normal_oscillation <= 0.01,
+          "the normal force oscillates by more than 1 % of its mean");
+  }
+} // namespace
+
+
+
+// The die of Q4 elements (MOOSE's mesh) on the Q1 slab, over its faces.
 GLISSADE_TEST(mortar_ironing_steady_force)
 {
-  Simulation simulation(
-    SceneReader::read_file(source_path("prm/ironing.prm"),
-                           {"Output/Directory=mortar_ironing",
-                            "Output/VTU interval=0",
-                            "Output/Contact table interval=0",
-                            "Output/Progress=false"}));
-  std::vector<double> time, normal, tangential;
-  double              worst_balance = 0., largest_support = 0.;
-  simulation.on_increment = [&](unsigned int, const double t) {
-    const Tensor<1, 2> support =
-      support_reaction(simulation.body("die"), "top");
-    const Tensor<1, 2> contact =
-      simulation.contact().contact_pairs()[0]->total_force();
-    worst_balance   = std::max(worst_balance, (support + contact).norm());
-    largest_support = std::max(largest_support, support.norm());
-    if (t >= 2.5 - 1e-9)
-      {
-        time.push_back(t);
-        normal.push_back(-support[1]);
-        tangential.push_back(support[0]);
-      }
-  };
-  simulation.run();
-  worst_balance /= largest_support;
+  check_steady_ironing("prm/ironing.prm", "mortar_ironing");
+}
 
-  // Least squares on 1, t, t^2 (normal equations, 3 x 3).
-  const auto oscillation = [&](const std::vector<double> &f) {
-    FullMatrix<double> A(3, 3);
-    Vector<double>     b(3), c(3);
-    for (unsigned int k = 0; k < time.size(); ++k)
-      for (unsigned int i = 0; i < 3; ++i)
-        {
-          b(i) += std::pow(time[k], i) * f[k];
-          for (unsigned int j = 0; j < 3; ++j)
-            A(i, j) += std::pow(time[k], i + j);
-        }
-    A.gauss_jordan();
-    A.vmult(c, b);
-    double mean = 0., largest = 0.;
-    for (unsigned int k = 0; k < time.size(); ++k)
-      {
-        mean += f[k] / time.size();
-        largest = std::max(largest,
-                           std::abs(f[k] - c(0) - c(1) * time[k] -
-                                    c(2) * time[k] * time[k]));
-      }
-    return std::make_pair(mean, largest / mean);
-  };
-  const auto [normal_mean, normal_oscillation] = oscillation(normal);
-  const auto [tangential_mean, tangential_oscillation] =
-    oscillation(tangential);
-  std::cout << "  steady slide, " << time.size() << " increments: normal force "
-            << normal_mean << ", oscillation about its trend "
-            << 100. * normal_oscillation << " %; tangential force "
-            << tangential_mean << " (" << tangential_mean / normal_mean
-            << " of the normal), oscillation " << 100. * tangential_oscillation
-            << " %; contact force against the support's reaction: "
-            << worst_balance << std::endl;
-  check(time.size() >= 100, "the slide was not computed");
-  check(worst_balance <= 1e-8, "the contact force does not balance the die");
-  check(normal_oscillation <= 0.01,
-        "the normal force oscillates by more than 1 % of its mean");
+
+
+// Both bodies isogeometric (degree 2), prm/ironing_nurbs.prm: the die one
+// NURBS patch with its arc exact, the slave side its arc with mortar on
+// its own functions (Mortar multipliers = standard), the slab's exact top
+// the master.
+GLISSADE_TEST(mortar_ironing_nurbs_die_and_slab)
+{
+  check_steady_ironing("prm/ironing_nurbs.prm", "mortar_ironing_nurbs");
 }

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "hertz_line_contact.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -29,48 +30,19 @@ using namespace glissade_tests;
 
 namespace
 {
-  struct HertzFigures
-  {
-    double load = 0., half_width = 0., peak_pressure = 0.;
-    double profile_error = 0., oscillation = 0.;
-  };
-
   /**
-   * Hertz's figures of a NURBS slave with mortar, read off its points (the
-   * arc's Greville points, one per control point A). A point's pressure is
-   * its multiplier lambda_A, its normal reaction over int R_A dA: with the
-   * dual basis the coefficient is the pressure about A, as a Q4 node's
-   * force over its tributary length is (tests/mortar_test.cc), per
-   * reference length; over the arc's stretch ds / dS there, the Cauchy
-   * pressure Hertz speaks of. The load per unit length P = 2 sum f_y (the
-   * quarter model); the half-width from the second moment, sum f_y x^2 /
-   * sum f_y = a^2 / 4 for p = p0 sqrt(1 - x^2 / a^2); p0 at the point on
-   * the axis. Inside 0.9 a, the largest |p_A - Hertz(x_A)| / p0 and the
-   * largest point-to-point oscillation of that error, |e_k - (e_k-1 +
-   * e_k+1) / 2| / p0, with Hertz's a and p0 at the measured load.
+   * A NURBS slave's points (the arc's Greville points, one per control
+   * point A) as Hertz's points. A point's pressure is its multiplier
+   * lambda_A, its normal reaction over int R_A dA: with the dual basis
+   * the coefficient is the pressure about A, as a Q4 node's force over its
+   * tributary length is (tests/mortar_test.cc), per reference length; over
+   * the arc's stretch ds / dS there, the Cauchy pressure Hertz speaks of.
    */
-  HertzFigures
-  hertz_figures(const ContactPair &pair,
-                const double       reduced_modulus,
-                HertzFigures      &hertz)
+  std::vector<HertzPoint>
+  slave_points(const ContactPair &pair)
   {
     const Body &body = pair.slave();
     const auto &u    = body.displacement();
-    double      sum = 0., moment = 0.;
-    for (const ContactNode &node : pair.nodes())
-      {
-        const double x = node.reference_position[0] + node.displacement(u)[0];
-        sum += node.force()[1];
-        moment += node.force()[1] * x * x;
-      }
-    HertzFigures measured;
-    measured.load       = 2. * sum;
-    measured.half_width = 2. * std::sqrt(moment / sum);
-    hertz.load          = measured.load;
-    hertz.half_width    = std::sqrt(4. * hertz.load / (M_PI * reduced_modulus));
-    hertz.peak_pressure = 2. * hertz.load / (M_PI * hertz.half_width);
-    const double a = hertz.half_width, p0 = hertz.peak_pressure;
-
     // The slave arc as the pair built it (its points are the curve's
     // Greville points in order), for the stretch at each point.
     const NurbsBoundary arc = NurbsBoundary::build(
@@ -95,7 +67,7 @@ namespace
       const auto dx = curve.derivative(greville[g].segment, greville[g].s);
       return std::hypot(dx[0], dx[1]);
     };
-    std::vector<std::pair<double, double>> along; // x, pressure
+    std::vector<HertzPoint> points;
     for (unsigned int g = 0; g < greville.size(); ++g)
       {
         const ContactNode &node = pair.nodes()[g];
@@ -104,28 +76,17 @@ namespace
         check(std::hypot(X[0] - node.reference_position[0],
                          X[1] - node.reference_position[1]) < 1e-12,
               "the slave points are the arc's Greville points");
-        along.emplace_back(node.reference_position[0] + node.displacement(u)[0],
-                           node.reaction[1] / node.collocation_area *
-                             speed(reference, g) / speed(current, g));
+        points.push_back({node.reference_position[0] + node.displacement(u)[0],
+                          node.force()[1],
+                          node.reaction[1] / node.collocation_area *
+                            speed(reference, g) / speed(current, g)});
       }
-    std::sort(along.begin(), along.end());
-    measured.peak_pressure = along[0].second;
-    std::vector<double> error;
-    for (const auto &[x, p] : along)
-      error.push_back(p - p0 * std::sqrt(std::max(0., 1. - x * x / (a * a))));
-    for (unsigned int k = 0; k + 1 < along.size(); ++k)
-      if (along[k].first < 0.9 * a)
-        {
-          // (the point on the axis: its mirror image has the error of its
-          // neighbour)
-          const double before = k > 0 ? error[k - 1] : error[1];
-          measured.profile_error =
-            std::max(measured.profile_error, std::abs(error[k]) / p0);
-          measured.oscillation =
-            std::max(measured.oscillation,
-                     std::abs(error[k] - 0.5 * (before + error[k + 1])) / p0);
-        }
-    return measured;
+    std::sort(points.begin(),
+              points.end(),
+              [](const HertzPoint &a, const HertzPoint &b) {
+                return a.x < b.x;
+              });
+    return points;
   }
 } // namespace
 
@@ -154,8 +115,9 @@ GLISSADE_TEST(nurbs_contact_hertz_cylinder_on_flat)
       const ContactPair &pair   = *simulation.contact().contact_pairs()[0];
       const double       E_star = 200. / (2. * (1. - 0.3 * 0.3));
       HertzFigures       hertz;
-      const HertzFigures measured = hertz_figures(pair, E_star, hertz);
-      const double       reaction =
+      const HertzFigures measured =
+        hertz_line_contact(slave_points(pair), E_star, hertz);
+      const double reaction =
         support_reaction(simulation.body("cylinder"), "top")[1];
       std::cout << "  p = " << degree << ", " << discretisation
                 << ": P = " << measured.load << " (support " << -2. * reaction

@@ -69,25 +69,33 @@ def elevated(net):
             for b in range(len(columns[0]))]
 
 
-def write(net, path):
+def write(net, path, title, xi_knots=None,
+          names=(("arc", "eta0"), ("free_arc", "xi1"), ("top", "eta1"),
+                 ("axis", "xi0"))):
+    """Writes the net (rows of eta, each along xi) as a patch file of one
+    element in eta (and in xi unless xi_knots says otherwise)."""
     p = len(net) - 1
-    knots = " ".join(["0"] * (p + 1) + ["1"] * (p + 1))
+    eta_knots = " ".join(["0"] * (p + 1) + ["1"] * (p + 1))
     with open(path, "w") as out:
-        out.write(
-            "# The quarter disk of radius 1, centre (0, 1), x >= 0, y <= 1, as\n"
-            "# one NURBS patch of degree %d (written by\n"
-            "# make_quarter_disk_patches.py, which explains its corners).\n"
-            % p)
+        out.write(title)
         out.write("degrees %d %d\nknots xi %s\nknots eta %s\n" %
-                  (p, p, knots, knots))
-        out.write("control points %d %d\n" % (p + 1, p + 1))
+                  (p, p, xi_knots or eta_knots, eta_knots))
+        out.write("control points %d %d\n" % (len(net[0]), len(net)))
         for row in net:
             for wx, wy, w in row:
                 out.write("%.17g %.17g %.17g\n" % (wx / w, wy / w, w))
-        out.write("boundary arc eta0\nboundary free_arc xi1\n"
-                  "boundary top eta1\nboundary axis xi0\n")
+        for name, side in names:
+            out.write("boundary %s %s\n" % (name, side))
 
 
-net = quadratic_net()
-write(net, "quarter_disk_p2.nurbs")
-write(elevated(net), "quarter_disk_p3.nurbs")
+def title(p):
+    return ("# The quarter disk of radius 1, centre (0, 1), x >= 0, y <= 1, as\n"
+            "# one NURBS patch of degree %d (written by\n"
+            "# make_quarter_disk_patches.py, which explains its corners).\n"
+            % p)
+
+
+if __name__ == "__main__":
+    net = quadratic_net()
+    write(net, "quarter_disk_p2.nurbs", title(2))
+    write(elevated(net), "quarter_disk_p3.nurbs", title(3))
