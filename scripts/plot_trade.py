@@ -24,7 +24,12 @@ titles = {
 names = {"q4": "Q4 (faceted)", "q8": "Q8", "q9": "Q9", "q12": "Q12",
          "q16": "Q16", "bspline": "Q4 + B-spline (segment transfer)",
          "bspline-spline": "Q4 + B-spline (spline transfer)",
-         "hermite": "Hermite"}
+         "hermite": "Hermite", "mortar": "Q4 mortar (faceted master)",
+         # (an error at round-off is drawn at the floor 1e-12)
+         "nurbs2": "NURBS p = 2 (exact circle)",
+         "nurbs3": "NURBS p = 3 (exact circle)",
+         "nurbs2-mortar": "NURBS p = 2, mortar",
+         "nurbs3-mortar": "NURBS p = 3, mortar"}
 for path in sorted(glob.glob(f"{directory}/trade_*.csv")):
     measure = os.path.basename(path)[len("trade_"):-len(".csv")]
     rows = list(csv.DictReader(open(path)))

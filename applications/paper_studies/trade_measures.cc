@@ -20,10 +20,14 @@ namespace glissade
 
   namespace
   {
-    /** The element space of a discretisation label (Table 1). */
-    std::string
-    space_of(const std::string &discretisation)
+    /** The Element entries of a discretisation label (Table 1): its space,
+     *  and the degree of a NURBS one (nurbs2, nurbs3). */
+    std::vector<std::string>
+    element_of(const std::string &discretisation)
     {
+      if (discretisation.rfind("nurbs", 0) == 0)
+        return {"Body beam/Element/Space=nurbs",
+                "Body beam/Element/Degree=" + discretisation.substr(5)};
       static const std::map<std::string, std::string> spaces = {{"q4", "q1"},
                                                                 {"q9", "q2"},
                                                                 {"q16", "q3"},
@@ -31,7 +35,7 @@ namespace glissade
                                                                 {"q12", "q12"},
                                                                 {"hermite",
                                                                  "hermite"}};
-      return spaces.at(discretisation);
+      return {"Body beam/Element/Space=" + spaces.at(discretisation)};
     }
 
     /** "n, n/15": the paper's beam and ring aspect (120 x 8). */
@@ -44,11 +48,14 @@ namespace glissade
     /**
      * Dofs of the nodes on an edge of n elements: what a representation of
      * the master surface carries (q8 and q12 add one and two nodes per edge,
-     * Hermite six dofs per node).
+     * Hermite six dofs per node; a NURBS edge of degree p, n + p control
+     * points).
      */
     double
     edge_dofs(const std::string &method, const unsigned int n)
     {
+      if (method == "nurbs2" || method == "nurbs3")
+        return 2. * (n + std::stoi(method.substr(5)));
       if (method == "q8")
         return 2. * (2 * n + 1);
       if (method == "q12")
@@ -84,25 +91,27 @@ namespace glissade
     }
 
     TradePoint
-    table1_point(const std::string &space,
+    table1_point(const std::string &discretisation,
                  const unsigned int n,
                  const std::string &scene_file,
                  const std::string &output_directory)
     {
-      const SceneDescription scene = SceneReader::read_file(
-        scene_file,
-        {"Body beam/Element/Space=" + space,
-         "Body beam/Mesh/Subdivisions=" + along_and_across(n),
-         "Output/Progress=false",
-         "Output/VTU interval=0",
-         "Output/Directory=" + output_directory + "/table1/" + space + "_" +
-           std::to_string(n)});
+      std::vector<std::string> overrides = element_of(discretisation);
+      for (const std::string &entry :
+           {"Body beam/Mesh/Subdivisions=" + along_and_across(n),
+            std::string("Output/Progress=false"),
+            std::string("Output/VTU interval=0"),
+            "Output/Directory=" + output_directory + "/table1/" +
+              discretisation + "_" + std::to_string(n)})
+        overrides.push_back(entry);
+      const SceneDescription scene =
+        SceneReader::read_file(scene_file, overrides);
       Timer      timer;
       Simulation simulation(scene);
       simulation.run();
       TradePoint point;
       point.wall_seconds      = timer.wall_time();
-      point.dofs              = simulation.body("beam").n_dofs();
+      point.dofs              = simulation.body("beam").n_unknowns();
       point.newton_iterations = simulation.statistics().newton_iterations;
       point.value             = max_displacement(simulation.body("beam"));
       return point;
@@ -285,15 +294,25 @@ namespace glissade
   TradeMeasures::discretisations(const std::string &measure)
   {
     static const std::vector<std::string> geometric = {
-      "q4", "q8", "q12", "bspline", "hermite"};
+      "q4", "q8", "q12", "bspline", "hermite", "nurbs2", "nurbs3"};
     static const std::vector<std::string> table1 = {
-      "q4", "q8", "q9", "q12", "q16", "hermite"};
+      "q4", "q8", "q9", "q12", "q16", "hermite", "nurbs2", "nurbs3"};
     static const std::vector<std::string> contact = {
       "q4", "bspline", "bspline-spline", "hermite", "mortar"};
+    // (case 3 with both rings NURBS, mortar on the inner ring's boundary)
+    static const std::vector<std::string> case3 = {"q4",
+                                                   "bspline",
+                                                   "bspline-spline",
+                                                   "hermite",
+                                                   "mortar",
+                                                   "nurbs2-mortar",
+                                                   "nurbs3-mortar"};
     if (measure == "table1")
       return table1;
     if (measure.rfind("geometric", 0) == 0)
       return geometric;
+    if (measure.rfind("case3", 0) == 0)
+      return case3;
     return contact;
   }
 
@@ -310,7 +329,7 @@ namespace glissade
     if (measure.rfind("geometric", 0) == 0)
       return geometric_point(measure, discretisation, n);
     if (measure == "table1")
-      return table1_point(space_of(discretisation), n, scene, output_directory);
+      return table1_point(discretisation, n, scene, output_directory);
     if (measure == "case1" || measure == "case2")
       return contact_case_point(
         measure, discretisation, n, scene, settings, output_directory);

@@ -310,7 +310,8 @@ namespace glissade
       };
       prm.enter_subsection("Geometric");
       sweep("q4: 8 16 32 64 128 256; q8: 8 16 32 64; q12: 8 16 32 64; "
-            "bspline: 8 16 32 64; hermite: 8 16 32 64",
+            "bspline: 8 16 32 64; hermite: 8 16 32 64; nurbs2: 8 16 32; "
+            "nurbs3: 8 16 32",
             "elements along the half ring's outer edge (even).");
       prm.leave_subsection();
       prm.enter_subsection("Table 1");
@@ -319,7 +320,8 @@ namespace glissade
                         Patterns::Anything(),
                         "Table 1's beam (relative to this file's folder).");
       sweep("q4: 30 60 120 240 480; q8: 30 60 120; q9: 30 60 120; "
-            "q12: 30 60 120; hermite: 30 60 120",
+            "q12: 30 60 120; hermite: 30 60 120; nurbs2: 30 60 120; "
+            "nurbs3: 30 60 120",
             "elements along the beam (n/15 across).");
       prm.declare_entry("Reference",
                         "q16: 240",
@@ -366,9 +368,12 @@ namespace glissade
                         Patterns::Anything(),
                         "Case 3's scene.");
       sweep("q4: 40 80 160; bspline: 40 80; bspline-spline: 40; "
-            "hermite: 20 40 80",
+            "hermite: 20 40 80; nurbs2-mortar: 12 20 40; "
+            "nurbs3-mortar: 8 12 20 40",
             "elements around the rings (multiples of 4; Hermite: the outer "
-            "ring, the inner Q4 ring keeps 40).");
+            "ring, the inner Q4 ring keeps 40; nurbs2-mortar, "
+            "nurbs3-mortar: both rings NURBS, mortar on the inner one's "
+            "boundary).");
       prm.declare_entry("Rotation angle",
                         "9",
                         Patterns::Double(0.),
