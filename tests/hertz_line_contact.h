@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace glissade_tests
@@ -73,5 +75,23 @@ namespace glissade_tests
                      std::abs(error[k] - 0.5 * (before + error[k + 1])) / p0);
         }
     return measured;
+  }
+
+  /** One line of the measured figures beside Hertz's, and the support's
+   *  load (twice the quarter's reaction) beside the contact's. */
+  inline std::string
+  describe(const HertzFigures &measured,
+           const HertzFigures &hertz,
+           const double        support_load)
+  {
+    std::ostringstream out;
+    out.precision(10);
+    out << "P = " << measured.load << " (support " << support_load
+        << "), a = " << measured.half_width << " (Hertz " << hertz.half_width
+        << "), p0 = " << measured.peak_pressure << " (Hertz "
+        << hertz.peak_pressure << "); inside 0.9 a: largest |p - Hertz| / p0 "
+        << measured.profile_error << ", largest oscillation / p0 "
+        << measured.oscillation;
+    return out.str();
   }
 } // namespace glissade_tests

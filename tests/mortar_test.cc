@@ -212,15 +212,8 @@ GLISSADE_TEST(mortar_hertz_cylinder_on_flat)
         hertz_line_contact(cylinder_points(pair), E_star, hertz);
       const double reaction =
         support_reaction(simulation.body("cylinder"), "top")[1];
-      std::cout << "  " << discretisation << ": P = " << measured.load
-                << " (support " << -2. * reaction
-                << "), a = " << measured.half_width << " (Hertz "
-                << hertz.half_width << ", a / R " << hertz.half_width
-                << "), p0 = " << measured.peak_pressure << " (Hertz "
-                << hertz.peak_pressure
-                << "); inside 0.9 a: largest |p - Hertz| / p0 "
-                << measured.profile_error << ", largest oscillation / p0 "
-                << measured.oscillation << std::endl;
+      std::cout << "  " << discretisation << ": "
+                << describe(measured, hertz, -2. * reaction) << std::endl;
       check_relative(measured.load,
                      -2. * reaction,
                      1e-9,

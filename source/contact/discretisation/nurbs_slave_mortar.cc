@@ -1,5 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/identity_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <glissade/base/input_error.h>
@@ -301,7 +302,8 @@ namespace glissade
        * R_m R_l and D = diag(int R_m) over the span in the reference
        * configuration: the element-wise dual basis psi_m = sum_l a_ml R_l,
        * int psi_m R_l = delta_ml int R_m on the span (Seitz, Farah,
-       * Kremheller, Wohlmuth, Wall & Popp 2016).
+       * Kremheller, Wohlmuth, Wall & Popp 2016); the identity for Mortar
+       * multipliers = standard.
        */
       std::vector<FullMatrix<double>> dual_of_span;
       std::vector<Greville>           greville_of_point;
@@ -358,38 +360,40 @@ namespace glissade
         }
       AssertThrow(greville_of_point.size() == context.nodes.size(),
                   ExcMessage("a slave point per control point"));
+      const bool standard = context.description.mortar_multipliers ==
+                            ContactDescription::MortarMultipliers::standard;
       for (const Span &span : spans)
         {
           // (the curves are in the reference configuration until update())
-          const NurbsCurve   &curve = *slave_curves[span.curve].curve;
-          const unsigned int  n     = curve.degree_of_curve() + 1;
-          const QGauss<1>     rule(n + 2);
-          FullMatrix<double>  M(n, n);
-          std::vector<double> D(n, 0.), r, dr, d2r;
-          for (unsigned int q = 0; q < rule.size(); ++q)
-            {
-              const auto dx = curve.derivative(span.segment, rule.point(q)[0]);
-              const double dA = std::hypot(dx[0], dx[1]) * rule.weight(q);
-              curve.rational_functions(
-                span.segment, rule.point(q)[0], r, dr, d2r);
-              for (unsigned int m = 0; m < n; ++m)
-                {
-                  D[m] += r[m] * dA;
-                  for (unsigned int l = 0; l < n; ++l)
-                    M(m, l) += r[m] * r[l] * dA;
-                }
-            }
-          M.gauss_jordan();
-          for (unsigned int m = 0; m < n; ++m)
-            for (unsigned int l = 0; l < n; ++l)
-              M(m, l) *= D[m];
+          const NurbsCurve  &curve = *slave_curves[span.curve].curve;
+          const unsigned int n     = curve.degree_of_curve() + 1;
           // (Mortar multipliers = standard: psi_m = R_m)
-          if (context.description.mortar_multipliers ==
-              ContactDescription::MortarMultipliers::standard)
-            for (unsigned int m = 0; m < n; ++m)
-              for (unsigned int l = 0; l < n; ++l)
-                M(m, l) = m == l ? 1. : 0.;
-          dual_of_span.push_back(std::move(M));
+          FullMatrix<double> a{IdentityMatrix(n)};
+          if (!standard)
+            {
+              const QGauss<1>     rule(n + 2);
+              std::vector<double> D(n, 0.), r, dr, d2r;
+              a = 0.;
+              for (unsigned int q = 0; q < rule.size(); ++q)
+                {
+                  const auto dx =
+                    curve.derivative(span.segment, rule.point(q)[0]);
+                  const double dA = std::hypot(dx[0], dx[1]) * rule.weight(q);
+                  curve.rational_functions(
+                    span.segment, rule.point(q)[0], r, dr, d2r);
+                  for (unsigned int m = 0; m < n; ++m)
+                    {
+                      D[m] += r[m] * dA;
+                      for (unsigned int l = 0; l < n; ++l)
+                        a(m, l) += r[m] * r[l] * dA;
+                    }
+                }
+              a.gauss_jordan();
+              for (unsigned int m = 0; m < n; ++m)
+                for (unsigned int l = 0; l < n; ++l)
+                  a(m, l) *= D[m];
+            }
+          dual_of_span.push_back(std::move(a));
         }
       point_of_control.resize(control_dofs.size());
       for (unsigned int j = 0; j < context.nodes.size(); ++j)
