@@ -16,6 +16,7 @@
 #include <fstream>
 #include <tuple>
 
+#include "plane_strain_ring.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -352,6 +353,66 @@ GLISSADE_TEST(nurbs_lame_ring_rates)
                 << std::endl;
       check(std::abs(r0 - (degree + 1)) <= 0.25, "the L2 rate is off p + 1");
       check(std::abs(r1 - degree) <= 0.25, "the H1 rate is off p");
+    }
+}
+
+// Lame's ring at large strain: the quarter ring 1 < R < 2 (neo-Hookean,
+// plane strain) under an inner follower pressure of 0.1 E (the inner wall
+// stretched by 26 %, the answer 35 % off Lame's), against the plane-strain
+// reference of the radial map r = f(R) (tests/plane_strain_ring.h: the
+// ring's ordinary differential equation integrated to round-off), not the
+// code's. The NURBS displacement converges to it at the rates of degree p.
+GLISSADE_TEST(nurbs_large_strain_ring_rates)
+{
+  const double                    pressure = 100.;
+  const PlaneStrainNeoHookeanRing ring(1000., 0.3, 1., 2., pressure);
+  std::cout << "  reference: u_r(1) = " << ring.radius(1.) - 1.
+            << ", u_r(2) = " << ring.radius(2.) - 2. << std::endl;
+  const auto u = [&](const Point<2> &X) {
+    const double R = X.norm();
+    return (ring.radius(R) / R - 1.) * Tensor<1, 2>(X);
+  };
+  const auto grad = [&](const Point<2> &X) {
+    const double       R = X.norm();
+    const Tensor<1, 2> e_r({X[0] / R, X[1] / R}), e_t({-X[1] / R, X[0] / R});
+    return (ring.radial_stretch(R) - 1.) * outer_product(e_r, e_r) +
+           (ring.radius(R) / R - 1.) * outer_product(e_t, e_t);
+  };
+  for (const unsigned int degree : {2u, 3u})
+    {
+      std::vector<std::pair<double, double>> errors;
+      for (const unsigned int n : {2u, 4u, 8u, 16u})
+        {
+          Simulation simulation(SceneReader::read_string(
+            quarter_ring(degree,
+                         2 * n,
+                         n,
+                         "large strain",
+                         " set Fixed = start: y; end: x\n"
+                         " set Pressure = inner: " +
+                           std::to_string(pressure) + "*t",
+                         "large_strain_lame_" + std::to_string(degree) + "_" +
+                           std::to_string(n)),
+            "large strain ring"));
+          // four increments: Newton from the previous load's answer
+          for (const double t : {0.25, 0.5, 0.75, 1.})
+            simulation.advance_to(t, "increment");
+          errors.push_back(
+            relative_errors(simulation.body("ring"), u, grad, degree + 3));
+          std::cout << "  degree " << degree << ", " << 2 * n << " x " << n
+                    << " elements, " << simulation.body("ring").n_unknowns()
+                    << " unknowns: L2 error " << errors.back().first
+                    << ", H1 error " << errors.back().second << std::endl;
+        }
+      const unsigned int k  = errors.size() - 1;
+      const double       r0 = std::log2(errors[k - 1].first / errors[k].first);
+      const double r1 = std::log2(errors[k - 1].second / errors[k].second);
+      std::cout << "  degree " << degree << ": rates L2 " << r0 << " (theory "
+                << degree + 1 << "), H1 " << r1 << " (theory " << degree << ")"
+                << std::endl;
+      check(std::abs(r0 - (degree + 1)) <= 0.3, "the L2 rate is off p + 1");
+      check(std::abs(r1 - degree) <= 0.3, "the H1 rate is off p");
+      check(errors[k].first < 1e-4, "the finest L2 error is above 1e-4");
     }
 }
 
