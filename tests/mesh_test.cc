@@ -389,8 +389,9 @@ GLISSADE_TEST(mesh_grading)
       sizes.push_back(basis.span_range(s)[1] - basis.span_range(s)[0]);
     return sizes;
   };
-  const NurbsPatch patch =
-    MeshFactory::type("rectangle").exact_patch(rectangle, 2, "graded.prm");
+  const NurbsPatch patch = MeshFactory::type("rectangle")
+                             .exact_patch(rectangle, 2, "graded.prm")
+                             .patches.front();
   check_progression(spans(patch.xi), 1., 8., "NURBS rectangle, xi");
   check_progression(spans(patch.eta), 1., 0.5, "NURBS rectangle, eta");
 
@@ -398,8 +399,9 @@ GLISSADE_TEST(mesh_grading)
     body("  set Type = nurbs patch\n  set File = " +
          source_path("prm/meshes/quarter_annulus.nurbs") +
          "\n  set Subdivisions = 5, 3\n  set Grading = 3, 1");
-  const NurbsPatch from_file =
-    MeshFactory::type("nurbs patch").exact_patch(file, 2, "graded.prm");
+  const NurbsPatch from_file = MeshFactory::type("nurbs patch")
+                                 .exact_patch(file, 2, "graded.prm")
+                                 .patches.front();
   check_progression(spans(from_file.xi), 1., 3., "patch file, xi");
   check_progression(spans(from_file.eta), 1., 1., "patch file, eta");
 

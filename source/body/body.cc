@@ -232,7 +232,7 @@ namespace glissade
     element_space = ElementSpaceRegistry::create(description.element_space,
                                                  description.element_degree);
     if (element_space->capabilities().needs_exact_patch)
-      element_space->use_patch(exact_patch(where));
+      element_space->use_patches(exact_patch(where));
     auto             serial = std::make_unique<Triangulation<2>>();
     const MeshLabels labels =
       MeshFactory::create(description.mesh, *serial, where);
@@ -319,7 +319,7 @@ namespace glissade
 
 
 
-  NurbsPatch
+  NurbsMultipatch
   Body::exact_patch(const std::string &where) const
   {
     const std::string space = "Element/Space = " + element_space->name();
@@ -341,13 +341,15 @@ namespace glissade
       throw InputError(where + "/Turning frame",
                        "is not built for " + space +
                          " (its dofs are control points, not nodes)");
-    NurbsPatch patch =
+    NurbsMultipatch geometry =
       type.exact_patch(description.mesh, description.element_degree, where);
-    // (a distorted NURBS body: its control points off the boundary moved,
-    // and the mesh's vertices put on the patch's knot points after)
+    // (a distorted NURBS body: the control points off each patch's
+    // boundary moved, and the mesh's vertices put on the patches' knot
+    // points after; a joined side is on both patches' boundaries)
     if (description.mesh.distortion > 0.)
-      patch.distort(description.mesh.distortion);
-    return patch;
+      for (NurbsPatch &patch : geometry.patches)
+        patch.distort(description.mesh.distortion);
+    return geometry;
   }
 
 

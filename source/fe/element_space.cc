@@ -20,7 +20,7 @@ namespace glissade
 
 
   void
-  ElementSpace::use_patch(const NurbsPatch &)
+  ElementSpace::use_patches(const NurbsMultipatch &)
   {
     AssertThrow(false,
                 ExcMessage("the " + name() + " space takes no NURBS patch"));

@@ -127,16 +127,17 @@ namespace glissade
       unsigned int
       n_functions() const
       {
-        const NurbsPatch &patch = space.patch();
-        return (patch.xi.degree() + 1) * (patch.eta.degree() + 1);
+        const unsigned int p = space.polynomial_degree();
+        return (p + 1) * (p + 1);
       }
 
       std::array<std::array<double, 2>, 2>
       ranges(const CellIterator &cell) const
       {
-        const auto span = space.span_of(cell->active_cell_index());
-        return {{space.patch().xi.span_range(span[0]),
-                 space.patch().eta.span_range(span[1])}};
+        const unsigned int k     = cell->active_cell_index();
+        const auto        &span  = space.span_of(k).span;
+        const NurbsPatch  &patch = space.patch_of(k);
+        return {{patch.xi.span_range(span[0]), patch.eta.span_range(span[1])}};
       }
 
       void
@@ -156,8 +157,9 @@ namespace glissade
                   const double        u,
                   const double        v)
       {
-        const auto span = space.span_of(cell->active_cell_index());
-        space.patch().evaluate(span[0], span[1], u, v, evaluation);
+        const unsigned int k    = cell->active_cell_index();
+        const auto        &span = space.span_of(k).span;
+        space.patch_of(k).evaluate(span[0], span[1], u, v, evaluation);
         points[q]                    = evaluation.point;
         jacobians[q]                 = evaluation.jacobian;
         const Tensor<2, 2> inverse_t = transpose(invert(evaluation.jacobian));
@@ -218,12 +220,12 @@ namespace glissade
 
 
   void
-  NurbsSpace::use_patch(const NurbsPatch &exact_patch)
+  NurbsSpace::use_patches(const NurbsMultipatch &exact_geometry)
   {
-    AssertThrow(exact_patch.xi.degree() == degree &&
-                  exact_patch.eta.degree() == degree,
-                ExcMessage("the patch is not of the space's degree"));
-    geometry  = exact_patch;
+    for (const auto &patch : exact_geometry.patches)
+      AssertThrow(patch.xi.degree() == degree && patch.eta.degree() == degree,
+                  ExcMessage("a patch is not of the space's degree"));
+    geometry  = exact_geometry;
     has_patch = true;
   }
 
@@ -232,17 +234,17 @@ namespace glissade
   void
   NurbsSpace::place_vertices(Triangulation<2> &mesh) const
   {
-    const unsigned int n_u = geometry.xi.n_spans();
-    AssertThrow(mesh.n_active_cells() == n_u * geometry.eta.n_spans(),
-                ExcMessage("the mesh's cells are not the patch's elements"));
+    AssertThrow(mesh.n_active_cells() == geometry.n_cells(),
+                ExcMessage("the mesh's cells are not the patches' elements"));
     for (const auto &cell : mesh.active_cell_iterators())
       {
-        const unsigned int k = cell->active_cell_index();
-        const auto         u = geometry.xi.span_range(k % n_u);
-        const auto         v = geometry.eta.span_range(k / n_u);
+        const auto [i, span]    = geometry.cell_span(cell->active_cell_index());
+        const NurbsPatch &patch = geometry.patches[i];
+        const auto        u     = patch.xi.span_range(span[0]);
+        const auto        v     = patch.eta.span_range(span[1]);
         for (const unsigned int vertex : cell->vertex_indices())
           cell->vertex(vertex) =
-            geometry.point(k % n_u, k / n_u, u[vertex % 2], v[vertex / 2]);
+            patch.point(span[0], span[1], u[vertex % 2], v[vertex / 2]);
       }
   }
 
@@ -253,30 +255,29 @@ namespace glissade
                     AffineConstraints<double> &element_constraints)
   {
     AssertThrow(has_patch, ExcMessage("a NURBS body needs its patch first"));
-    const auto        &mesh = dof_handler.get_triangulation();
-    const unsigned int n_u  = geometry.xi.n_spans();
-    const unsigned int n_v  = geometry.eta.n_spans();
-    AssertThrow(mesh.n_active_cells() == n_u * n_v,
-                ExcMessage("the mesh's cells are not the patch's elements"));
+    const auto &mesh = dof_handler.get_triangulation();
+    AssertThrow(mesh.n_active_cells() == geometry.n_cells(),
+                ExcMessage("the mesh's cells are not the patches' elements"));
 
-    // Cell k is span (k % n_u, k / n_u), which the mesh types that have an
-    // exact patch guarantee; checked at every corner.
+    // Cell k is the patches' element k (NurbsMultipatch::cell_span), which
+    // the mesh types that have an exact patch guarantee; checked at every
+    // corner.
     double size = 0.;
     for (const auto &v : mesh.get_vertices())
       size = std::max(size, v.norm());
     spans.resize(mesh.n_active_cells());
     for (const auto &cell : mesh.active_cell_iterators())
       {
-        const unsigned int k = cell->active_cell_index();
-        spans[k]             = {{k % n_u, k / n_u}};
-        const auto u         = geometry.xi.span_range(spans[k][0]);
-        const auto v         = geometry.eta.span_range(spans[k][1]);
+        const unsigned int k    = cell->active_cell_index();
+        spans[k]                = geometry.cell_span(k);
+        const NurbsPatch &patch = patch_of(k);
+        const auto       &span  = spans[k].span;
+        const auto        u     = patch.xi.span_range(span[0]);
+        const auto        v     = patch.eta.span_range(span[1]);
         for (const unsigned int vertex : cell->vertex_indices())
           {
-            const Point<2> X = geometry.point(spans[k][0],
-                                              spans[k][1],
-                                              u[vertex % 2],
-                                              v[vertex / 2]);
+            const Point<2> X =
+              patch.point(span[0], span[1], u[vertex % 2], v[vertex / 2]);
             AssertThrow((X - cell->vertex(vertex)).norm() <=
                           1e-9 * std::max(size, 1.),
                         ExcMessage("cell " + std::to_string(k) +
@@ -295,7 +296,7 @@ namespace glissade
           component_dofs[numbering.system_to_component_index(i).first].insert(
             local[i]);
       }
-    const unsigned int n_controls = geometry.n_unique_controls();
+    const unsigned int n_controls = geometry.n_controls();
     AssertThrow(component_dofs[0].size() >= n_controls,
                 ExcMessage("fewer numbering dofs than control points"));
     control_dofs.assign(n_controls, {{0, 0}});
@@ -310,16 +311,19 @@ namespace glissade
     element_constraints.close();
 
     // The output's nodes: FE_Q(p)'s support points mapped to each span's
-    // parameters (a node on an edge gets the same parameters from both of
-    // its cells), placed on the patch.
+    // parameters (a node on an edge gets the same point from both of its
+    // cells, checked: across a join of patches too), placed on the patch.
     const auto &unit_points = numbering.get_unit_support_points();
     support_parameters.assign(mesh.n_active_cells(), {});
     support_positions.reinit(dof_handler.n_dofs());
+    std::vector<bool> placed(dof_handler.n_dofs(), false);
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        const unsigned int k = cell->active_cell_index();
-        const auto         u = geometry.xi.span_range(spans[k][0]);
-        const auto         v = geometry.eta.span_range(spans[k][1]);
+        const unsigned int k     = cell->active_cell_index();
+        const NurbsPatch  &patch = patch_of(k);
+        const auto        &span  = spans[k].span;
+        const auto         u     = patch.xi.span_range(span[0]);
+        const auto         v     = patch.eta.span_range(span[1]);
         cell->get_dof_indices(local);
         for (unsigned int i = 0; i < unit_points.size(); ++i)
           {
@@ -327,11 +331,19 @@ namespace glissade
               {u[0] + unit_points[i][0] * (u[1] - u[0]),
                v[0] + unit_points[i][1] * (v[1] - v[0])}};
             support_parameters[k].push_back(s);
-            support_positions[local[i]] = geometry.point(
-              spans[k][0],
-              spans[k][1],
-              s[0],
-              s[1])[numbering.system_to_component_index(i).first];
+            const double x =
+              patch.point(span[0],
+                          span[1],
+                          s[0],
+                          s[1])[numbering.system_to_component_index(i).first];
+            AssertThrow(!placed[local[i]] ||
+                          std::abs(support_positions[local[i]] - x) <=
+                            1e-9 * std::max(size, 1.),
+                        ExcMessage("an output node of cell " +
+                                   std::to_string(k) +
+                                   " is not its neighbour's"));
+            support_positions[local[i]] = x;
+            placed[local[i]]            = true;
           }
       }
     output_mapping =
@@ -355,14 +367,16 @@ namespace glissade
     const DoFHandler<2>::active_cell_iterator &cell,
     std::vector<types::global_dof_index>      &indices) const
   {
-    const auto         span = spans[cell->active_cell_index()];
-    const unsigned int a0   = geometry.xi.first_function(span[0]);
-    const unsigned int b0   = geometry.eta.first_function(span[1]);
+    const unsigned int cell_index = cell->active_cell_index();
+    const auto        &span       = spans[cell_index].span;
+    const NurbsPatch  &patch      = patch_of(cell_index);
+    const unsigned int a0         = patch.xi.first_function(span[0]);
+    const unsigned int b0         = patch.eta.first_function(span[1]);
     indices.resize(2 * (degree + 1) * (degree + 1));
     for (unsigned int j = 0, k = 0; j <= degree; ++j)
       for (unsigned int i = 0; i <= degree; ++i, ++k)
         {
-          const unsigned int A = geometry.unique_control(a0 + i, b0 + j);
+          const unsigned int A = patch.unique_control(a0 + i, b0 + j);
           indices[2 * k]       = control_dofs[A][0];
           indices[2 * k + 1]   = control_dofs[A][1];
         }
@@ -389,7 +403,8 @@ namespace glissade
         if (cell->face(f)->at_boundary() &&
             cell->face(f)->boundary_id() == boundary)
           {
-            const auto span            = spans[cell->active_cell_index()];
+            const auto       &span     = spans[cell->active_cell_index()].span;
+            const NurbsPatch &patch    = patch_of(cell->active_cell_index());
             const auto [fixed, at_end] = fixed_parameter_of_face(f);
             std::vector<unsigned int> local;
             for (unsigned int j = 0; j <= degree; ++j)
@@ -399,9 +414,9 @@ namespace glissade
             std::vector<unsigned int> face_controls;
             for (const unsigned int k : local)
               {
-                const unsigned int A = geometry.unique_control(
-                  geometry.xi.first_function(span[0]) + k % (degree + 1),
-                  geometry.eta.first_function(span[1]) + k / (degree + 1));
+                const unsigned int A = patch.unique_control(
+                  patch.xi.first_function(span[0]) + k % (degree + 1),
+                  patch.eta.first_function(span[1]) + k / (degree + 1));
                 face_controls.push_back(A);
                 if (position.emplace(A, t.controls.size()).second)
                   t.controls.push_back(A);
@@ -478,7 +493,8 @@ namespace glissade
           {
             const unsigned int c = numbering.system_to_component_index(i).first;
             const auto        &s = support_parameters[k][i];
-            geometry.evaluate(spans[k][0], spans[k][1], s[0], s[1], e);
+            patch_of(k).evaluate(
+              spans[k].span[0], spans[k].span[1], s[0], s[1], e);
             double value = 0.;
             for (unsigned int m = 0; m < e.controls.size(); ++m)
               value +=
@@ -494,16 +510,10 @@ namespace glissade
   NurbsSpace::interpolation_points() const
   {
     std::vector<InterpolationPoint> points;
-    for (unsigned int b = 0; b < geometry.n_eta(); ++b)
-      for (unsigned int a = 0; a < geometry.n_xi(); ++a)
-        {
-          const unsigned int A = geometry.unique_control(a, b);
-          // (a closed patch's seam column once)
-          if (A != a + geometry.n_xi() * b)
-            continue;
-          for (unsigned int c = 0; c < 2; ++c)
-            points.push_back({control_dofs[A][c], c, geometry.points[A]});
-        }
+    const auto                      positions = geometry.control_points();
+    for (unsigned int A = 0; A < positions.size(); ++A)
+      for (unsigned int c = 0; c < 2; ++c)
+        points.push_back({control_dofs[A][c], c, positions[A]});
     return points;
   }
 
@@ -512,6 +522,6 @@ namespace glissade
   unsigned int
   NurbsSpace::n_unknowns(const DoFHandler<2> &) const
   {
-    return 2 * geometry.n_unique_controls();
+    return 2 * geometry.n_controls();
   }
 } // namespace glissade

@@ -239,7 +239,7 @@ namespace glissade
 
 
     /** create_ring's ring as a NURBS patch: xi radial, eta around. */
-    NurbsPatch
+    NurbsMultipatch
     ring_patch(const MeshDescription &description,
                const bool             closed,
                const unsigned int     degree)
@@ -247,31 +247,31 @@ namespace glissade
       const auto  &ring = std::any_cast<const RingShape &>(description.shape);
       const double theta_0 = closed ? 0. : ring.start_angle * M_PI / 180.;
       const double theta_1 = closed ? 2. * M_PI : ring.end_angle * M_PI / 180.;
-      return NurbsPatch::annulus(ring.center,
-                                 ring.inner_radius,
-                                 ring.outer_radius,
-                                 theta_0,
-                                 theta_1,
-                                 closed,
-                                 degree,
-                                 description.subdivisions[1],
-                                 description.subdivisions[0]);
+      return NurbsMultipatch(NurbsPatch::annulus(ring.center,
+                                                 ring.inner_radius,
+                                                 ring.outer_radius,
+                                                 theta_0,
+                                                 theta_1,
+                                                 closed,
+                                                 degree,
+                                                 description.subdivisions[1],
+                                                 description.subdivisions[0]));
     }
 
 
     /** The knots of a rectangle's patch: the ends of its graded cells. */
-    NurbsPatch
+    NurbsMultipatch
     rectangle_patch(const Point<2>        &corner_1,
                     const Point<2>        &corner_2,
                     const MeshDescription &d,
                     const unsigned int     degree)
     {
-      return NurbsPatch::rectangle(
+      return NurbsMultipatch(NurbsPatch::rectangle(
         corner_1,
         corner_2,
         degree,
         graded_interval_ends(d.subdivisions[0], d.grading[0]),
-        graded_interval_ends(d.subdivisions[1], d.grading[1]));
+        graded_interval_ends(d.subdivisions[1], d.grading[1])));
     }
 
     /** Mesh/Grading is for the types whose cells are a grid of intervals. */
@@ -420,10 +420,11 @@ namespace glissade
           const unsigned int     degree,
           const std::string &) { return ring_patch(d, true, degree); }},
       {"nurbs patch",
-       "the NURBS patch of the file File (doc/user_guide.md, NURBS patch "
-       "files), one cell per element, each split into Subdivisions (along "
-       "xi, eta) by knot insertion; boundaries xi0, xi1, eta0, eta1 or the "
-       "file's names",
+       "the NURBS patch of the file File, or its patches joined C0 "
+       "(doc/user_guide.md, NURBS patch files), one cell per element, each "
+       "split into Subdivisions (along xi, eta) by knot insertion; "
+       "boundaries xi0, xi1, eta0, eta1 (patch<k>.xi0, ... for several) or "
+       "the file's names",
        true,
        [](ParameterHandler &) {},
        [](const ParameterHandler &prm, const std::string &where) -> std::any {
@@ -445,18 +446,18 @@ namespace glissade
        [](const MeshDescription &d,
           const unsigned int     degree,
           const std::string     &where) {
-         const NurbsPatchFile file = patch_of_file(d, where);
-         if (file.patch.xi.degree() != degree ||
-             file.patch.eta.degree() != degree)
+         const NurbsPatchFile file  = patch_of_file(d, where);
+         const NurbsPatch    &first = file.geometry.patches.front();
+         if (first.xi.degree() != degree || first.eta.degree() != degree)
            throw InputError(where + "/Element/Degree",
                             "is " + std::to_string(degree) +
                               ", but the patch of '" + d.file +
                               "' is of degrees " +
-                              std::to_string(file.patch.xi.degree()) + ", " +
-                              std::to_string(file.patch.eta.degree()) +
+                              std::to_string(first.xi.degree()) + ", " +
+                              std::to_string(first.eta.degree()) +
                               " (a NURBS body takes its file's degree, the "
                               "same in both directions)");
-         return file.patch;
+         return file.geometry;
        }},
       {"gmsh",
        "the .msh file File, whose named physical lines become boundaries",

@@ -105,6 +105,8 @@ namespace glissade
   unsigned int
   NurbsPatch::unique_control(const unsigned int a, const unsigned int b) const
   {
+    if (!body_numbers.empty())
+      return body_numbers[a + n_xi() * b];
     return a + n_xi() * (closed_in_eta && b + 1 == n_eta() ? 0 : b);
   }
 

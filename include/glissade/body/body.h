@@ -15,7 +15,7 @@
 #include <glissade/fe/evaluator_pool.h>
 #include <glissade/material/body_materials.h>
 #include <glissade/mesh/mesh_factory.h>
-#include <glissade/mesh/nurbs_patch.h>
+#include <glissade/mesh/nurbs_multipatch.h>
 
 #include <array>
 #include <memory>
@@ -228,7 +228,7 @@ namespace glissade
   private:
     /** The exact geometry a NURBS space integrates on, from the mesh type,
      *  with the checks of what such a body does not take yet. */
-    NurbsPatch
+    NurbsMultipatch
     exact_patch(const std::string &where) const;
     /**
      * The constructor's checks of the element space against the mesh and

@@ -20,7 +20,7 @@
 
 namespace glissade
 {
-  class NurbsPatch;
+  class NurbsMultipatch;
 
   /**
    * One Dirichlet condition on one dof: u_dof + sum_k c_k u_{dof_k} = value.
@@ -73,7 +73,7 @@ namespace glissade
        *  its displacement (contact nodes, point supports and loads, the
        *  springs of a free body) may use them. */
       bool dofs_are_nodal_values = true;
-      /** It needs the exact geometry of the body (use_patch), which only
+      /** It needs the exact geometry of the body (use_patches), which only
        *  the mesh types that have one give. */
       bool needs_exact_patch = false;
     };
@@ -86,16 +86,12 @@ namespace glissade
     finite_element() const = 0;
 
     /**
-     * Called once the body's dofs are distributed, for what depends on the
-     * mesh: a geometry field, constraints among the element's own dofs
-     * (serendipity interiors). The default does nothing.
-     */
-    /**
-     * The body's exact geometry, before setup(), for a space whose
-     * capabilities say needs_exact_patch. The default refuses it.
+     * The body's exact geometry (one patch or several joined), before
+     * setup(), for a space whose capabilities say needs_exact_patch. The
+     * default refuses it.
      */
     virtual void
-    use_patch(const NurbsPatch &patch);
+    use_patches(const NurbsMultipatch &patches);
 
     /**
      * Puts the mesh's vertices where the space's geometry has them (a
@@ -105,6 +101,11 @@ namespace glissade
     virtual void
     place_vertices(dealii::Triangulation<2> &mesh) const;
 
+    /**
+     * Called once the body's dofs are distributed, for what depends on the
+     * mesh: a geometry field, constraints among the element's own dofs
+     * (serendipity interiors). The default does nothing.
+     */
     virtual void
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints);

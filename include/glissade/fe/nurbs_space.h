@@ -5,7 +5,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <glissade/fe/element_space.h>
-#include <glissade/mesh/nurbs_patch.h>
+#include <glissade/mesh/nurbs_multipatch.h>
 
 #include <map>
 #include <mutex>
@@ -64,9 +64,9 @@ namespace glissade
     }
 
     void
-    use_patch(const NurbsPatch &exact_patch) override;
+    use_patches(const NurbsMultipatch &exact_geometry) override;
 
-    /** Cell k's vertices at the corners of span (k % n_xi, k / n_xi). */
+    /** Cell k's vertices at the corners of its span (cell_span). */
     void
     place_vertices(dealii::Triangulation<2> &mesh) const override;
 
@@ -111,23 +111,37 @@ namespace glissade
     std::vector<InterpolationPoint>
     interpolation_points() const override;
 
-    /** The patch (after use_patch). */
-    const NurbsPatch &
-    patch() const
+    /** The body's patches (after use_patches). */
+    const NurbsMultipatch &
+    patches() const
     {
       return geometry;
     }
 
-    /** The span (xi, eta) of a cell, by active cell index. */
-    std::array<unsigned int, 2>
+    /** The polynomial degree, in both directions. */
+    unsigned int
+    polynomial_degree() const
+    {
+      return degree;
+    }
+
+    /** The patch and span of a cell, by active cell index. */
+    const NurbsMultipatch::CellSpan &
     span_of(const unsigned int active_cell_index) const
     {
       return spans[active_cell_index];
     }
 
+    /** The patch of a cell, by active cell index. */
+    const NurbsPatch &
+    patch_of(const unsigned int active_cell_index) const
+    {
+      return geometry.patches[spans[active_cell_index].patch];
+    }
+
     /**
      * The boundary on face `face` of cell `active_cell_index`, a side of
-     * the patch (NurbsPatch::side_span). The face's first vertex
+     * its patch (NurbsPatch::side_span). The face's first vertex
      * (GeometryInfo::face_to_cell_vertices(face, 0)) is at the span's
      * start.
      */
@@ -135,8 +149,10 @@ namespace glissade
     face_curve(const unsigned int active_cell_index,
                const unsigned int face) const
     {
-      const auto span = spans[active_cell_index];
-      return geometry.side_span(span[0], span[1], face);
+      const auto &cell = spans[active_cell_index];
+      return geometry.patches[cell.patch].side_span(cell.span[0],
+                                                    cell.span[1],
+                                                    face);
     }
 
     /** The x and y dofs of a control point (a unique_control() number). */
@@ -151,10 +167,10 @@ namespace glissade
     dealii::FESystem<2>    numbering;
     dealii::Vector<double> support_positions;
     std::unique_ptr<dealii::MappingFEField<2, 2, dealii::Vector<double>>>
-                                             output_mapping;
-    NurbsPatch                               geometry;
-    bool                                     has_patch = false;
-    std::vector<std::array<unsigned int, 2>> spans;
+                                           output_mapping;
+    NurbsMultipatch                        geometry;
+    bool                                   has_patch = false;
+    std::vector<NurbsMultipatch::CellSpan> spans;
     std::vector<std::array<dealii::types::global_dof_index, 2>> control_dofs;
     /** The parameters (u, v) of each support point of each cell: the
      *  span's parameters mapped from the unit cell's. */

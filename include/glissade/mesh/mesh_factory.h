@@ -5,7 +5,7 @@
 
 #include <glissade/description/scene_description.h>
 #include <glissade/mesh/mesh_labels.h>
-#include <glissade/mesh/nurbs_patch.h>
+#include <glissade/mesh/nurbs_multipatch.h>
 
 #include <any>
 #include <functional>
@@ -71,9 +71,9 @@ namespace glissade
        * isogeometric body, Element/Space = nurbs); empty for a type that
        * has none (a Gmsh file).
        */
-      std::function<NurbsPatch(const MeshDescription &,
-                               unsigned int       degree,
-                               const std::string &where)>
+      std::function<NurbsMultipatch(const MeshDescription &,
+                                    unsigned int       degree,
+                                    const std::string &where)>
         exact_patch;
     };
 

@@ -124,6 +124,11 @@ namespace glissade
     std::vector<dealii::Point<2>> points;
     std::vector<double>           weights;
     bool                          closed_in_eta = false;
+    /** When the patch is one of a body's several (NurbsMultipatch): each
+     *  control point's number in the body, index a + n_xi b, a point of a
+     *  joined side numbered once for both patches. Empty: the patch is
+     *  the body, and unique_control() numbers its own points. */
+    std::vector<unsigned int> body_numbers;
 
     unsigned int
     n_xi() const
@@ -138,7 +143,8 @@ namespace glissade
     /** The number of distinct control points (a closed patch's seam once). */
     unsigned int
     n_unique_controls() const;
-    /** Control (a, b) as one number, the seam of a closed patch once. */
+    /** Control (a, b) as one number, the seam of a closed patch once (its
+     *  body number, if the patch has them). */
     unsigned int
     unique_control(const unsigned int a, const unsigned int b) const;
 

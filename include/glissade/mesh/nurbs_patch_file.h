@@ -3,16 +3,17 @@
 #include <deal.II/grid/tria.h>
 
 #include <glissade/mesh/mesh_labels.h>
-#include <glissade/mesh/nurbs_patch.h>
+#include <glissade/mesh/nurbs_multipatch.h>
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace glissade
 {
   /**
-   * A NURBS patch read from a file (Mesh/Type = nurbs patch; the format is
-   * in doc/user_guide.md, "NURBS patch files"):
+   * A NURBS body read from a file (Mesh/Type = nurbs patch; the format is
+   * in doc/user_guide.md, "NURBS patch files"): one patch,
    *
    *   # a comment
    *   degrees 2 2
@@ -23,36 +24,45 @@ namespace glissade
    *   ...
    *   boundary inner xi0     (a name for a side: xi0, xi1, eta0, eta1)
    *
+   * or several, each begun by a line `patch`, joined C0 along whole sides
+   * (`join 1 xi1 2 xi0`: patch 1's side xi1 is patch 2's side xi0), their
+   * boundaries named by patch and side (`boundary outer 1 eta1 2 eta1`).
+   *
    * Every mistake (a knot vector that decreases or is not open, a weight
    * that is not positive, too few control points for the degree, a patch
    * whose Jacobian is not positive at a Gauss point of an element: inverted
-   * or folded) stops with a message naming `entry`, the file, its line or
-   * the element.
+   * or folded; joined sides that are not the same curve with the same
+   * knots, patches that touch where no join says so) stops with a message
+   * naming `entry`, the file, its line, the patch or the element.
    */
   struct NurbsPatchFile
   {
-    NurbsPatch patch;
-    /** The sides' names: xi0, xi1, eta0, eta1 unless the file renames
-     *  them. */
-    std::array<std::string, 4> side_names = {{"xi0", "xi1", "eta0", "eta1"}};
+    NurbsMultipatch geometry;
+    /** Each patch's sides' names (empty: joined). One patch: xi0, xi1,
+     *  eta0, eta1 unless the file renames them; several: patch<k>.xi0 and
+     *  so on (k from 1) unless the file names them. */
+    std::vector<std::array<std::string, 4>> side_names;
+    /** The file and entry, for the messages of refine() and create_mesh(). */
+    std::string where;
 
     static NurbsPatchFile
     read(const std::string &file, const std::string &entry);
 
     /**
-     * Splits every element into `subdivisions` parts in each parameter by
-     * knot insertion (the patch unchanged), their parametric lengths in
-     * geometric progression, the last `grading` times the first (1: equal
-     * parts).
+     * Splits every element of every patch into `subdivisions` parts in each
+     * parameter by knot insertion (the shape unchanged), their parametric
+     * lengths in geometric progression, the last `grading` times the first
+     * (1: equal parts); the joins checked again and the control points
+     * numbered for the body.
      */
     void
     refine(const std::array<unsigned int, 2> &subdivisions,
            const std::array<double, 2>       &grading = {{1., 1.}});
 
     /**
-     * The mesh of the patch's elements: cell k is span (k % n_xi,
-     * k / n_xi), its vertices the patch's points at the knots; the sides
-     * get boundary ids 0 (xi0) to 3 (eta1) and their names.
+     * The mesh of the patches' elements (NurbsMultipatch::cell_span), its
+     * vertices the patches' points at the knots, a joined side's once; the
+     * sides' faces get a boundary id per name.
      */
     BoundaryNames
     create_mesh(dealii::Triangulation<2> &mesh) const;

@@ -895,12 +895,12 @@ namespace glissade
     const auto &space = dynamic_cast<const NurbsSpace &>(context.slave.space());
     // The slave span's p + 1 control points and the master segment's two
     // nodes take the first twelve dual variables (mortar_variables.h).
-    if (space.patch().xi.degree() > 3)
+    if (space.polynomial_degree() > 3)
       throw InputError(entry + "/Discretisation",
                        "mortar contact with a NURBS slave is built for "
                        "degrees 2 and 3; body '" +
                          context.slave.name() + "' has Element/Degree = " +
-                         std::to_string(space.patch().xi.degree()) +
+                         std::to_string(space.polynomial_degree()) +
                          ": use node-to-segment");
     return std::make_unique<NurbsSlaveMortar>(context);
   }

@@ -49,7 +49,7 @@ namespace glissade
           chain.vertices[i];
         segments.push_back(std::move(segment));
       }
-    boundary.curve = std::make_unique<NurbsCurve>(space.patch().xi.degree(),
+    boundary.curve = std::make_unique<NurbsCurve>(space.polynomial_degree(),
                                                   chain.closed,
                                                   std::move(segments));
     std::vector<MasterCurve::Point> reference;
