@@ -331,12 +331,6 @@ namespace glissade
           " needs a mesh type with an exact geometry "
           "(rectangle, square, half ring, ring or nurbs patch); a " +
           description.mesh.type + " mesh has none");
-    if (processes::shared_out())
-      throw InputError(where + "/Element/Space",
-                       space +
-                         " runs on one process for now (its functions "
-                         "reach beyond their cell, which a mesh shared out "
-                         "over the processes does not hold)");
     if (description.turning_frame.active())
       throw InputError(where + "/Turning frame",
                        "is not built for " + space +

@@ -390,10 +390,11 @@ namespace glissade
           without_mass[i] = true;
         }
     // (the numbering's spare dofs of a space that is not nodal: no cell
-    // has them, so their constrained rows are empty)
+    // has them, so their constrained rows are empty; the 1 put once)
     if (!body.space().capabilities().dofs_are_nodal_values)
       for (types::global_dof_index i = 0; i < body.n_dofs(); ++i)
-        if (mass_constraints.is_constrained(i) && diagonal[i] == 0.)
+        if (mass_constraints.is_constrained(i) && diagonal[i] == 0. &&
+            (!shared_out || owned.is_element(i)))
           M.set(i, i, 1.);
 
     // A scheme whose predictor takes the acceleration (Newmark's family),

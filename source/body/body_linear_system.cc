@@ -32,7 +32,7 @@ namespace glissade
     // makes them for all.
     DynamicSparsityPattern               dsp(dofs.n_dofs());
     std::vector<types::global_dof_index> local_dofs;
-    std::vector<bool>                    touched(dofs.n_dofs(), false);
+    std::vector<double>                  touched(dofs.n_dofs(), 0.);
     for (const auto &cell : cells_here)
       {
         space.cell_dof_indices(cell, local_dofs);
@@ -40,19 +40,25 @@ namespace glissade
                                                           dsp,
                                                           false);
         for (const auto dof : local_dofs)
-          touched[dof] = true;
+          touched[dof] = 1.;
       }
     // A space that numbers its unknowns into a finite element's dofs
     // (NURBS) leaves dofs that no cell has, constrained to zero: a 1 on
-    // their diagonal keeps the tangent regular. (one process only: on
-    // several, a dof may be another process's cells')
+    // their diagonal keeps the tangent regular. (No cell of any process:
+    // on several, a dof that this process's cells leave may be another's,
+    // and the 1 would be added to its stiffness. Process 0 puts the 1,
+    // which the factorisation sums once.)
     if (!space.capabilities().dofs_are_nodal_values)
-      for (types::global_dof_index i = 0; i < touched.size(); ++i)
-        if (!touched[i])
-          {
-            dsp.add(i, i);
-            numbering_only_dofs.push_back(i);
-          }
+      {
+        processes::sum(touched);
+        if (processes::rank() == 0)
+          for (types::global_dof_index i = 0; i < touched.size(); ++i)
+            if (touched[i] == 0.)
+              {
+                dsp.add(i, i);
+                numbering_only_dofs.push_back(i);
+              }
+      }
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     // (a body in contact sets its contact dofs to eliminate last later,

@@ -5,6 +5,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/fe/nurbs_space.h>
+#include <glissade/mesh/process_mesh.h>
 
 #include <cmath>
 #include <set>
@@ -255,38 +256,13 @@ namespace glissade
                     AffineConstraints<double> &element_constraints)
   {
     AssertThrow(has_patch, ExcMessage("a NURBS body needs its patch first"));
-    const auto &mesh = dof_handler.get_triangulation();
-    AssertThrow(mesh.n_active_cells() == geometry.n_cells(),
+    AssertThrow(dof_handler.get_triangulation().n_active_cells() ==
+                  geometry.n_cells(),
                 ExcMessage("the mesh's cells are not the patches' elements"));
 
-    // Cell k is the patches' element k (NurbsMultipatch::cell_span), which
-    // the mesh types that have an exact patch guarantee; checked at every
-    // corner.
-    double size = 0.;
-    for (const auto &v : mesh.get_vertices())
-      size = std::max(size, v.norm());
-    spans.resize(mesh.n_active_cells());
-    for (const auto &cell : mesh.active_cell_iterators())
-      {
-        const unsigned int k    = cell->active_cell_index();
-        spans[k]                = geometry.cell_span(k);
-        const NurbsPatch &patch = patch_of(k);
-        const auto       &span  = spans[k].span;
-        const auto        u     = patch.xi.span_range(span[0]);
-        const auto        v     = patch.eta.span_range(span[1]);
-        for (const unsigned int vertex : cell->vertex_indices())
-          {
-            const Point<2> X =
-              patch.point(span[0], span[1], u[vertex % 2], v[vertex / 2]);
-            AssertThrow((X - cell->vertex(vertex)).norm() <=
-                          1e-9 * std::max(size, 1.),
-                        ExcMessage("cell " + std::to_string(k) +
-                                   " is not the patch's element there"));
-          }
-      }
-
     // The control points numbered into the dofs of each component, in
-    // order; the dofs left over are constrained to zero.
+    // order; the dofs left over are constrained to zero. (On the whole
+    // mesh: a share of it, attach(), numbers its dofs alike.)
     std::array<std::set<types::global_dof_index>, 2> component_dofs;
     std::vector<types::global_dof_index> local(numbering.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -309,11 +285,56 @@ namespace glissade
           element_constraints.add_line(*dof);
       }
     element_constraints.close();
+    place_cells(dof_handler);
+  }
+
+
+
+  void
+  NurbsSpace::attach(const DoFHandler<2> &distributed)
+  {
+    place_cells(distributed);
+    std::lock_guard<std::mutex> lock(trace_mutex);
+    traces.clear();
+  }
+
+
+
+  void
+  NurbsSpace::place_cells(const DoFHandler<2> &dof_handler)
+  {
+    // A cell is the patches' element of its number in the whole mesh
+    // (NurbsMultipatch::cell_span), which the mesh types that have an
+    // exact patch guarantee; checked at every corner.
+    const auto &mesh = dof_handler.get_triangulation();
+    double      size = 0.;
+    for (const auto &v : mesh.get_vertices())
+      size = std::max(size, v.norm());
+    spans.resize(mesh.n_active_cells());
+    for (const auto &cell : mesh.active_cell_iterators())
+      {
+        const unsigned int k    = cell->active_cell_index();
+        spans[k]                = geometry.cell_span(serial_cell_index(cell));
+        const NurbsPatch &patch = patch_of(k);
+        const auto       &span  = spans[k].span;
+        const auto        u     = patch.xi.span_range(span[0]);
+        const auto        v     = patch.eta.span_range(span[1]);
+        for (const unsigned int vertex : cell->vertex_indices())
+          {
+            const Point<2> X =
+              patch.point(span[0], span[1], u[vertex % 2], v[vertex / 2]);
+            AssertThrow((X - cell->vertex(vertex)).norm() <=
+                          1e-9 * std::max(size, 1.),
+                        ExcMessage("cell " + std::to_string(k) +
+                                   " is not the patch's element there"));
+          }
+      }
 
     // The output's nodes: FE_Q(p)'s support points mapped to each span's
     // parameters (a node on an edge gets the same point from both of its
     // cells, checked: across a join of patches too), placed on the patch.
     const auto &unit_points = numbering.get_unit_support_points();
+    std::vector<types::global_dof_index> local(numbering.n_dofs_per_cell());
     support_parameters.assign(mesh.n_active_cells(), {});
     support_positions.reinit(dof_handler.n_dofs());
     std::vector<bool> placed(dof_handler.n_dofs(), false);

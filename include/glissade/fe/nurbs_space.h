@@ -74,6 +74,12 @@ namespace glissade
     setup(const dealii::DoFHandler<2>       &dof_handler,
           dealii::AffineConstraints<double> &element_constraints) override;
 
+    /** The cells a share of the mesh holds placed on their elements, by
+     *  their numbers in the whole mesh; the control points' dofs are the
+     *  whole mesh's (setup). */
+    void
+    attach(const dealii::DoFHandler<2> &distributed) override;
+
     /** The patch's geometry at FE_Q(p)'s support points (a degree-p
      *  Lagrange field through points of the exact geometry): for output. */
     const dealii::Mapping<2> &
@@ -192,6 +198,11 @@ namespace glissade
       };
       std::vector<Point> points;
     };
+    /** The patch and span of each cell of `dof_handler`'s mesh, and the
+     *  output's nodes on them. */
+    void
+    place_cells(const dealii::DoFHandler<2> &dof_handler);
+
     const Trace &
     trace(const dealii::DoFHandler<2>     &dof_handler,
           const dealii::types::boundary_id boundary) const;
