@@ -85,13 +85,22 @@ namespace
                                unprefixed;
     if (on_obstacle_mortar)
       contact += " set Discretisation = mortar\n";
-    if (kind == "line" || kind == "disk" || kind == "hole" || kind == "casing")
+    if (kind == "line" || kind == "disk" || kind == "hole" ||
+        kind == "casing" || kind == "nurbs_curve")
       {
         text += "subsection Scene\n set Bodies = upper\n"
                 " set Contact pairs = interface\nend\n";
-        contact += " subsection Obstacle\n  set Type = " + kind +
+        contact += " subsection Obstacle\n  set Type = " +
+                   (kind == "nurbs_curve" ? std::string("nurbs curve") : kind) +
                    "\n  set Motion = 0.013*t, -0.004*t\n";
-        if (kind == "line")
+        if (kind == "nurbs_curve")
+          // A wavy rational cubic under the block, turning about a point
+          // below it: its curvature changes along the block.
+          contact +=
+            "  set Curve file = " + source_path("prm/meshes/wavy_floor.nurbs") +
+            "\n  set Point = 0.5, 0.3\n"
+            "  set Rotation = 0.004 + 0.004*t\n";
+        else if (kind == "line")
           contact += "  set Point = 0, 0.49\n  set Normal = 0.1, 1\n";
         else if (kind == "disk")
           contact += "  set Point = 0.5, -1.51\n  set Radius = 2\n";
@@ -421,6 +430,11 @@ CONTACT_TANGENT_TEST(disk, slip)
 CONTACT_TANGENT_TEST(hole, frictionless)
 CONTACT_TANGENT_TEST(hole, stick)
 CONTACT_TANGENT_TEST(hole, slip)
+CONTACT_TANGENT_TEST(nurbs_curve, frictionless)
+CONTACT_TANGENT_TEST(nurbs_curve, stick)
+CONTACT_TANGENT_TEST(nurbs_curve, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_curve, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_nurbs_curve, slip)
 CONTACT_TANGENT_TEST(casing, frictionless)
 CONTACT_TANGENT_TEST(casing, stick)
 CONTACT_TANGENT_TEST(casing, slip)

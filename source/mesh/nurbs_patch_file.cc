@@ -39,59 +39,61 @@ namespace glissade
       return lines;
     }
 
-    /** A knot vector's checks: non-decreasing, open, long enough. */
-    void
-    check_knots(const std::vector<double> &knots,
-                const unsigned int         degree,
-                const std::string         &direction,
-                const std::string         &where)
-    {
-      const std::string what = "knots " + direction + ": ";
-      if (knots.size() < 2 * degree + 2)
+  } // namespace
+
+
+
+  void
+  check_knot_vector(const std::vector<double> &knots,
+                    const unsigned int         degree,
+                    const std::string         &label,
+                    const std::string         &where)
+  {
+    const std::string what = label + ": ";
+    if (knots.size() < 2 * degree + 2)
+      throw InputError(where,
+                       what + std::to_string(knots.size()) + " knots; degree " +
+                         std::to_string(degree) + " needs at least " +
+                         std::to_string(2 * degree + 2));
+    for (unsigned int k = 1; k < knots.size(); ++k)
+      if (!(knots[k] >= knots[k - 1]))
         throw InputError(where,
-                         what + std::to_string(knots.size()) +
-                           " knots; degree " + std::to_string(degree) +
-                           " needs at least " + std::to_string(2 * degree + 2));
-      for (unsigned int k = 1; k < knots.size(); ++k)
-        if (!(knots[k] >= knots[k - 1]))
-          throw InputError(where,
-                           what + "knot " + std::to_string(k + 1) +
-                             " is below the one before it (knots must not "
-                             "decrease)");
-      for (unsigned int k = 1; k <= degree; ++k)
-        if (knots[k] != knots[0] || knots[knots.size() - 1 - k] != knots.back())
+                         what + "knot " + std::to_string(k + 1) +
+                           " is below the one before it (knots must not "
+                           "decrease)");
+    for (unsigned int k = 1; k <= degree; ++k)
+      if (knots[k] != knots[0] || knots[knots.size() - 1 - k] != knots.back())
+        throw InputError(where,
+                         what +
+                           "the first and last knots must each be "
+                           "repeated degree + 1 = " +
+                           std::to_string(degree + 1) +
+                           " times (an open knot vector)");
+    if (!(knots.back() > knots.front()))
+      throw InputError(where, what + "the knots span no parameter range");
+    // (a knot repeated more than p times inside would cut the patch in
+    // two: its functions would not be continuous)
+    for (unsigned int k = degree + 1, run = 1; k + degree + 1 < knots.size();
+         ++k)
+      {
+        if (knots[k] == knots.front() || knots[k] == knots.back())
           throw InputError(where,
                            what +
-                             "the first and last knots must each be "
-                             "repeated degree + 1 = " +
-                             std::to_string(degree + 1) +
-                             " times (an open knot vector)");
-      if (!(knots.back() > knots.front()))
-        throw InputError(where, what + "the knots span no parameter range");
-      // (a knot repeated more than p times inside would cut the patch in
-      // two: its functions would not be continuous)
-      for (unsigned int k = degree + 1, run = 1; k + degree + 1 < knots.size();
-           ++k)
-        {
-          if (knots[k] == knots.front() || knots[k] == knots.back())
-            throw InputError(where,
-                             what +
-                               "an end knot is repeated more than "
-                               "degree + 1 = " +
-                               std::to_string(degree + 1) + " times");
-          run = knots[k] == knots[k - 1] ? run + 1 : 1;
-          if (run > degree)
-            {
-              std::ostringstream message;
-              message << what << "the inner knot " << knots[k]
-                      << " is repeated " << run
-                      << " times, more than the degree: the patch would not "
-                         "be continuous there";
-              throw InputError(where, message.str());
-            }
-        }
-    }
-  } // namespace
+                             "an end knot is repeated more than "
+                             "degree + 1 = " +
+                             std::to_string(degree + 1) + " times");
+        run = knots[k] == knots[k - 1] ? run + 1 : 1;
+        if (run > degree)
+          {
+            std::ostringstream message;
+            message << what << "the inner knot " << knots[k] << " is repeated "
+                    << run
+                    << " times, more than the degree: the patch would not "
+                       "be continuous there";
+            throw InputError(where, message.str());
+          }
+      }
+  }
 
 
 
@@ -154,7 +156,7 @@ namespace glissade
       for (unsigned int d = 0; d < 2; ++d)
         {
           const std::string direction = d == 0 ? "xi" : "eta";
-          check_knots(knots[d], degrees[d], direction, where);
+          check_knot_vector(knots[d], degrees[d], "knots " + direction, where);
           const unsigned int needed = knots[d].size() - degrees[d] - 1;
           if (counts[d] != needed)
             throw InputError(where,

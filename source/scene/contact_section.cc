@@ -311,7 +311,8 @@ namespace glissade
         SurfaceRegistry::parse_parameters(prm.handler(),
                                           SurfaceRegistry::Kind::rigid,
                                           obstacle,
-                                          entry + "/Obstacle");
+                                          entry + "/Obstacle",
+                                          prm.file());
     prm.leave_subsection();
     check_sides(body_names);
     if (obstacle_motion.size() != 2)
@@ -334,8 +335,12 @@ namespace glissade
                            MortarMultipliers::standard :
                            MortarMultipliers::dual;
     if (master == MasterKind::body)
-      surface_settings = SurfaceRegistry::parse_parameters(
-        prm.handler(), SurfaceRegistry::Kind::deformable, surface, entry);
+      surface_settings =
+        SurfaceRegistry::parse_parameters(prm.handler(),
+                                          SurfaceRegistry::Kind::deformable,
+                                          surface,
+                                          entry,
+                                          prm.file());
     force_transfer = prm.get("Force transfer") == "spline" ?
                        ContactDescription::ForceTransfer::spline :
                        ContactDescription::ForceTransfer::segment;

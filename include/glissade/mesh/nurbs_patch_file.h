@@ -12,6 +12,19 @@
 namespace glissade
 {
   /**
+   * The checks of a knot vector of degree `degree` read from a file:
+   * non-decreasing, open (its ends repeated degree + 1 times), long enough,
+   * no inner knot repeated more than degree times (the functions would not
+   * be continuous). A mistake throws an InputError at `where` that starts
+   * with `label` ("knots xi").
+   */
+  void
+  check_knot_vector(const std::vector<double> &knots,
+                    unsigned int               degree,
+                    const std::string         &label,
+                    const std::string         &where);
+
+  /**
    * A NURBS body read from a file (Mesh/Type = nurbs patch; the format is
    * in doc/user_guide.md, "NURBS patch files"): one patch,
    *

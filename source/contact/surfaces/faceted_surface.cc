@@ -210,7 +210,9 @@ namespace glissade
 
 
   std::any
-  parse_faceted_parameters(const ParameterHandler &prm, const std::string &)
+  parse_faceted_parameters(const ParameterHandler &prm,
+                           const std::string &,
+                           const std::string &)
   {
     const std::string rule = prm.get("Faceted vertex rule");
     return rule == "closest point" ? VertexRule::closest_point :

@@ -13,7 +13,9 @@ namespace glissade
   void
   declare_faceted_parameters(ParameterHandler &);
   std::any
-  parse_faceted_parameters(const ParameterHandler &, const std::string &);
+  parse_faceted_parameters(const ParameterHandler &,
+                           const std::string &,
+                           const std::string &);
   std::unique_ptr<MasterSurface>
   make_bspline_surface(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
@@ -25,7 +27,9 @@ namespace glissade
   void
   declare_line_parameters(ParameterHandler &);
   std::any
-  parse_line_parameters(const ParameterHandler &, const std::string &);
+  parse_line_parameters(const ParameterHandler &,
+                        const std::string &,
+                        const std::string &);
   std::unique_ptr<MasterSurface>
   make_disk_obstacle(const SurfaceContext &);
   std::unique_ptr<MasterSurface>
@@ -33,15 +37,29 @@ namespace glissade
   void
   declare_circle_parameters(ParameterHandler &);
   std::any
-  parse_disk_parameters(const ParameterHandler &, const std::string &);
+  parse_disk_parameters(const ParameterHandler &,
+                        const std::string &,
+                        const std::string &);
   std::any
-  parse_hole_parameters(const ParameterHandler &, const std::string &);
+  parse_hole_parameters(const ParameterHandler &,
+                        const std::string &,
+                        const std::string &);
   std::unique_ptr<MasterSurface>
   make_casing_obstacle(const SurfaceContext &);
   void
   declare_casing_parameters(ParameterHandler &);
   std::any
-  parse_casing_parameters(const ParameterHandler &, const std::string &);
+  parse_casing_parameters(const ParameterHandler &,
+                          const std::string &,
+                          const std::string &);
+  std::unique_ptr<MasterSurface>
+  make_nurbs_curve_obstacle(const SurfaceContext &);
+  void
+  declare_nurbs_curve_parameters(ParameterHandler &);
+  std::any
+  parse_nurbs_curve_parameters(const ParameterHandler &,
+                               const std::string &,
+                               const std::string &);
 
 
 
@@ -95,6 +113,15 @@ namespace glissade
        make_casing_obstacle,
        declare_casing_parameters,
        parse_casing_parameters},
+      {"nurbs curve",
+       Kind::rigid,
+       "a rigid body bounded by the NURBS curve of Curve file (exact: a "
+       "circle, an ellipse, a die's rounded profile), moved by Motion and "
+       "Rotation about Point; walking along the curve, the obstacle is on "
+       "the right",
+       make_nurbs_curve_obstacle,
+       declare_nurbs_curve_parameters,
+       parse_nurbs_curve_parameters},
     };
     return list;
   }
@@ -159,11 +186,12 @@ namespace glissade
   SurfaceRegistry::parse_parameters(const ParameterHandler &prm,
                                     const Kind              kind,
                                     const std::string      &name,
-                                    const std::string      &where)
+                                    const std::string      &where,
+                                    const std::string      &prm_file)
   {
     for (const auto &entry : entries())
       if (entry.kind == kind && entry.name == name && entry.parse_parameters)
-        return entry.parse_parameters(prm, where);
+        return entry.parse_parameters(prm, where, prm_file);
     return {};
   }
 

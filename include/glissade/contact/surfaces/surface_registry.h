@@ -61,10 +61,13 @@ namespace glissade
       /**
        * Reads them for a pair that chose the surface (in the subsection
        * they were declared in); `where` names the subsection for messages
-       * ("file.prm: Contact <pair>"). Returns the surface's settings.
+       * ("file.prm: Contact <pair>"), `prm_file` is the .prm file they are
+       * read from (a file an entry names is beside it). Returns the
+       * surface's settings.
        */
       std::function<std::any(const dealii::ParameterHandler &,
-                             const std::string &where)>
+                             const std::string &where,
+                             const std::string &prm_file)>
         parse_parameters = {};
     };
 
@@ -85,7 +88,8 @@ namespace glissade
     parse_parameters(const dealii::ParameterHandler &prm,
                      Kind                            kind,
                      const std::string              &name,
-                     const std::string              &where);
+                     const std::string              &where,
+                     const std::string              &prm_file);
 
     /** "faceted|bspline|..." for Patterns::Selection. */
     static std::string

@@ -1,0 +1,282 @@
+// Rigid obstacles bounded by NURBS curves (Obstacle/Type = nurbs curve,
+// issue 52): a circle written as a NURBS curve is exactly the analytic
+// hole and disk (the same answers to round-off, knot-to-segment and
+// mortar, a moving and turning disk with friction), and a curve file that
+// is wrong is refused with the file and what is wrong. The tangents on a
+// wavy NURBS floor are in contact_tangent_test.cc.
+
+#include <glissade/body/body_measures.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "nurbs_scene.h"
+#include "test_tools.h"
+
+using namespace glissade;
+using namespace dealii;
+using namespace glissade_tests;
+
+namespace
+{
+  /**
+   * The circle of radius r about c as a NURBS curve file (four rational
+   * quadratic quarters, weights 1 and cos 45 degrees), counterclockwise
+   * (a hole: the obstacle outside, on the curve's right) or clockwise (a
+   * disk); its path.
+   */
+  std::string
+  circle_file(const Point<2> &c, const double r, const bool clockwise)
+  {
+    const double       h = std::sqrt(0.5);
+    std::ostringstream text;
+    text.precision(17);
+    text << "degree 2\nknots 0 0 0 1 1 2 2 3 3 4 4 4\ncontrol points 9\n";
+    for (unsigned int k = 0; k <= 8; ++k)
+      {
+        const double angle = (clockwise ? -1. : 1.) * k * M_PI / 4.;
+        const double reach = k % 2 == 0 ? r : r / h;
+        text << c[0] + reach * std::cos(angle) << " "
+             << c[1] + reach * std::sin(angle) << " " << (k % 2 == 0 ? 1. : h)
+             << "\n";
+      }
+    std::filesystem::create_directories("output/nurbs_obstacle");
+    const std::string path = "output/nurbs_obstacle/circle_" +
+                             std::string(clockwise ? "cw" : "ccw") + ".nurbs";
+    std::ofstream(path) << text.str();
+    return std::filesystem::absolute(path).string();
+  }
+
+  /** The obstacle's entries: the analytic circle or its NURBS curve. */
+  std::string
+  obstacle(const std::string &kind,
+           const Point<2>    &c,
+           const double       r,
+           const std::string &motion)
+  {
+    std::ostringstream text;
+    text.precision(17);
+    text << " subsection Obstacle\n  set Point = " << c[0] << ", " << c[1]
+         << "\n"
+         << motion;
+    if (kind == "nurbs curve")
+      text << "  set Type = nurbs curve\n  set Curve file = "
+           << circle_file(c, r, false) << "\n";
+    else if (kind == "nurbs curve disk")
+      text << "  set Type = nurbs curve\n  set Curve file = "
+           << circle_file(c, r, true) << "\n";
+    else
+      text << "  set Type = " << kind << "\n  set Radius = " << r << "\n";
+    text << " end\n";
+    return text.str();
+  }
+
+  std::string
+  common_settings(const std::string &directory)
+  {
+    return "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
+           "subsection Output\n set Progress = false\n set Plots = false\n"
+           " set VTU interval = 0\n set Directory = output/" +
+           directory +
+           "\nend\n"
+           "subsection Newton\n set Residual tolerance = 1e-11\n"
+           " set Displacement tolerance = 1e-11\nend\n";
+  }
+
+  /** The largest relative difference of two lists of figures. */
+  double
+  largest_difference(const std::vector<double> &a, const std::vector<double> &b)
+  {
+    double scale = 0., worst = 0.;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        scale = std::max(scale, std::abs(a[i]));
+        worst = std::max(worst, std::abs(a[i] - b[i]));
+      }
+    return worst / scale;
+  }
+
+  /** The pair's contact force on the slave, summed over its points. */
+  Tensor<1, 2>
+  contact_force(Simulation &simulation)
+  {
+    Tensor<1, 2> force;
+    for (const auto &node : simulation.contact().contact_pairs()[0]->nodes())
+      if (node.active)
+        force += node.force();
+    return force;
+  }
+} // namespace
+
+
+
+// A quarter ring 1 < r < 1.5 pressed into a rigid hole of radius 1.499
+// (Lame's problem with u_r(1.5) = -1e-3): the hole as the analytic circle
+// and as the NURBS curve of the same circle give the same displacement and
+// contact force to round-off, for a Q1 ring (node-to-segment) and a NURBS
+// ring (knot-to-segment and mortar); and a block pressed on a disk that
+// moves and turns, with friction 0.3, the same forces and displacements.
+GLISSADE_TEST(nurbs_curve_obstacle_is_the_circle)
+{
+  const Point<2> centre(0., 0.);
+  for (const auto &[space, discretisation] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"q1", "node-to-segment"},
+         {"nurbs", "node-to-segment"},
+         {"nurbs", "mortar"}})
+    {
+      std::vector<double> analytic;
+      for (const std::string kind : {"hole", "nurbs curve"})
+        {
+          const std::string scene =
+            "subsection Scene\n set Bodies = ring\n"
+            " set Contact pairs = fit\nend\n"
+            "subsection Body ring\n subsection Mesh\n"
+            "  set Type = half ring\n  set Inner radius = 1\n"
+            "  set Outer radius = 1.5\n  set Start angle = 0\n"
+            "  set End angle = 90\n  set Subdivisions = 12, 4\n end\n"
+            " subsection Element\n  set Space = " +
+            space +
+            "\n end\n subsection Material\n  set Young modulus = 1000\n"
+            "  set Poisson ratio = 0.3\n  set Kinematics = small strain\n"
+            " end\n subsection Boundary conditions\n"
+            "  set Fixed = start: y; end: x\n end\nend\n"
+            "subsection Contact fit\n set Slave body = ring\n"
+            " set Slave boundary = outer\n set Discretisation = " +
+            discretisation + "\n set Alert distance = 0.05\n" +
+            obstacle(kind, centre, 1.499, "") + "end\n" +
+            common_settings("nurbs_obstacle_hole");
+          Simulation simulation(SceneReader::read_string(scene, "hole"));
+          simulation.run();
+          const Tensor<1, 2> force = contact_force(simulation);
+          const double       u =
+            vertex_displacement(simulation.body("ring"), Point<2>(1., 0.))[0];
+          const std::vector<double> figures = {u, force[0], force[1]};
+          std::cout << "  " << space << ", " << discretisation << ", " << kind
+                    << ": u_r(1) " << u << ", contact force (" << force[0]
+                    << ", " << force[1] << ")";
+          if (analytic.empty())
+            analytic = figures;
+          else
+            {
+              const double difference = largest_difference(figures, analytic);
+              std::cout << "; off the analytic hole's by " << difference;
+              check(difference < 1e-10,
+                    space + ", " + discretisation +
+                      ": the NURBS circle is the hole");
+            }
+          std::cout << std::endl;
+          check(u < -1e-4, "the ring is pressed in");
+        }
+    }
+
+  // A Q1 block pressed on a disk that slides and turns under it.
+  std::vector<double> analytic;
+  for (const std::string kind : {"disk", "nurbs curve disk"})
+    {
+      const std::string scene =
+        "subsection Scene\n set Bodies = block\n"
+        " set Contact pairs = floor\nend\n"
+        "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
+        "  set Corner 1 = 0, 0.5\n  set Corner 2 = 1, 1\n"
+        "  set Subdivisions = 8, 4\n end\n subsection Material\n"
+        "  set Young modulus = 1000\n end\n"
+        " subsection Boundary conditions\n"
+        "  set Prescribed displacement = top: xy: 0, -0.02*t\n end\nend\n"
+        "subsection Contact floor\n set Slave body = block\n"
+        " set Slave boundary = bottom\n set Friction coefficient = 0.3\n"
+        " set Alert distance = 0.1\n" +
+        obstacle(kind,
+                 Point<2>(0.5, -1.5),
+                 2.,
+                 "  set Motion = 0.01*t, 0\n  set Rotation = 0.02*t\n") +
+        "end\nsubsection Load program\n set Stage increments = 4\nend\n" +
+        common_settings("nurbs_obstacle_disk");
+      Simulation simulation(SceneReader::read_string(scene, "disk"));
+      simulation.run();
+      const Tensor<1, 2> force = contact_force(simulation);
+      const Tensor<1, 2> u =
+        vertex_displacement(simulation.body("block"), Point<2>(0., 0.5));
+      const std::vector<double> figures = {force[0], force[1], u[0], u[1]};
+      std::cout << "  block on a " << kind << ": contact force (" << force[0]
+                << ", " << force[1] << "), corner displacement (" << u[0]
+                << ", " << u[1] << ")";
+      if (analytic.empty())
+        analytic = figures;
+      else
+        {
+          const double difference = largest_difference(figures, analytic);
+          std::cout << "; off the analytic disk's by " << difference;
+          check(difference < 1e-10, "the clockwise NURBS circle is the disk");
+        }
+      std::cout << std::endl;
+      check(force[1] > 1. && std::abs(force[0]) > 0.01 * force[1],
+            "the block presses on the disk and rubs it");
+    }
+}
+
+
+
+// A curve file that is wrong stops with its file and what is wrong.
+GLISSADE_TEST(nurbs_curve_obstacle_input_errors)
+{
+  std::filesystem::create_directories("output/nurbs_obstacle_bad");
+  const auto file = [](const std::string &text) {
+    const std::string path = "output/nurbs_obstacle_bad/" +
+                             std::to_string(std::hash<std::string>()(text)) +
+                             ".nurbs";
+    std::ofstream(path) << text;
+    return path;
+  };
+  const auto scene = [](const std::string &curve_entry) {
+    return "subsection Scene\n set Bodies = block\n"
+           " set Contact pairs = floor\nend\n"
+           "subsection Body block\n subsection Mesh\n"
+           "  set Type = rectangle\n end\n subsection Boundary conditions\n"
+           "  set Fixed = top: xy\n end\nend\n"
+           "subsection Contact floor\n set Slave body = block\n"
+           " set Slave boundary = bottom\n subsection Obstacle\n"
+           "  set Type = nurbs curve\n" +
+           curve_entry + " end\nend\n";
+  };
+  const std::string points = "control points 3\n0 0 1\n1 0 1\n2 0 1\n";
+  for (const auto &[curve_entry, expected] :
+       std::vector<std::pair<std::string, std::string>>{
+         {"", "a 'nurbs curve' obstacle needs its curve file"},
+         {"  set Curve file = /nonexistent/floor.nurbs\n",
+          "cannot open the NURBS curve file"},
+         {"  set Curve file = " +
+            file("degree 2\nknots 0 0 1 1 1 1\n" + points) + "\n",
+          "knots: the first and last knots must each be repeated degree + "
+          "1 = 3 times"},
+         {"  set Curve file = " +
+            file("degree 2\nknots 0 0 0 1 1 1\ncontrol points 3\n0 0 1\n"
+                 "1 0 0\n2 0 1\n") +
+            "\n",
+          "control point 2: the weight must be positive"},
+         {"  set Curve file = " +
+            file("degree 2\nknots 0 0 0 0.5 1 1 1\n" + points) + "\n",
+          "control points: 3, where its 7 knots and degree 2 make 4"},
+         {"  set Curve file = " +
+            file("degree 2\nknots 0 0 0 1 1 2 2 2\ncontrol points 5\n"
+                 "0 0 1\n1 0 1\n2 0 1\n2 1 1\n2 2 1\n") +
+            "\n",
+          "the curve has a corner at u = 1: its tangent turns by 90 degrees"},
+         {"  set Curve file = " +
+            file("degree 2\nknots 0 0 0 1 1 1\ncontrol points 3\n0 0 1\n"
+                 "0 0 1\n0 0 1\n") +
+            "\n",
+          "the curve's tangent vanishes"},
+         {"  set Curve file = " + file("degree 2\nknot 0 0 0 1 1 1\n") + "\n",
+          "'knot' is not one of degree, knots, control points"}})
+    {
+      const std::string message = refusal(scene(curve_entry));
+      std::cout << "  " << message << std::endl;
+      check(message.find(expected) != std::string::npos,
+            "expected a message with '" + expected + "'");
+      check(message.find("Obstacle/Curve file") != std::string::npos,
+            "the message names the entry");
+    }
+}
