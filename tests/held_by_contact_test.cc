@@ -42,57 +42,90 @@ namespace
 // field is axisymmetric), and both must be Lame's ring a = 0.5, b = 2
 // clamped at r = a under p = 400 / (2 pi b), within the discretisation
 // error.
+namespace
+{
+  /** The check of held_by_contact_rings_one_support_lame on rings of the
+   *  space and surface that `settings` set. */
+  void
+  one_support_against_four(const std::vector<std::string> &settings,
+                           const std::string              &label)
+  {
+    const auto run = [&](const std::string &fixed) {
+      std::vector<std::string> overrides = {
+        "Load program/Stage end times=1",
+        "Load program/Stage increments=10",
+        "Output/Progress=false",
+        "Output/Directory=held_rings",
+      };
+      overrides.insert(overrides.end(), settings.begin(), settings.end());
+      if (!fixed.empty())
+        overrides.push_back("Body outer/Boundary conditions/Fixed=" + fixed);
+      auto simulation = std::make_unique<Simulation>(
+        SceneReader::read_file(source_path("prm/case3_rings.prm"), overrides));
+      for (unsigned int k = 1; k <= 10; ++k)
+        simulation->advance_to(0.1 * k, "increment");
+      return simulation;
+    };
+    const auto four = run("");
+    const auto one  = run("point(2, 0): y");
+
+    // Lame (case3_rings_reference.h).
+    const LameRings lame(1e4);
+    const double    b = 2., c = 1.25;
+    const double    u_b_lame    = lame.u_outer,
+                 interface_lame = lame.interface_pressure;
+    const double u_four = mean_radial_displacement(four->body("outer"), b);
+    const double u_one  = mean_radial_displacement(one->body("outer"), b);
+    const double p_four = total_normal_reaction(*four) / (2. * M_PI * c);
+    const double p_one  = total_normal_reaction(*one) / (2. * M_PI * c);
+    const double four_error_u =
+      std::abs(u_four - u_b_lame) / std::abs(u_b_lame);
+    const double four_error_p =
+      std::abs(p_four - interface_lame) / interface_lame;
+    std::cout << "  " << label << ", four supports: u_r(2) " << u_four
+              << ", interface pressure " << p_four << " (Lame " << u_b_lame
+              << ", " << interface_lame << "; deviations " << four_error_u
+              << ", " << four_error_p << ")" << std::endl;
+    check_relative(u_one,
+                   u_b_lame,
+                   1.01 * four_error_u + 1e-9,
+                   "u_r(2), one support, against Lame");
+    check_relative(p_one,
+                   interface_lame,
+                   1.01 * four_error_p + 1e-9,
+                   "interface pressure, one support, against Lame");
+    check_relative(u_one, u_four, 1e-8, "u_r(2), one support against four");
+
+    // The support carries nothing but round-off of the 400 applied.
+    const Tensor<1, 2> reaction =
+      support_reaction(one->body("outer"), "point(2, 0)");
+    std::cout << "  reaction of the one support: " << reaction[1] << std::endl;
+    check(std::abs(reaction[1]) <= 1e-10 * 400.,
+          "the support's reaction is zero");
+  }
+} // namespace
+
 GLISSADE_TEST(held_by_contact_rings_one_support_lame)
 {
-  const auto run = [](const std::string &fixed) {
-    std::vector<std::string> overrides = {"Load program/Stage end times=1",
-                                          "Load program/Stage increments=10",
-                                          "Output/Progress=false",
-                                          "Output/Directory=held_rings",
-                                          "Contact interface/Surface=bspline"};
-    if (!fixed.empty())
-      overrides.push_back("Body outer/Boundary conditions/Fixed=" + fixed);
-    auto simulation = std::make_unique<Simulation>(
-      SceneReader::read_file(source_path("prm/case3_rings.prm"), overrides));
-    for (unsigned int k = 1; k <= 10; ++k)
-      simulation->advance_to(0.1 * k, "increment");
-    return simulation;
-  };
-  const auto four = run("");
-  const auto one  = run("point(2, 0): y");
+  one_support_against_four({"Contact interface/Surface=bspline"},
+                           "Q1 rings, B-spline master");
+}
 
-  // Lame (case3_rings_reference.h).
-  const LameRings lame(1e4);
-  const double    b = 2., c = 1.25;
-  const double    u_b_lame    = lame.u_outer,
-               interface_lame = lame.interface_pressure;
-  const double u_four       = mean_radial_displacement(four->body("outer"), b);
-  const double u_one        = mean_radial_displacement(one->body("outer"), b);
-  const double p_four       = total_normal_reaction(*four) / (2. * M_PI * c);
-  const double p_one        = total_normal_reaction(*one) / (2. * M_PI * c);
-  const double four_error_u = std::abs(u_four - u_b_lame) / std::abs(u_b_lame);
-  const double four_error_p =
-    std::abs(p_four - interface_lame) / interface_lame;
-  std::cout << "  four supports: u_r(2) " << u_four << ", interface pressure "
-            << p_four << " (Lame " << u_b_lame << ", " << interface_lame
-            << "; deviations " << four_error_u << ", " << four_error_p << ")"
-            << std::endl;
-  check_relative(u_one,
-                 u_b_lame,
-                 1.01 * four_error_u + 1e-9,
-                 "u_r(2), one support, against Lame");
-  check_relative(p_one,
-                 interface_lame,
-                 1.01 * four_error_p + 1e-9,
-                 "interface pressure, one support, against Lame");
-  check_relative(u_one, u_four, 1e-8, "u_r(2), one support against four");
-
-  // The support carries nothing but round-off of the 400 applied.
-  const Tensor<1, 2> reaction =
-    support_reaction(one->body("outer"), "point(2, 0)");
-  std::cout << "  reaction of the one support: " << reaction[1] << std::endl;
-  check(std::abs(reaction[1]) <= 1e-10 * 400.,
-        "the support's reaction is zero");
+// The same with both rings NURBS (mortar on the inner ring's exact
+// boundary): the springs that hold a body of control points sit on
+// control points of its contact boundary. (The 400 N as the uniform
+// pressure Lame has, rather than 10 N on each of 40 nodes, which a NURBS
+// boundary of 44 control points does not have.)
+GLISSADE_TEST(held_by_contact_nurbs_rings_one_support_lame)
+{
+  one_support_against_four(
+    {"Body inner/Element/Space=nurbs",
+     "Body outer/Element/Space=nurbs",
+     "Contact interface/Surface=nurbs",
+     "Contact interface/Discretisation=mortar",
+     "Body outer/Boundary conditions/Nodal loads=",
+     "Body outer/Boundary conditions/Pressure=outer: 400/(4*pi)*min(t, 1)"},
+    "NURBS rings, mortar");
 }
 
 

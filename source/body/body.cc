@@ -293,17 +293,6 @@ namespace glissade
                                  box,
                                  reference_size,
                                  of_revolution);
-    // (the springs that hold them act on vertices' dofs)
-    if (!free_motions.empty() &&
-        !element_space->capabilities().dofs_are_nodal_values)
-      throw InputError(where + "/Boundary conditions",
-                       "the supports of body '" + description.name +
-                         "' leave " + std::to_string(free_motions.size()) +
-                         " rigid motion(s) free, which the springs that "
-                         "hold a body in contact would take on its "
-                         "vertices; a " +
-                         element_space->name() +
-                         " body needs supports that hold it");
     linear_system = std::make_unique<BodyLinearSystem>(
       dofs,
       *element_space,

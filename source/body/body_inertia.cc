@@ -64,18 +64,18 @@ namespace glissade
     , scheme(std::move(scheme))
     , contact_dofs(massless.begin(), massless.end())
   {
+    // (a lumped mass, diagonal, is one value per dof: a space with
+    // derivative dofs (Hermite) has none for them. Control points (NURBS),
+    // whose functions are positive, take it as nodes do.)
     const ElementSpace &space = body.space();
     const bool          nodal = space.capabilities().dofs_are_nodal_values;
-    if ((space.components_per_displacement() != 1 || !nodal) &&
-        settings.lumped_mass)
+    if (space.components_per_displacement() != 1 && settings.lumped_mass)
       throw InputError(where + "/Material",
-                       "Time integration/Mass = lumped is for nodal element "
-                       "spaces; body '" +
+                       "Time integration/Mass = lumped is for spaces of "
+                       "values (nodes or control points); body '" +
                          body.name() + "' uses " + space.name() +
-                         (nodal ? ", whose derivative dofs have no lumped "
-                                  "mass" :
-                                  ", whose dofs are control points") +
-                         ": use Mass = consistent");
+                         ", whose derivative dofs have no lumped mass: use "
+                         "Mass = consistent");
     const Hypothesis         &hypothesis = body.hypothesis();
     auto                      evaluator  = space.create_evaluator();
     const unsigned int        n          = evaluator->dofs_per_cell();
@@ -83,9 +83,11 @@ namespace glissade
     for (unsigned int i = 0; i < n; ++i)
       component[i] = evaluator->displacement_component(i);
     // (a Hermite body keeps its mass where it touches: its derivative dofs
-    // would need their own redistribution, not derived here)
+    // would need their own redistribution, not derived here. A NURBS
+    // body's contact control points give theirs to the others of their
+    // cells, as nodes do.)
     const bool redistribute = settings.redistribute_contact_mass &&
-                              space.components_per_displacement() == 1 && nodal;
+                              space.components_per_displacement() == 1;
 
     // (on a mesh shared out over the processes, the masses of this
     // process's cells; apply_mass sums the processes' products)

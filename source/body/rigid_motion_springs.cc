@@ -38,19 +38,29 @@ namespace glissade
     for (const auto dof : contact_dofs)
       if (!constraints.is_constrained(dof))
         candidates.emplace(dof, std::vector<double>());
-    for (const auto &cell : dofs.active_cell_iterators())
-      for (const unsigned int v : cell->vertex_indices())
-        {
-          const auto vertex_dofs =
-            BoundaryConditions::cell_vertex_dofs(cell, v, space);
-          for (unsigned int c = 0; c < 2; ++c)
-            {
-              const auto found = candidates.find(vertex_dofs[c]);
-              if (found != candidates.end() && found->second.empty())
-                for (const auto &motion : motions_left_free)
-                  found->second.push_back(motion.at(cell->vertex(v))[c]);
-            }
-        }
+    const auto take = [&](const types::global_dof_index dof,
+                          const unsigned int            component,
+                          const Point<2>               &X) {
+      const auto found = candidates.find(dof);
+      if (found != candidates.end() && found->second.empty())
+        for (const auto &motion : motions_left_free)
+          found->second.push_back(motion.at(X)[component]);
+    };
+    if (space.capabilities().dofs_are_nodal_values)
+      for (const auto &cell : dofs.active_cell_iterators())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto vertex_dofs =
+              BoundaryConditions::cell_vertex_dofs(cell, v, space);
+            for (unsigned int c = 0; c < 2; ++c)
+              take(vertex_dofs[c], c, cell->vertex(v));
+          }
+    else
+      // (dofs that are not nodal values, NURBS control points: a rigid
+      // motion moves each as it moves the point the space gives it, the
+      // control point of an isoparametric space)
+      for (const auto &point : space.interpolation_points())
+        take(point.dof, point.component, point.point);
 
     // Pivoted Gram-Schmidt: each time the candidate that moves most under
     // the free motions not yet held.

@@ -33,13 +33,15 @@ namespace glissade
                       Patterns::Selection("consistent|lumped"),
                       "The mass matrix: consistent (every element space), "
                       "or lumped by the HRZ rule (diagonal scaled to the "
-                      "cell's mass; Lagrange spaces only).");
+                      "cell's mass; spaces of values: Lagrange, serendipity, "
+                      "NURBS, not Hermite).");
     prm.declare_entry("Contact mass",
                       "redistributed",
                       Patterns::Selection("redistributed|kept"),
-                      "redistributed: the nodes of every contact boundary "
-                      "(slave and master) carry no mass, their share moved "
-                      "to the other nodes of their cells (Khenous, Laborde "
+                      "redistributed: the nodes (NURBS: control points) of "
+                      "every contact boundary (slave and master) carry no "
+                      "mass, their share moved to the other nodes of their "
+                      "cells (a Hermite body keeps its own) (Khenous, Laborde "
                       "and Renard 2008): the contact force then has no "
                       "inertia of its own to ring with, and the total mass "
                       "and momentum are kept. kept: the mass as assembled "
