@@ -258,7 +258,8 @@ namespace
            "\n set Alert distance = 0.05\nend\n"
            "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
            "subsection Load program\n set Stage increments = 1\nend\n"
-           "subsection Output\n set Progress = false\nend\n"
+           "subsection Output\n set Progress = false\n"
+           " set Directory = output/nurbs_shrink_fit\nend\n"
            "subsection Newton\n set Residual tolerance = 1e-11\n"
            " set Displacement tolerance = 1e-11\nend\n";
   }
@@ -477,7 +478,8 @@ GLISSADE_TEST(nurbs_contact_ring_in_rigid_hole)
           std::to_string(b - delta) +
           "\n end\nend\n"
           "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
-          "subsection Output\n set Progress = false\nend\n"
+          "subsection Output\n set Progress = false\n"
+          " set Directory = output/nurbs_ring_in_rigid_hole\nend\n"
           "subsection Newton\n set Residual tolerance = 1e-11\n"
           " set Displacement tolerance = 1e-11\nend\n";
         Simulation simulation(SceneReader::read_string(scene, "ring in hole"));

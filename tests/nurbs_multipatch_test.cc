@@ -61,18 +61,6 @@ namespace
            " set Displacement tolerance = 1e-11\nend\n";
   }
 
-  /** The largest relative difference of two lists of figures. */
-  double
-  largest_difference(const std::vector<double> &a, const std::vector<double> &b)
-  {
-    double scale = 0., worst = 0.;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        scale = std::max(scale, std::abs(a[i]));
-        worst = std::max(worst, std::abs(a[i] - b[i]));
-      }
-    return worst / scale;
-  }
 } // namespace
 
 
@@ -87,23 +75,9 @@ namespace
 // the join) gives the same contact forces and displacement, and Lame's.
 GLISSADE_TEST(nurbs_multipatch_same_as_one_patch)
 {
-  const double E = 1000., nu = 0.3, p = 1e-4, a = 1., b = 2.;
-  const double A = p * a * a / (b * b - a * a), B = A * b * b;
-  const auto   u_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r);
-  };
-  const auto du_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A - B / (r * r));
-  };
-  const auto u = [&](const Point<2> &X) {
-    return u_r(X.norm()) / X.norm() * Tensor<1, 2>(X);
-  };
-  const auto grad = [&](const Point<2> &X) {
-    const double       r = X.norm();
-    const Tensor<1, 2> e_r({X[0] / r, X[1] / r}), e_t({-X[1] / r, X[0] / r});
-    return du_r(r) * outer_product(e_r, e_r) +
-           u_r(r) / r * outer_product(e_t, e_t);
-  };
+  const LameRing lame;
+  const auto     u    = [&](const Point<2> &X) { return lame.u(X); };
+  const auto     grad = [&](const Point<2> &X) { return lame.grad(X); };
   const std::vector<std::string> files = {
     "prm/meshes/quarter_annulus_c0.nurbs",
     "prm/meshes/quarter_annulus_two_patches.nurbs",
@@ -161,6 +135,7 @@ GLISSADE_TEST(nurbs_multipatch_same_as_one_patch)
 
   // Contact along a side that crosses the join: Lame's ring free inside,
   // u_r(2) = -1e-3 outside (a rigid hole).
+  const double E = lame.E, nu = lame.nu, a = lame.a, b = lame.b;
   const double delta = 1e-3, lambda = E * nu / ((1. + nu) * (1. - 2. * nu)),
                mu       = E / (2. * (1. + nu));
   const double B_fit    = -delta / (b * mu / (a * a * (lambda + mu)) + 1. / b);
@@ -216,12 +191,8 @@ GLISSADE_TEST(nurbs_multipatch_same_as_one_patch)
 // points with the 2 joins' 5 once.
 GLISSADE_TEST(nurbs_multipatch_patch_test)
 {
-  const std::string ux = "(0.01 + 0.02*x - 0.03*y)*t",
-                    uy = "(-0.02 + 0.015*x + 0.025*y)*t";
-  const auto exact     = [](const Point<2> &X) {
-    return Tensor<1, 2>(
-      {0.01 + 0.02 * X[0] - 0.03 * X[1], -0.02 + 0.015 * X[0] + 0.025 * X[1]});
-  };
+  const std::string ux = affine_field_x, uy = affine_field_y;
+  const auto        exact = affine_field;
   for (const std::string kinematics : {"small strain", "large strain"})
     {
       Simulation simulation(SceneReader::read_string(
@@ -236,32 +207,9 @@ GLISSADE_TEST(nurbs_multipatch_patch_test)
       const Body &body = simulation.body("ring");
       check(body.n_unknowns() == 2 * (3 * 25 - 2 * 5),
             "the unknowns are the body's distinct control points");
-      std::map<types::global_dof_index, Point<2>> support;
-      DoFTools::map_dofs_to_support_points(body.space().mapping(),
-                                           body.dof_handler(),
-                                           support);
-      const auto                          &fe    = body.dof_handler().get_fe();
-      const auto                          &nodal = body.nodal_displacement();
-      double                               worst = 0.;
-      std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-      for (const auto &cell : body.dof_handler().active_cell_iterators())
-        {
-          cell->get_dof_indices(local);
-          for (unsigned int i = 0; i < local.size(); ++i)
-            worst = std::max(
-              worst,
-              std::abs(
-                nodal(local[i]) -
-                exact(
-                  support[local[i]])[fe.system_to_component_index(i).first]));
-        }
-      const auto errors = relative_errors(
-        body,
-        exact,
-        [](const Point<2> &) {
-          return Tensor<2, 2>({{0.02, -0.03}, {0.015, 0.025}});
-        },
-        4);
+      const double worst = largest_nodal_error(body, exact);
+      const auto   errors =
+        relative_errors(body, exact, affine_field_gradient, 4);
       std::cout << "  " << kinematics << ": " << body.n_unknowns()
                 << " unknowns, largest nodal error " << worst
                 << " (the field reaches 0.08), relative L2 error "

@@ -85,18 +85,6 @@ namespace
            " set Displacement tolerance = 1e-11\nend\n";
   }
 
-  /** The largest relative difference of two lists of figures. */
-  double
-  largest_difference(const std::vector<double> &a, const std::vector<double> &b)
-  {
-    double scale = 0., worst = 0.;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        scale = std::max(scale, std::abs(a[i]));
-        worst = std::max(worst, std::abs(a[i] - b[i]));
-      }
-    return worst / scale;
-  }
 
   /** The pair's contact force on the slave, summed over its points. */
   Tensor<1, 2>

@@ -25,6 +25,26 @@ using namespace dealii;
 using namespace glissade_tests;
 
 
+namespace
+{
+  /** The L2 and H1 rates of the last halving of h: p + 1 and p within
+   *  `tolerance`. */
+  void
+  check_rates(const std::vector<std::pair<double, double>> &errors,
+              const unsigned int                            degree,
+              const double                                  tolerance)
+  {
+    const unsigned int k  = errors.size() - 1;
+    const double       r0 = std::log2(errors[k - 1].first / errors[k].first);
+    const double       r1 = std::log2(errors[k - 1].second / errors[k].second);
+    std::cout << "  degree " << degree << ": rates L2 " << r0 << " (theory "
+              << degree + 1 << "), H1 " << r1 << " (theory " << degree << ")"
+              << std::endl;
+    check(std::abs(r0 - (degree + 1)) <= tolerance, "the L2 rate is off p + 1");
+    check(std::abs(r1 - degree) <= tolerance, "the H1 rate is off p");
+  }
+} // namespace
+
 // The patches are the shapes: every point of a ring's patch lies on its
 // circle of radius r(xi) (rational weights; no polynomial does this), the
 // functions sum to one, their derivatives are the finite differences of
@@ -114,12 +134,8 @@ GLISSADE_TEST(nurbs_patches_are_exact)
 // which is reported, and bounded by 1e-5.
 GLISSADE_TEST(nurbs_patch_test)
 {
-  const std::string ux = "(0.01 + 0.02*x - 0.03*y)*t",
-                    uy = "(-0.02 + 0.015*x + 0.025*y)*t";
-  const auto exact     = [](const Point<2> &X) {
-    return Tensor<1, 2>(
-      {0.01 + 0.02 * X[0] - 0.03 * X[1], -0.02 + 0.015 * X[0] + 0.025 * X[1]});
-  };
+  const std::string ux = affine_field_x, uy = affine_field_y;
+  const auto        exact = affine_field;
   for (const bool ring : {false, true})
     for (const std::string kinematics : {"small strain", "large strain"})
       for (const unsigned int degree : {2u, 3u})
@@ -162,34 +178,11 @@ GLISSADE_TEST(nurbs_patch_test)
                         << off << std::endl;
               check(off > 0.01, "the patch is not distorted");
             }
-          // The nodal view at every node of the output's elements.
-          std::map<types::global_dof_index, Point<2>> support;
-          DoFTools::map_dofs_to_support_points(body.space().mapping(),
-                                               body.dof_handler(),
-                                               support);
-          const auto &fe    = body.dof_handler().get_fe();
-          const auto &nodal = body.nodal_displacement();
-          double      worst = 0.;
-          std::vector<types::global_dof_index> local(fe.n_dofs_per_cell());
-          for (const auto &cell : body.dof_handler().active_cell_iterators())
-            {
-              cell->get_dof_indices(local);
-              for (unsigned int i = 0; i < local.size(); ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  worst                = std::max(worst,
-                                   std::abs(nodal(local[i]) -
-                                            exact(support[local[i]])[c]));
-                }
-            }
+          // The nodal view at every node of the output's elements...
+          const double worst = largest_nodal_error(body, exact);
           // and at Gauss points, from the control points
-          const auto errors = relative_errors(
-            body,
-            exact,
-            [](const Point<2> &) {
-              return Tensor<2, 2>({{0.02, -0.03}, {0.015, 0.025}});
-            },
-            degree + 2);
+          const auto errors =
+            relative_errors(body, exact, affine_field_gradient, degree + 2);
           std::cout << "  " << label << ": largest nodal error " << worst
                     << " (the field reaches 0.08); relative L2 error "
                     << errors.first << ", H1 " << errors.second << std::endl;
@@ -205,24 +198,9 @@ GLISSADE_TEST(nurbs_patch_test)
 // plane strain, pressure 1e-4 inside; a quarter with symmetric supports).
 GLISSADE_TEST(nurbs_lame_ring_rates)
 {
-  const double E = 1000., nu = 0.3, p = 1e-4, a = 1., b = 2.;
-  const double A = p * a * a / (b * b - a * a), B = A * b * b;
-  const auto   u_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r);
-  };
-  const auto du_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A - B / (r * r));
-  };
-  const auto u = [&](const Point<2> &X) {
-    const double r = X.norm();
-    return Tensor<1, 2>({u_r(r) * X[0] / r, u_r(r) * X[1] / r});
-  };
-  const auto grad = [&](const Point<2> &X) {
-    const double       r = X.norm();
-    const Tensor<1, 2> e_r({X[0] / r, X[1] / r}), e_t({-X[1] / r, X[0] / r});
-    return du_r(r) * outer_product(e_r, e_r) +
-           u_r(r) / r * outer_product(e_t, e_t);
-  };
+  const LameRing lame;
+  const auto     u    = [&](const Point<2> &X) { return lame.u(X); };
+  const auto     grad = [&](const Point<2> &X) { return lame.grad(X); };
   for (const unsigned int degree : {2u, 3u})
     {
       std::vector<std::pair<double, double>> errors;
@@ -247,14 +225,7 @@ GLISSADE_TEST(nurbs_lame_ring_rates)
                     << " unknowns: L2 error " << errors.back().first
                     << ", H1 error " << errors.back().second << std::endl;
         }
-      const unsigned int k  = errors.size() - 1;
-      const double       r0 = std::log2(errors[k - 1].first / errors[k].first);
-      const double r1 = std::log2(errors[k - 1].second / errors[k].second);
-      std::cout << "  degree " << degree << ": rates L2 " << r0 << " (theory "
-                << degree + 1 << "), H1 " << r1 << " (theory " << degree << ")"
-                << std::endl;
-      check(std::abs(r0 - (degree + 1)) <= 0.25, "the L2 rate is off p + 1");
-      check(std::abs(r1 - degree) <= 0.25, "the H1 rate is off p");
+      check_rates(errors, degree, 0.25);
     }
 }
 
@@ -306,15 +277,8 @@ GLISSADE_TEST(nurbs_large_strain_ring_rates)
                     << " unknowns: L2 error " << errors.back().first
                     << ", H1 error " << errors.back().second << std::endl;
         }
-      const unsigned int k  = errors.size() - 1;
-      const double       r0 = std::log2(errors[k - 1].first / errors[k].first);
-      const double r1 = std::log2(errors[k - 1].second / errors[k].second);
-      std::cout << "  degree " << degree << ": rates L2 " << r0 << " (theory "
-                << degree + 1 << "), H1 " << r1 << " (theory " << degree << ")"
-                << std::endl;
-      check(std::abs(r0 - (degree + 1)) <= 0.3, "the L2 rate is off p + 1");
-      check(std::abs(r1 - degree) <= 0.3, "the H1 rate is off p");
-      check(errors[k].first < 1e-4, "the finest L2 error is above 1e-4");
+      check_rates(errors, degree, 0.3);
+      check(errors.back().first < 1e-4, "the finest L2 error is above 1e-4");
     }
 }
 
@@ -363,22 +327,9 @@ GLISSADE_TEST(nurbs_input_errors)
 // element.
 GLISSADE_TEST(nurbs_patch_file)
 {
-  const double E = 1000., nu = 0.3, A = 1e-4 / 3., B = 4. * A;
-  const auto   u_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A * r + B / r);
-  };
-  const auto du_r = [&](const double r) {
-    return (1. + nu) / E * ((1. - 2. * nu) * A - B / (r * r));
-  };
-  const auto u = [&](const Point<2> &X) {
-    return u_r(X.norm()) / X.norm() * Tensor<1, 2>(X);
-  };
-  const auto grad = [&](const Point<2> &X) {
-    const double       r = X.norm();
-    const Tensor<1, 2> e_r({X[0] / r, X[1] / r}), e_t({-X[1] / r, X[0] / r});
-    return du_r(r) * outer_product(e_r, e_r) +
-           u_r(r) / r * outer_product(e_t, e_t);
-  };
+  const LameRing    lame;
+  const auto        u     = [&](const Point<2> &X) { return lame.u(X); };
+  const auto        grad  = [&](const Point<2> &X) { return lame.grad(X); };
   const std::string file  = source_path("prm/meshes/quarter_annulus.nurbs");
   const auto        scene = [&](const std::string &patch_file,
                          const unsigned int n,

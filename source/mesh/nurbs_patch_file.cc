@@ -20,26 +20,28 @@ namespace glissade
   {
     const std::array<std::string, 4> &side_keys = patch_side_keys();
 
-    /** The lines of a file without comments and blank lines, numbered. */
-    std::vector<std::pair<unsigned int, std::string>>
-    meaningful_lines(const std::string &file, const std::string &where)
-    {
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(where,
-                         "cannot open the NURBS patch file '" + file + "'");
-      std::vector<std::pair<unsigned int, std::string>> lines;
-      std::string                                       line;
-      for (unsigned int number = 1; std::getline(in, line); ++number)
-        {
-          line = line.substr(0, line.find('#'));
-          if (line.find_first_not_of(" \t\r") != std::string::npos)
-            lines.emplace_back(number, line);
-        }
-      return lines;
-    }
-
   } // namespace
+
+
+
+  std::vector<std::pair<unsigned int, std::string>>
+  meaningful_lines(const std::string &file,
+                   const std::string &kind,
+                   const std::string &where)
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw InputError(where, "cannot open the " + kind + " '" + file + "'");
+    std::vector<std::pair<unsigned int, std::string>> lines;
+    std::string                                       line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        line = line.substr(0, line.find('#'));
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+          lines.emplace_back(number, line);
+      }
+    return lines;
+  }
 
 
 
@@ -93,6 +95,29 @@ namespace glissade
             throw InputError(where, message.str());
           }
       }
+  }
+
+
+
+  std::array<double, 3>
+  read_control_point(const std::string &line,
+                     const unsigned int k,
+                     const std::string &where)
+  {
+    std::istringstream point(line);
+    double             x, y, w;
+    std::string        extra;
+    if (!(point >> x >> y >> w) || (point >> extra))
+      throw InputError(where,
+                       "control point " + std::to_string(k + 1) +
+                         ": expected 'x y w'");
+    if (!(w > 0.) || !std::isfinite(w) || !std::isfinite(x) ||
+        !std::isfinite(y))
+      throw InputError(where,
+                       "control point " + std::to_string(k + 1) +
+                         ": the weight must be positive and the numbers "
+                         "finite");
+    return {{x, y, w}};
   }
 
 
@@ -212,8 +237,8 @@ namespace glissade
   NurbsPatchFile::read(const std::string &file, const std::string &entry)
   {
     NurbsPatchFile result;
-    result.where                  = entry + " ('" + file + "')";
-    const auto              lines = meaningful_lines(file, result.where);
+    result.where     = entry + " ('" + file + "')";
+    const auto lines = meaningful_lines(file, "NURBS patch file", result.where);
     std::vector<PatchLines> patches(1);
     // (boundary and join lines are read once the patches are known)
     std::vector<std::pair<std::string, std::vector<std::string>>> boundaries,
@@ -279,21 +304,11 @@ namespace glissade
                                                     patch.counts[1]) +
                                      " control points");
                 ++i;
-                std::istringstream point(lines[i].second);
-                double             x, y, w;
-                std::string        extra;
-                const std::string  line_at =
-                  result.where + ", line " + std::to_string(lines[i].first);
-                if (!(point >> x >> y >> w) || (point >> extra))
-                  throw InputError(line_at,
-                                   "control point " + std::to_string(k + 1) +
-                                     ": expected 'x y w'");
-                if (!(w > 0.) || !std::isfinite(w) || !std::isfinite(x) ||
-                    !std::isfinite(y))
-                  throw InputError(line_at,
-                                   "control point " + std::to_string(k + 1) +
-                                     ": the weight must be positive and the "
-                                     "numbers finite");
+                const auto [x, y, w] =
+                  read_control_point(lines[i].second,
+                                     k,
+                                     result.where + ", line " +
+                                       std::to_string(lines[i].first));
                 patch.control.push_back({{w * x, w * y, w}});
               }
             begun = true;

@@ -7,10 +7,21 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glissade
 {
+  /**
+   * The lines of a NURBS file without its comments (from #) and blank
+   * lines, each with its number; a file that cannot be opened throws an
+   * InputError at `where` naming the `kind` of file.
+   */
+  std::vector<std::pair<unsigned int, std::string>>
+  meaningful_lines(const std::string &file,
+                   const std::string &kind,
+                   const std::string &where);
+
   /**
    * The checks of a knot vector of degree `degree` read from a file:
    * non-decreasing, open (its ends repeated degree + 1 times), long enough,
@@ -23,6 +34,16 @@ namespace glissade
                     unsigned int               degree,
                     const std::string         &label,
                     const std::string         &where);
+
+  /**
+   * Control point k (from 0) of a file, its line `line` "x y w": the
+   * numbers, checked (three, finite, w > 0); a mistake throws an
+   * InputError at `where` (the file and line).
+   */
+  std::array<double, 3>
+  read_control_point(const std::string &line,
+                     unsigned int       k,
+                     const std::string &where);
 
   /**
    * A NURBS body read from a file (Mesh/Type = nurbs patch; the format is

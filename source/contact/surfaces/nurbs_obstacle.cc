@@ -14,7 +14,6 @@
 #include <algorithm>
 #include <any>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -70,21 +69,6 @@ namespace glissade
       return c;
     }
 
-    /** The lines of a file without comments and blank lines, numbered. */
-    std::vector<std::pair<unsigned int, std::string>>
-    curve_file_lines(std::istream &in)
-    {
-      std::vector<std::pair<unsigned int, std::string>> lines;
-      std::string                                       line;
-      for (unsigned int number = 1; std::getline(in, line); ++number)
-        {
-          line = line.substr(0, line.find('#'));
-          if (line.find_first_not_of(" \t\r") != std::string::npos)
-            lines.emplace_back(number, line);
-        }
-      return lines;
-    }
-
     /**
      * A curve file, checked: its lines, its knots (check_knot_vector), a
      * control point per function, positive weights, a tangent that never
@@ -96,11 +80,8 @@ namespace glissade
     read_curve_file(const std::string &file, const std::string &where_entry)
     {
       const std::string where = where_entry + " ('" + file + "')";
-      std::ifstream     in(file);
-      if (!in)
-        throw InputError(where, "cannot open the NURBS curve file");
-      const auto          lines  = curve_file_lines(in);
-      int                 degree = 0;
+      const auto lines  = meaningful_lines(file, "NURBS curve file", where);
+      int        degree = 0;
       std::vector<double> knots;
       std::vector<double> x, y, w;
       for (unsigned int i = 0; i < lines.size(); ++i)
@@ -129,28 +110,18 @@ namespace glissade
               int         n = 0;
               if (!(words >> points >> n) || points != "points" || n < 1)
                 throw InputError(at, "expected 'control points n'");
-              for (int k = 0; k < n; ++k)
+              for (unsigned int k = 0; k < unsigned(n); ++k)
                 {
                   if (++i >= lines.size())
                     throw InputError(at,
                                      "the file ends after " +
                                        std::to_string(k) + " of the " +
                                        std::to_string(n) + " control points");
-                  std::istringstream point(lines[i].second);
-                  double             px, py, pw;
-                  std::string        extra;
-                  const std::string  line_at =
-                    where + ", line " + std::to_string(lines[i].first);
-                  if (!(point >> px >> py >> pw) || (point >> extra))
-                    throw InputError(line_at,
-                                     "control point " + std::to_string(k + 1) +
-                                       ": expected 'x y w'");
-                  if (!(pw > 0.) || !std::isfinite(pw) || !std::isfinite(px) ||
-                      !std::isfinite(py))
-                    throw InputError(line_at,
-                                     "control point " + std::to_string(k + 1) +
-                                       ": the weight must be positive and "
-                                       "the numbers finite");
+                  const auto [px, py, pw] =
+                    read_control_point(lines[i].second,
+                                       k,
+                                       where + ", line " +
+                                         std::to_string(lines[i].first));
                   x.push_back(px);
                   y.push_back(py);
                   w.push_back(pw);
