@@ -305,31 +305,15 @@ GLISSADE_TEST(held_by_contact_rubber_block_to_half_height)
 // 2^-17 for 0 and the plates' force 3.6e-4 off.)
 GLISSADE_TEST(held_by_contact_ring_between_two_plates)
 {
+  // (the pinched ring's scene, tests/input/processes_pinched_ring.prm,
+  // over its first two increments: its self-contact pair is open until
+  // t = 0.87)
   const auto run = [](const std::string &fixed) {
-    std::string prm =
-      "subsection Scene\n set Bodies = ring\n"
-      " set Contact pairs = top, bottom\nend\n"
-      "subsection Body ring\n subsection Mesh\n  set Type = ring\n"
-      "  set Inner radius = 0.7\n  set Outer radius = 1\n"
-      "  set Subdivisions = 96, 4\n end\n subsection Material\n"
-      "  set Young modulus = 1000\n end\n subsection Boundary conditions\n"
-      "  set Fixed = " +
-      fixed + "\n end\nend\n";
-    for (const std::string side : {"1", "-1"})
-      prm += "subsection Contact " +
-             std::string(side == "1" ? "top" : "bottom") +
-             "\n set Slave body = ring\n set Slave boundary = outer\n"
-             " set Alert distance = 0.02\n subsection Obstacle\n"
-             "  set Type = line\n  set Point = 0, " +
-             side + "\n  set Normal = 0, " + (side == "1" ? "-1" : "1") +
-             "\n  set Motion = 0, " + (side == "1" ? "-" : "") +
-             "0.8*t\n end\nend\n";
-    prm += "subsection Newton\n set Residual tolerance = 1e-10\n"
-           " set Displacement tolerance = 1e-10\nend\n"
-           "subsection Contact solver\n set Tolerance = 1e-13\nend\n"
-           "subsection Output\n set Progress = false\nend\n";
-    auto simulation =
-      std::make_unique<Simulation>(SceneReader::read_string(prm, "plates"));
+    auto simulation = std::make_unique<Simulation>(SceneReader::read_file(
+      source_path("tests/input/processes_pinched_ring.prm"),
+      {"Body ring/Boundary conditions/Fixed=" + fixed,
+       "Output/Progress=false",
+       "Output/Directory=held_ring_between_two_plates"}));
     std::vector<double> figures;
     for (const double t : {0.0125, 0.025})
       {
