@@ -135,3 +135,58 @@ GLISSADE_TEST(nurbs_contact_hertz_cylinder_on_flat)
             "p = " + p + ": the pressure oscillates by more than 1 % of p0");
     }
 }
+
+
+
+// Every slave point that mortar projects has its weighted gap
+// g_A = int psi_A g / int R_A integrated over its whole function: the
+// cylinder at rest above the flat, where the gap along the slave normal
+// is 1 / cos(theta) - 1 = 1 / sqrt(1 - x^2) - 1, must give each projected
+// point about the gap at its Greville point (to the dual weighting's
+// O(h |g'|)). The points whose functions reached across the alert
+// distance were integrated on part of their spans only: with the dual
+// functions' lobes, degree 3 read 0.044 and 0.005 where the curve was
+// 0.020 away, a compliance turned negative, and Hertz at 240 x 100
+// elements stopped.
+GLISSADE_TEST(nurbs_mortar_points_integrated_whole)
+{
+  for (const unsigned int degree : {2u, 3u})
+    {
+      const std::string p = std::to_string(degree);
+      Simulation        simulation(SceneReader::read_file(
+        source_path("prm/hertz_cylinder_nurbs.prm"),
+        {"Body cylinder/Mesh/File=meshes/quarter_disk_p" + p + ".nurbs",
+                "Body cylinder/Element/Degree=" + p,
+                "Body block/Element/Degree=" + p,
+                "Body cylinder/Mesh/Subdivisions=240, 4",
+                "Body block/Mesh/Subdivisions=240, 4",
+                "Body cylinder/Boundary conditions/Prescribed displacement="
+                       "top: y: 0",
+                "Load program/Stage increments=1",
+                "Output/Directory=nurbs_mortar_points_whole_p" + p,
+                "Output/VTU interval=0",
+                "Output/Progress=false"}));
+      simulation.run();
+      const ContactPair &pair      = *simulation.contact().contact_pairs()[0];
+      unsigned int       projected = 0;
+      double             worst = 0., farthest = 0.;
+      for (const ContactNode &node : pair.nodes())
+        if (node.projected)
+          {
+            const double x   = node.reference_position[0];
+            const double gap = 1. / std::sqrt(1. - x * x) - 1.;
+            ++projected;
+            farthest = std::max(farthest, gap);
+            worst    = std::max(worst, std::abs(node.gap - gap) / (gap + 1e-4));
+          }
+      std::cout
+        << "  p = " << degree << ": " << projected
+        << " points projected, the farthest " << farthest
+        << " away (alert distance 0.02); largest |g_A - g| / (g + 1e-4) "
+        << worst << std::endl;
+      check(projected > 20 && farthest > 0.015,
+            "p = " + p + ": the points within the alert distance projected");
+      check(worst < 0.05,
+            "p = " + p + ": a point's weighted gap is not its gap");
+    }
+}

@@ -48,10 +48,12 @@ namespace glissade
     /**
      * The compliance between contact dofs: block[i + j rows.size()] is
      * entry `rows[i]` of solve(e_{columns[j]}). With a Cholesky
-     * factorisation (contact dofs last) and every dof among the declared
-     * contact dofs, from the inverse of the factor's trailing block, whose
-     * columns at `columns` only are formed; otherwise one solve per column,
-     * kept for the current factorisation. Collective on several
+     * factorisation (contact dofs last), the entries between declared
+     * contact dofs from the inverse of the factor's trailing block, whose
+     * columns at `columns` only are formed, and those of a dof not
+     * declared from one solve for it (its column, and by symmetry its
+     * row); otherwise one solve per column. Solves are kept for the
+     * current factorisation. Collective on several
      * processes: every process calls it, each with its own `columns` (its
      * share of the loads), the same `rows`.
      */
@@ -86,14 +88,20 @@ namespace glissade
 
   private:
     /**
-     * Whether the block comes from the Cholesky factor's inverse (every
-     * dof declared, an inverse block held) rather than from solves; the
-     * same on every process (collective).
+     * Whether the declared contact dofs' compliance comes from the
+     * Cholesky factor's inverse (contact dofs declared, an inverse block
+     * held) rather than from solves; the same on every process
+     * (collective).
      */
     bool
-    reads_factor(const std::vector<dealii::types::global_dof_index> &rows,
-                 const std::vector<dealii::types::global_dof_index> &columns,
-                 const DirectSolver &factorization) const;
+    reads_factor(const DirectSolver &factorization) const;
+
+    /** Whether `dof` is among the declared contact dofs. */
+    bool
+    declared(const dealii::types::global_dof_index dof) const
+    {
+      return !contact_position.empty() && contact_position[dof] >= 0;
+    }
 
     /** The positions among the factor's last unknowns that `columns`
      *  follow. */
@@ -102,14 +110,12 @@ namespace glissade
       const std::vector<dealii::types::global_dof_index> &columns,
       const TrailingBlockInverse                         &cholesky);
 
-    /** The block from the Cholesky factor's inverse (every dof declared),
-     *  its columns formed. */
-    void
-    block_from_factor(
-      const std::vector<dealii::types::global_dof_index> &rows,
-      const std::vector<dealii::types::global_dof_index> &columns,
-      const TrailingBlockInverse                         &cholesky,
-      std::vector<double>                                &block);
+    /** The compliance between two declared contact dofs, from the
+     *  Cholesky factor's inverse, the column's positions formed. */
+    double
+    entry_from_factor(const dealii::types::global_dof_index row,
+                      const dealii::types::global_dof_index column,
+                      const TrailingBlockInverse           &cholesky) const;
 
     const dealii::types::global_dof_index n_dofs;
     /**
