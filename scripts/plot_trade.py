@@ -20,11 +20,14 @@ titles = {
     "case1": "Case 1: tip displacement, error against the reference (%)",
     "case2": "Case 2: roughness of the corner's contact force",
     "case3": "Case 3: worst contact-force spread (%)",
+    "case3_torque": "Case 3: largest spurious torque (%)",
+    "hertz": "Hertz: peak pressure p0, error against the closed form (%)",
 }
 names = {"q4": "Q4 (faceted)", "q8": "Q8", "q9": "Q9", "q12": "Q12",
          "q16": "Q16", "bspline": "Q4 + B-spline (segment transfer)",
          "bspline-spline": "Q4 + B-spline (spline transfer)",
          "hermite": "Hermite", "mortar": "Q4 mortar (faceted master)",
+         # (Hertz: node-to-segment on the flat's top for q4, bspline, hermite)
          # (an error at round-off is drawn at the floor 1e-12)
          "nurbs2": "NURBS p = 2 (exact circle)",
          "nurbs3": "NURBS p = 3 (exact circle)",

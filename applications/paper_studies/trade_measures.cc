@@ -2,6 +2,7 @@
 
 #include <glissade/base/input_error.h>
 #include <glissade/body/body_measures.h>
+#include <glissade/contact/contact_pair.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
 
@@ -235,6 +236,129 @@ namespace glissade
         measure == "case3_torque" ? r.worst_torque_percent : r.worst_spread;
       return point;
     }
+
+    /**
+     * Hertz (the scene prm/hertz_trade.prm, plane strain, small strain):
+     * the peak pressure p0 of the quarter cylinder's slave points against
+     * Hertz's closed form at the load the contact carries, in %. A point's
+     * pressure is its normal reaction over its tributary length in the
+     * reference configuration (a node's: half its reference faces; a
+     * NURBS point's: its collocation area), the nominal pressure that
+     * small strain speaks of (per current length it adds the surface's
+     * strain, 0.3 % here); the axis point's tributary is its half in the
+     * quarter model. settings: the cylinder's radius.
+     */
+    TradePoint
+    hertz_point(const std::string         &variant,
+                const unsigned int         n,
+                const std::string         &scene_file,
+                const std::vector<double> &settings,
+                const std::string         &output_directory)
+    {
+      const bool        nurbs = variant.rfind("nurbs", 0) == 0;
+      const std::string space =
+        nurbs ? "nurbs" : (variant == "hermite" ? "hermite" : "q1");
+      const std::string surface = nurbs                ? "nurbs" :
+                                  variant == "bspline" ? "bspline" :
+                                  variant == "hermite" ? "hermite" :
+                                                         "faceted";
+      const bool        mortar  = variant.find("mortar") != std::string::npos;
+      std::vector<std::string> overrides = {
+        "Contact touch/Surface=" + surface,
+        std::string("Contact touch/Discretisation=") +
+          (mortar ? "mortar" : "node-to-segment"),
+        std::string("Output/Progress=false"),
+        std::string("Output/VTU interval=0"),
+        "Output/Directory=" + output_directory + "/hertz/" + variant + "_" +
+          std::to_string(n)};
+      for (const std::string body : {"cylinder", "block"})
+        {
+          overrides.push_back("Body " + body + "/Element/Space=" + space);
+          overrides.push_back("Body " + body +
+                              "/Mesh/Subdivisions=" + std::to_string(n) + ", " +
+                              std::to_string(std::max(2u, (5 * n + 6) / 12)));
+          if (nurbs)
+            overrides.push_back("Body " + body +
+                                "/Element/Degree=" + variant.substr(5, 1));
+        }
+      if (nurbs)
+        overrides.push_back("Body cylinder/Mesh/File=meshes/quarter_disk_p" +
+                            variant.substr(5, 1) + ".nurbs");
+      const SceneDescription scene =
+        SceneReader::read_file(scene_file, overrides);
+      Timer      timer;
+      Simulation simulation(scene);
+      simulation.run();
+      TradePoint point;
+      point.wall_seconds      = timer.wall_time();
+      point.newton_iterations = simulation.statistics().newton_iterations;
+      for (const std::string body : {"cylinder", "block"})
+        point.dofs += simulation.body(body).n_unknowns();
+
+      const auto &pairs = simulation.contact().contact_pairs();
+      if (pairs.size() != 1)
+        throw InputError(scene_file,
+                         "the trade study's Hertz measure needs one "
+                         "contact pair, the cylinder's arc on the flat");
+      const ContactPair &pair  = *pairs[0];
+      const auto        &nodes = pair.nodes();
+      // Reference tributary lengths (faces), or collocation areas.
+      std::vector<double> tributary(nodes.size(), 0.);
+      for (const auto &[a, b] : pair.slave_faces())
+        {
+          const double face =
+            nodes[a].reference_position.distance(nodes[b].reference_position);
+          tributary[a] += 0.5 * face;
+          tributary[b] += 0.5 * face;
+        }
+      double       load = 0., active = 0.;
+      unsigned int axis = 0;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        {
+          if (nodes[k].collocation_area != 0.)
+            tributary[k] = nodes[k].collocation_area;
+          if (nodes[k].active)
+            {
+              load += 2. * pair.reported_force(nodes[k])[1];
+              ++active;
+            }
+          if (std::abs(nodes[k].reference_position[0]) <
+              std::abs(nodes[axis].reference_position[0]))
+            axis = k;
+        }
+      point.active_nodes = active;
+      if (std::abs(nodes[axis].reference_position[0]) > 1e-12 || load <= 0.)
+        throw InputError(scene_file,
+                         "the trade study's Hertz measure needs a quarter "
+                         "cylinder pressed on the flat with a slave point "
+                         "on its axis x = 0");
+      // Both bodies' material is the cylinder's (checked): E* = E / (2 (1 -
+      // nu^2)) in plane strain.
+      const auto material_of = [&](const std::string &name) {
+        for (const auto &body : scene.bodies)
+          if (body.name == name)
+            return body.material;
+        throw InputError(scene_file,
+                         "the trade study's Hertz measure needs the bodies "
+                         "'cylinder' and 'block'");
+      };
+      const MaterialDescription material = material_of("cylinder");
+      const MaterialDescription other    = material_of("block");
+      if (material.young_modulus != other.young_modulus ||
+          material.poisson_ratio != other.poisson_ratio)
+        throw InputError(scene_file,
+                         "the trade study's Hertz measure needs the cylinder "
+                         "and the block of one material");
+      const double nu     = material.poisson_ratio;
+      const double E_star = material.young_modulus / (2. * (1. - nu * nu));
+      const double radius = settings.at(0);
+      const double a      = std::sqrt(4. * load * radius / (M_PI * E_star));
+      const double p0     = 2. * load / (M_PI * a);
+      const double measured =
+        pair.reported_reaction(nodes[axis])[1] / tributary[axis];
+      point.value = std::abs(measured - p0) / p0 * 100.;
+      return point;
+    }
   } // namespace
 
 
@@ -248,7 +372,8 @@ namespace glissade
                                                  "case1",
                                                  "case2",
                                                  "case3",
-                                                 "case3_torque"};
+                                                 "case3_torque",
+                                                 "hertz"};
     return all;
   }
 
@@ -264,7 +389,8 @@ namespace glissade
       {"case1", "tip displacement, error against the reference (%)"},
       {"case2", "corner contact-force roughness"},
       {"case3", "worst contact-force spread (%)"},
-      {"case3_torque", "largest spurious torque, |T| / (R sum |f|) (%)"}};
+      {"case3_torque", "largest spurious torque, |T| / (R sum |f|) (%)"},
+      {"hertz", "peak pressure p0, error against Hertz's (%)"}};
     return names.at(measure);
   }
 
@@ -307,8 +433,14 @@ namespace glissade
                                                    "mortar",
                                                    "nurbs2-mortar",
                                                    "nurbs3-mortar"};
+    // (Hertz: Q4 or Hermite bodies with node-to-segment on the flat's
+    // faceted, B-spline or Hermite top; Q4 with mortar; NURBS with mortar)
+    static const std::vector<std::string> hertz = {
+      "q4", "bspline", "hermite", "mortar", "nurbs2-mortar", "nurbs3-mortar"};
     if (measure == "table1")
       return table1;
+    if (measure == "hertz")
+      return hertz;
     if (measure.rfind("geometric", 0) == 0)
       return geometric;
     if (measure.rfind("case3", 0) == 0)
@@ -336,6 +468,8 @@ namespace glissade
     if (measure == "case3" || measure == "case3_torque")
       return case3_point(
         measure, discretisation, n, scene, settings, output_directory);
+    if (measure == "hertz")
+      return hertz_point(discretisation, n, scene, settings, output_directory);
     throw InputError("Trade study/Measures",
                      "unknown measure '" + measure + "'");
   }
