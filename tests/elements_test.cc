@@ -2,6 +2,7 @@
 // and the paper's static test of figs 9-11.
 
 #include <glissade/body/body_measures.h>
+#include <glissade/body/boundary_conditions.h>
 #include <glissade/io/plotting.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
@@ -9,6 +10,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <stdexcept>
 
 #include "test_tools.h"
 
@@ -322,4 +325,81 @@ GLISSADE_TEST(hermite_static)
   check(largest_jump["q8"] > largest_jump["q1"],
         "Q8 should break the slope more than Q4");
   check(largest_jump["q1"] > 1e-6, "Q4 should break the slope");
+}
+
+
+
+namespace
+{
+  /** u at a mesh vertex of a body (its value dofs). */
+  Tensor<1, 2>
+  displacement_at_vertex(const Body &body, const Point<2> &where)
+  {
+    const auto &vertices = body.triangulation().get_vertices();
+    for (unsigned int v = 0; v < vertices.size(); ++v)
+      if (vertices[v].distance(where) < 1e-12)
+        {
+          const auto dofs = BoundaryConditions::vertex_dofs(body.dof_handler(),
+                                                            body.space(),
+                                                            v);
+          return Tensor<1, 2>(
+            {body.displacement()(dofs[0]), body.displacement()(dofs[1])});
+        }
+    throw std::runtime_error("no vertex there");
+  }
+} // namespace
+
+// A symmetry line on Hermite elements: the block [-1, 1] x [0, 1] squeezed
+// by a top displacement symmetric in x, and its right half with 'left:
+// symmetry', must give the same displacements (the whole model's discrete
+// answer is symmetric: on x = 0 its u_x, d u_x / dy and d u_y / dx are
+// zero, which is what the half model holds). 'left: x', a roller, holds
+// u_x and d u_x / dy only: d u_y / dx is free and the half model is
+// another one (Hertz's quarter cylinder: p0 23 % low on its axis).
+GLISSADE_TEST(hermite_symmetry_line)
+{
+  const auto run = [](const std::string &corner_1,
+                      const std::string &subdivisions,
+                      const std::string &axis) {
+    const std::string conditions =
+      "  set Fixed = bottom: xy" + axis +
+      "\n  set Prescribed displacement = top: y: -0.05*(1 - x*x)*t";
+    auto simulation = std::make_unique<Simulation>(SceneReader::read_string(
+      "subsection Scene\n set Bodies = block\nend\n" +
+        rectangle_body(
+          "block", corner_1, "1, 1", subdivisions, "hermite", conditions) +
+        "subsection Newton\n set Residual tolerance = 1e-12\n"
+        " set Displacement tolerance = 1e-12\nend\n"
+        "subsection Output\n set Progress = false\nend\n",
+      "symmetry line"));
+    simulation->advance_to(1., "increment 1");
+    return simulation;
+  };
+  const auto whole    = run("-1, 0", "8, 4", "");
+  const auto mirrored = run("0, 0", "4, 4", "; left: symmetry");
+  const auto roller   = run("0, 0", "4, 4", "; left: x");
+  double     worst = 0., roller_worst = 0., largest = 0.;
+  for (const Point<2> X : {Point<2>(0., 1.),
+                           Point<2>(0.5, 1.),
+                           Point<2>(1., 0.5),
+                           Point<2>(0., 0.5),
+                           Point<2>(0.75, 0.25)})
+    {
+      const Tensor<1, 2> u = displacement_at_vertex(whole->body("block"), X);
+      worst                = std::max(
+        worst, (displacement_at_vertex(mirrored->body("block"), X) - u).norm());
+      roller_worst =
+        std::max(roller_worst,
+                 (displacement_at_vertex(roller->body("block"), X) - u).norm());
+      largest = std::max(largest, u.norm());
+    }
+  std::cout << "  largest |u| " << largest
+            << "; the half model off the whole one by " << worst
+            << " with 'symmetry', by " << roller_worst << " with a roller"
+            << std::endl;
+  check(largest > 0.01, "the block is squeezed");
+  check(worst <= 1e-10 * largest,
+        "the half model with a symmetry line is not the whole one");
+  check(roller_worst > 1e-6 * largest,
+        "a roller on Hermite elements is not a symmetry line");
 }

@@ -320,6 +320,12 @@ namespace glissade
           locate_on_boundary_face(item.where, tria, body.name, d.entry);
         item.components      = {{d.x_component, d.y_component}};
         item.all_derivatives = d.all_derivatives;
+        if (d.symmetry)
+          {
+            item.symmetry_normal =
+              symmetry_normal(item.where, tria, body.name, d.entry);
+            item.components[item.symmetry_normal] = true;
+          }
         if (d.direction != DirichletDescription::Direction::cartesian)
           {
             if (!space.capabilities().vertex_dofs_only)
@@ -433,6 +439,55 @@ namespace glissade
 
 
 
+  int
+  BoundaryConditions::symmetry_normal(const Location         &where,
+                                      const Triangulation<2> &tria,
+                                      const std::string      &body_name,
+                                      const std::string      &entry)
+  {
+    // Every face of the boundary along x (normal y), or every one along y
+    // (normal x), all on one line.
+    const std::string what = "body '" + body_name + "': a symmetry line ";
+    if (where.is_vertex)
+      throw InputError(entry, what + "is a boundary, not a point");
+    int    normal = -1;
+    double level = 0., size = 0.;
+    bool   straight = true, found = false;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == where.boundary)
+          {
+            const Point<2> a = cell->face(f)->vertex(0),
+                           b = cell->face(f)->vertex(1);
+            size             = std::max(size, a.distance(b));
+            const int along_x =
+              std::abs(a[1] - b[1]) <= 1e-10 * a.distance(b) ? 1 : 0;
+            const int along_y =
+              std::abs(a[0] - b[0]) <= 1e-10 * a.distance(b) ? 1 : 0;
+            const int here = along_x ? 1 : along_y ? 0 : -1;
+            if (!found)
+              {
+                normal = here;
+                level  = here >= 0 ? a[here] : 0.;
+                found  = true;
+              }
+            straight = straight && here >= 0 && here == normal &&
+                       std::abs(a[here] - level) <= 1e-10 * (1. + size) &&
+                       std::abs(b[here] - level) <= 1e-10 * (1. + size);
+          }
+    if (!found)
+      throw InputError(entry, what + "needs faces on its boundary");
+    if (!straight)
+      throw InputError(entry,
+                       what +
+                         "is a straight boundary along x or y; this one is "
+                         "not (a roller on another line: n)");
+    return normal;
+  }
+
+
+
   void
   BoundaryConditions::make_constraints(
     const DoFHandler<2>             &dof_handler,
@@ -510,12 +565,19 @@ namespace glissade
                 these.push_back({dofs[c], {}, item.displacement->value(X, c)});
           }
         else
-          space.boundary_relations(dof_handler,
-                                   item.where.boundary,
-                                   *item.displacement,
-                                   item.components,
-                                   item.all_derivatives,
-                                   these);
+          {
+            space.boundary_relations(dof_handler,
+                                     item.where.boundary,
+                                     *item.displacement,
+                                     item.components,
+                                     item.all_derivatives,
+                                     these);
+            if (item.symmetry_normal >= 0)
+              space.symmetry_relations(dof_handler,
+                                       item.where.boundary,
+                                       item.symmetry_normal,
+                                       these);
+          }
         for (const auto &r : these)
           relations[r.dof] = r;
       }

@@ -109,6 +109,15 @@ namespace glissade
 
 
   void
+  ElementSpace::symmetry_relations(const DoFHandler<2> &,
+                                   const types::boundary_id,
+                                   const unsigned int,
+                                   std::vector<DofRelation> &) const
+  {}
+
+
+
+  void
   ElementSpace::boundary_relations(const DoFHandler<2>       &dof_handler,
                                    const types::boundary_id   boundary,
                                    const Function<2>         &g,

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace glissade
 {
@@ -329,5 +330,33 @@ namespace glissade
                   {dy_dof, {{dx_dof, t[0] / t[1]}}, target / t[1]});
             }
         }
+  }
+
+
+
+  void
+  HermiteSpace::symmetry_relations(const DoFHandler<2>      &dof_handler,
+                                   const types::boundary_id  boundary,
+                                   const unsigned int        normal,
+                                   std::vector<DofRelation> &relations) const
+  {
+    // Node dofs 3 c, 3 c + 1, 3 c + 2: u_c, d u_c / dx, d u_c / dy; the
+    // tangential component's derivative along the normal is 3 t + 1 + n.
+    const unsigned int                   tangential = 1 - normal;
+    const unsigned int                   k = 3 * tangential + 1 + normal;
+    std::vector<types::global_dof_index> local(numbering.n_dofs_per_cell());
+    std::set<types::global_dof_index>    held;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            cell->face(f)->boundary_id() == boundary)
+          {
+            cell->get_dof_indices(local);
+            for (const unsigned int v : {0u, 1u})
+              held.insert(local[numbering.component_to_system_index(
+                k, GeometryInfo<2>::face_to_cell_vertices(f, v))]);
+          }
+    for (const auto dof : held)
+      relations.push_back({dof, {}, 0.});
   }
 } // namespace glissade

@@ -35,8 +35,12 @@ namespace glissade
           "fixes values and tangential derivatives); or n (t): zero "
           "displacement normal (tangential) to the boundary at each node, "
           "along the reference configuration's normal there (a roller on a "
-          "curved boundary; q1 bodies). Example: 'left: xy; point(0, 0): y; "
-          "outer: n'.");
+          "curved boundary; q1 bodies); or symmetry: a symmetry line (a "
+          "straight boundary along x or y): its normal displacement zero, "
+          "and on Hermite elements its tangential displacement's normal "
+          "derivative too, which a mirror image continuous in slope needs "
+          "(x or y alone leaves it free: a roller). Example: 'left: xy; "
+          "point(0, 0): y; outer: n; axis: symmetry'.");
         prm.declare_entry(
           "Prescribed displacement",
           "",
@@ -109,6 +113,14 @@ namespace glissade
                      const std::string    &where)
     {
       const std::string c = text::trim(components);
+      if (c == "symmetry" && item.kind == DirichletDescription::Kind::fixed)
+        {
+          item.symmetry        = true;
+          item.x_component     = false;
+          item.y_component     = false;
+          item.all_derivatives = false;
+          return;
+        }
       if ((c == "n" || c == "t") &&
           item.kind == DirichletDescription::Kind::fixed)
         {
@@ -125,7 +137,8 @@ namespace glissade
                          "components must be x, y, xy or all" +
                            std::string(item.kind ==
                                            DirichletDescription::Kind::fixed ?
-                                         ", or n or t (normal, tangential)" :
+                                         ", or n or t (normal, tangential), "
+                                         "or symmetry" :
                                          "") +
                            ", not '" + c + "'");
       item.all_derivatives = (c == "all");

@@ -179,14 +179,24 @@ namespace glissade
   private:
     struct DirichletItem
     {
-      Location                             where;
-      std::array<bool, 2>                  components;
-      bool                                 all_derivatives;
+      Location            where;
+      std::array<bool, 2> components;
+      bool                all_derivatives;
+      /** A symmetry line: the component normal to it (0 x, 1 y), or -1. */
+      int                                  symmetry_normal = -1;
       std::shared_ptr<dealii::Function<2>> displacement; // 2 components
       /** n or t supports: each node and the direction held there. */
       std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>>
         directed_vertices;
     };
+
+    /** A symmetry line's normal component (0 x, 1 y): its boundary's faces
+     *  all on one line along y (0) or along x (1), or the entry refused. */
+    static int
+    symmetry_normal(const Location                 &where,
+                    const dealii::Triangulation<2> &tria,
+                    const std::string              &body_name,
+                    const std::string              &entry);
 
     /** The nodes of a location and the (unit) direction d with d . u = 0. */
     static std::vector<std::pair<unsigned int, dealii::Tensor<1, 2>>>

@@ -102,7 +102,15 @@ namespace glissade
       normal,
       tangential
     };
-    Direction                direction = Direction::cartesian;
+    Direction direction = Direction::cartesian;
+    /**
+     * "symmetry" (Fixed only): a straight boundary along x or y is a
+     * symmetry line: the component normal to it is held (BoundaryConditions
+     * finds which) and, on a space whose dofs include derivatives, the
+     * tangential component's normal derivative (ElementSpace::
+     * symmetry_relations). x_component and y_component are then false.
+     */
+    bool                     symmetry = false;
     std::vector<std::string> expressions; // displacement: one per component
     dealii::Point<2>         rotation_center;
     std::string              angle_expression; // rotation, radians

@@ -202,6 +202,20 @@ namespace glissade
                        const bool                       all_derivatives,
                        std::vector<DofRelation>        &relations) const;
 
+    /**
+     * What a symmetry line (a straight boundary, normal along component
+     * `normal`) holds beyond the normal component that boundary_relations
+     * holds: nothing where the dofs are values (the default), and on a
+     * space whose dofs include derivatives the tangential component's
+     * normal derivative, zero, so that the mirror image continues the
+     * field with its slope (HermiteSpace).
+     */
+    virtual void
+    symmetry_relations(const dealii::DoFHandler<2>     &dof_handler,
+                       const dealii::types::boundary_id boundary,
+                       const unsigned int               normal,
+                       std::vector<DofRelation>        &relations) const;
+
   private:
     /**
      * The dofs of one component on one boundary and the points their

@@ -99,6 +99,13 @@ namespace glissade
                        const bool                       all_derivatives,
                        std::vector<DofRelation> &relations) const override;
 
+    /** d u_t / d n = 0 at each node of the symmetry line. */
+    void
+    symmetry_relations(const dealii::DoFHandler<2>     &dof_handler,
+                       const dealii::types::boundary_id boundary,
+                       const unsigned int               normal,
+                       std::vector<DofRelation> &relations) const override;
+
     /** The element of a cell (its geometry), by active cell index. */
     const HermiteQuadrilateral &
     element(const unsigned int active_cell_index) const
