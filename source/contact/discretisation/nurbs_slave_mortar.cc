@@ -15,6 +15,7 @@
 #include <glissade/fe/nurbs_space.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -220,6 +221,10 @@ namespace glissade
         double       s;
         unsigned int control; // numbered over all slave curves
       };
+
+      /** The span's end points on the current slave curve. */
+      std::array<Point<2>, 2>
+      span_ends(const Span &span) const;
 
       /**
        * Master segment i faces the span and lies within `reach` of it
@@ -460,17 +465,25 @@ namespace glissade
 
 
 
+    std::array<Point<2>, 2>
+    NurbsSlaveMortar::span_ends(const Span &span) const
+    {
+      const NurbsCurve &curve = *slave_curves[span.curve].curve;
+      const auto        a     = curve.value(span.segment, 0.),
+                 b            = curve.value(span.segment, 1.);
+      return {{Point<2>(a[0], a[1]), Point<2>(b[0], b[1])}};
+    }
+
+
+
     bool
     NurbsSlaveMortar::within_reach(const Span        &span,
                                    const unsigned int i,
                                    const double       reach) const
     {
-      const NurbsCurve &curve = *slave_curves[span.curve].curve;
-      const auto        a     = curve.value(span.segment, 0.),
-                 b            = curve.value(span.segment, 1.);
-      const Point<2>  xa(a[0], a[1]), xb(b[0], b[1]);
-      const Point<2> &yc = master_positions[i],
-                     &yd = master_positions[(i + 1) % master_positions.size()];
+      const auto [xa, xb] = span_ends(span);
+      const Point<2> &yc  = master_positions[i],
+                     &yd  = master_positions[(i + 1) % master_positions.size()];
       // The chains have their bodies on the right: the left normals of
       // the chords point out of each, and face each other.
       const Tensor<1, 2> slave_out({-(xb - xa)[1], (xb - xa)[0]});
@@ -491,12 +504,9 @@ namespace glissade
     {
       if (!within_reach(span, i, reach))
         return false;
-      const NurbsCurve &curve = *slave_curves[span.curve].curve;
-      const auto        a     = curve.value(span.segment, 0.),
-                 b            = curve.value(span.segment, 1.);
-      const Point<2>  xa(a[0], a[1]), xb(b[0], b[1]);
-      const Point<2> &yc = master_positions[i],
-                     &yd = master_positions[(i + 1) % master_positions.size()];
+      const auto [xa, xb] = span_ends(span);
+      const Point<2> &yc  = master_positions[i],
+                     &yd  = master_positions[(i + 1) % master_positions.size()];
       const auto chord_estimate = [&](const Point<2> &y) {
         return (y - xa) * (xb - xa) / (xb - xa).norm_square();
       };
@@ -747,9 +757,8 @@ namespace glissade
       for (unsigned int f = 0; f < spans.size(); ++f)
         {
           const NurbsCurve &curve = *slave_curves[spans[f].curve].curve;
-          const auto        a     = curve.value(spans[f].segment, 0.),
-                     b            = curve.value(spans[f].segment, 1.);
-          chord[f]                = std::hypot(b[0] - a[0], b[1] - a[1]);
+          const auto [a, b]       = span_ends(spans[f]);
+          chord[f]                = a.distance(b);
           for (unsigned int i = 0; i < n_segments && reach[f] < 0.; ++i)
             if (within_reach(spans[f], i, search_distance))
               reach[f] = search_distance;
