@@ -30,6 +30,23 @@ using namespace glissade_tests;
 
 namespace
 {
+  /** prm/hertz_cylinder_nurbs.prm's entries for NURBS of degree p (its
+   *  quarter disk's file and both bodies' Degree), and `more`. */
+  std::vector<std::string>
+  hertz_nurbs_of_degree(const std::string              &p,
+                        const std::vector<std::string> &more)
+  {
+    std::vector<std::string> entries = {
+      "Body cylinder/Mesh/File=meshes/quarter_disk_p" + p + ".nurbs",
+      "Body cylinder/Element/Degree=" + p,
+      "Body block/Element/Degree=" + p};
+    entries.insert(entries.end(), more.begin(), more.end());
+    return entries;
+  }
+} // namespace
+
+namespace
+{
   /**
    * A NURBS slave's points (the arc's Greville points, one per control
    * point A) as Hertz's points. A point's pressure is its multiplier
@@ -104,13 +121,11 @@ GLISSADE_TEST(nurbs_contact_hertz_cylinder_on_flat)
       const std::string p = std::to_string(degree);
       Simulation        simulation(SceneReader::read_file(
         source_path("prm/hertz_cylinder_nurbs.prm"),
-        {"Body cylinder/Mesh/File=meshes/quarter_disk_p" + p + ".nurbs",
-                "Body cylinder/Element/Degree=" + p,
-                "Body block/Element/Degree=" + p,
-                "Contact touch/Discretisation=" + discretisation,
-                "Output/Directory=nurbs_hertz_cylinder_p" + p,
-                "Output/VTU interval=0",
-                "Output/Progress=false"}));
+        hertz_nurbs_of_degree(p,
+                              {"Contact touch/Discretisation=" + discretisation,
+                                      "Output/Directory=nurbs_hertz_cylinder_p" + p,
+                                      "Output/VTU interval=0",
+                                      "Output/Progress=false"})));
       simulation.run();
       const ContactPair &pair   = *simulation.contact().contact_pairs()[0];
       const double       E_star = 200. / (2. * (1. - 0.3 * 0.3));
@@ -155,17 +170,16 @@ GLISSADE_TEST(nurbs_mortar_points_integrated_whole)
       const std::string p = std::to_string(degree);
       Simulation        simulation(SceneReader::read_file(
         source_path("prm/hertz_cylinder_nurbs.prm"),
-        {"Body cylinder/Mesh/File=meshes/quarter_disk_p" + p + ".nurbs",
-                "Body cylinder/Element/Degree=" + p,
-                "Body block/Element/Degree=" + p,
-                "Body cylinder/Mesh/Subdivisions=240, 4",
-                "Body block/Mesh/Subdivisions=240, 4",
-                "Body cylinder/Boundary conditions/Prescribed displacement="
-                       "top: y: 0",
-                "Load program/Stage increments=1",
-                "Output/Directory=nurbs_mortar_points_whole_p" + p,
-                "Output/VTU interval=0",
-                "Output/Progress=false"}));
+        hertz_nurbs_of_degree(
+          p,
+          {"Body cylinder/Mesh/Subdivisions=240, 4",
+                  "Body block/Mesh/Subdivisions=240, 4",
+                  "Body cylinder/Boundary conditions/Prescribed displacement="
+                         "top: y: 0",
+                  "Load program/Stage increments=1",
+                  "Output/Directory=nurbs_mortar_points_whole_p" + p,
+                  "Output/VTU interval=0",
+                  "Output/Progress=false"})));
       simulation.run();
       const ContactPair &pair      = *simulation.contact().contact_pairs()[0];
       unsigned int       projected = 0;

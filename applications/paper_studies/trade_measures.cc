@@ -39,6 +39,15 @@ namespace glissade
       return {"Body beam/Element/Space=" + spaces.at(discretisation)};
     }
 
+    /** A point's run: no progress, no VTU, its own output directory. */
+    std::vector<std::string>
+    quiet_output(const std::string &directory)
+    {
+      return {"Output/Progress=false",
+              "Output/VTU interval=0",
+              "Output/Directory=" + directory};
+    }
+
     /** "n, n/15": the paper's beam and ring aspect (120 x 8). */
     std::string
     along_and_across(const unsigned int n)
@@ -97,14 +106,12 @@ namespace glissade
                  const std::string &scene_file,
                  const std::string &output_directory)
     {
-      std::vector<std::string> overrides = element_of(discretisation);
-      for (const std::string &entry :
-           {"Body beam/Mesh/Subdivisions=" + along_and_across(n),
-            std::string("Output/Progress=false"),
-            std::string("Output/VTU interval=0"),
-            "Output/Directory=" + output_directory + "/table1/" +
-              discretisation + "_" + std::to_string(n)})
+      std::vector<std::string> overrides =
+        quiet_output(output_directory + "/table1/" + discretisation + "_" +
+                     std::to_string(n));
+      for (const std::string &entry : element_of(discretisation))
         overrides.push_back(entry);
+      overrides.push_back("Body beam/Mesh/Subdivisions=" + along_and_across(n));
       const SceneDescription scene =
         SceneReader::read_file(scene_file, overrides);
       Timer      timer;
@@ -263,14 +270,11 @@ namespace glissade
                                   variant == "hermite" ? "hermite" :
                                                          "faceted";
       const bool        mortar  = variant.find("mortar") != std::string::npos;
-      std::vector<std::string> overrides = {
-        "Contact touch/Surface=" + surface,
-        std::string("Contact touch/Discretisation=") +
-          (mortar ? "mortar" : "node-to-segment"),
-        std::string("Output/Progress=false"),
-        std::string("Output/VTU interval=0"),
-        "Output/Directory=" + output_directory + "/hertz/" + variant + "_" +
-          std::to_string(n)};
+      std::vector<std::string> overrides = quiet_output(
+        output_directory + "/hertz/" + variant + "_" + std::to_string(n));
+      overrides.push_back("Contact touch/Surface=" + surface);
+      overrides.push_back(std::string("Contact touch/Discretisation=") +
+                          (mortar ? "mortar" : "node-to-segment"));
       for (const std::string body : {"cylinder", "block"})
         {
           overrides.push_back("Body " + body + "/Element/Space=" + space);
