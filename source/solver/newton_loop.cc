@@ -5,6 +5,7 @@
 
 #include <glissade/base/debug_log.h>
 #include <glissade/base/freed_memory.h>
+#include <glissade/base/memory_use.h>
 #include <glissade/base/processes.h>
 #include <glissade/base/timing_sections.h>
 #include <glissade/solver/newton_criterion.h>
@@ -76,6 +77,7 @@ namespace glissade
         double     residual = 0., scale = 0.;
         const bool with_tangent = !affine_bodies || iteration == 0;
         const bool admissible = assemble_bodies(residual, scale, with_tangent);
+        log_memory_use("the assembly");
         // (on several processes: each decision below is taken alike by all
         // of them only if they hold the same numbers)
         processes::check_identical(residual, "the Newton residual");
@@ -144,6 +146,7 @@ namespace glissade
         std::vector<Vector<double>> du(bodies.size());
         if (!predict(previous_tangent, du))
           return false;
+        log_memory_use("the factorisations");
         if (!contact.empty() && !contact.correct(du))
           {
             cause = "the contact problem: " + contact.last_result().message;
@@ -152,6 +155,8 @@ namespace glissade
                         << std::endl;
             return false;
           }
+        if (!contact.empty())
+          log_memory_use("the contact correction");
         double last_increment = 0., displacement_norm = 0.;
         update_bodies(du, last_increment, displacement_norm);
         criterion.add_correction(last_increment, displacement_norm);
