@@ -50,12 +50,18 @@ exec /usr/bin/time -f '%e %M' -o "$work/time.\${OMPI_COMM_WORLD_RANK:-one}" "\$@
 WRAP
 chmod +x "$work/timed.sh"
 
+# (an MPI without Open MPI's monitoring component runs without it, and the
+# bytes are not printed)
+monitoring=()
+if ompi_info 2>/dev/null | grep -q "pml: monitoring"; then
+  monitoring=(--mca pml_monitoring_enable 2 --mca pml_monitoring_enable_output 3)
+fi
 monitored() {
   local label=$1
   shift
   mpirun --allow-run-as-root --oversubscribe -np "$n" -x GLISSADE_DEBUG=1 \
-    --mca pml_monitoring_enable 2 --mca pml_monitoring_enable_output 3 \
-    --mca pml_monitoring_filename "$work/sent.$label" "$@"
+    "${monitoring[@]}" \
+    ${monitoring:+--mca pml_monitoring_filename "$work/sent.$label"} "$@"
 }
 run one env GLISSADE_DEBUG=1 "$work/timed.sh" "$program" "${scene[@]}" \
   --set "Output/Directory=$work/one"
