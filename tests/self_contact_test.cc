@@ -352,10 +352,15 @@ GLISSADE_TEST(self_contact_inner_wall_as_two_halves)
         {"inner_top", "inner_bottom"},
         {"inner_bottom", "inner_top"}})
     {
+      // (Newton to 1e-9: the halves' residual stalls at 1.2-1.9e-10 from t
+      // = 0.9125 on with another BLAS kernel, round-off of the folded wall)
+      std::vector<std::string> overrides =
+        own_directory(slave + " on " + master);
+      overrides.push_back("Newton/Residual tolerance=1e-9");
       Simulation simulation(
         SceneReader::read_string(pinched_ring("faceted", false, slave, master),
                                  slave + " on " + master,
-                                 own_directory(slave + " on " + master)));
+                                 overrides));
       const auto &pairs = simulation.contact().contact_pairs();
       plates.emplace_back();
       for (unsigned int k = 1; k <= 76; ++k)
