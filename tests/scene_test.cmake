@@ -19,7 +19,9 @@
 #   PARAMETERS  `glissade --print-parameters` equals the file INPUT.
 #   PROCESSES   run on one process and under mpirun on PROCESSES: the same
 #               figures (tests/compare_processes.py; with STATUSES, the
-#               stick/slip statuses too). With STOP, the run on PROCESSES
+#               stick/slip statuses too; to TOLERANCE of each figure's
+#               scale if given, else compare_processes.py's 1e-10). With
+#               STOP, the run on PROCESSES
 #               stops after increment STOP and is continued by --restart on
 #               PROCESSES + 1 processes.
 #   EMPTY_AFTER a directory that must exist and hold no file after the runs
@@ -337,9 +339,13 @@ elseif(MODE STREQUAL "PROCESSES")
   if(STATUSES)
     set(statuses --statuses)
   endif()
+  set(tolerance "")
+  if(TOLERANCE)
+    set(tolerance --tolerance=${TOLERANCE})
+  endif()
   execute_process(
     COMMAND ${PYTHON} ${SOURCE_DIR}/tests/compare_processes.py
-            ${WORKDIR}/one ${WORKDIR}/many ${statuses}
+            ${WORKDIR}/one ${WORKDIR}/many ${statuses} ${tolerance}
     RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message("${out}${err}")
   if(NOT status EQUAL 0)
