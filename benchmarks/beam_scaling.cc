@@ -4,11 +4,10 @@
 // memory, one line, so that a loop over sizes gives a table. Each size runs
 // in its own process so that "peak memory" belongs to that size alone.
 
+#include <glissade/base/memory_use.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-
-#include <sys/resource.h>
 
 #include <cstdio>
 #include <iostream>
@@ -44,8 +43,6 @@ main(int argc, char **argv)
       const RunStatistics &s     = simulation.statistics();
       const unsigned int   n     = std::max(1u, s.newton_iterations);
 
-      rusage usage;
-      getrusage(RUSAGE_SELF, &usage);
       std::printf("%9u dofs  %5ux%-4u  assembly %8.3f s/it  factorization "
                   "%8.3f s/it  Newton its %2u  %8.2f s/increment  peak "
                   "memory %7.1f MB  max|u| %.4f\n",
@@ -56,7 +53,7 @@ main(int argc, char **argv)
                   s.factorization_seconds / n,
                   s.newton_iterations,
                   total / 2.,
-                  usage.ru_maxrss / 1024.,
+                  memory_use().peak / (1024. * 1024.),
                   max_displacement(simulation.body("beam")));
     }
   catch (const std::exception &e)

@@ -11,11 +11,10 @@
 //
 // surface: the master's Surface entry, faceted (default) or bspline.
 
+#include <glissade/base/memory_use.h>
 #include <glissade/body/body_measures.h>
 #include <glissade/scene/scene_reader.h>
 #include <glissade/solver/simulation.h>
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,9 +50,7 @@ namespace
   double
   peak_memory_gib()
   {
-    rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    return usage.ru_maxrss / (1024. * 1024.);
+    return memory_use().peak / (1024. * 1024. * 1024.);
   }
 } // namespace
 

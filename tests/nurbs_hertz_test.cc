@@ -43,10 +43,8 @@ namespace
     entries.insert(entries.end(), more.begin(), more.end());
     return entries;
   }
-} // namespace
 
-namespace
-{
+
   /**
    * A NURBS slave's points (the arc's Greville points, one per control
    * point A) as Hertz's points. A point's pressure is its multiplier
