@@ -134,11 +134,6 @@ namespace glissade
       {description, slave, master, *master_surface, slave_nodes, slave_ids});
     if (self_contact)
       {
-        if (description.discretisation != "node-to-segment")
-          throw InputError(entry + "/Discretisation",
-                           "self-contact (Master body = Slave body) is "
-                           "implemented for node-to-segment contact, not " +
-                             description.discretisation);
         // A node may see the surface no deeper behind than half a slave
         // face: deeper, it would see through the body to its back.
         double length = 0.;

@@ -114,8 +114,9 @@ namespace glissade
                       "false",
                       Patterns::Bool(),
                       "Each listed body's boundary against itself too: a "
-                      "pair '<body> on itself' (node-to-segment), as a pair "
-                      "whose Master body is its Slave body.");
+                      "pair '<body> on itself' (node-to-segment or mortar, "
+                      "as Discretisation says), as a pair whose Master body "
+                      "is its Slave body.");
     ContactDescription::declare_settings(prm);
     prm.leave_subsection();
   }

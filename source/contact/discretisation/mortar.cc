@@ -230,6 +230,30 @@ namespace glissade
       std::vector<std::array<unsigned int, 2>> faces;
       std::vector<std::vector<unsigned int>>   faces_of_point;
 
+      /**
+       * Self-contact (the master is the slave's own boundary): each slave
+       * face's segment on the master chain (-1 where the face is not on
+       * it), and which segments a face may integrate against
+       * (sees_in_self_contact()).
+       */
+      bool             self_contact = false;
+      std::vector<int> segment_of_face;
+      /** Half the slave faces' mean length (in the reference state). */
+      double penetration_limit = 0.;
+
+      /**
+       * In self-contact, whether slave face f may meet master segment i:
+       * not its own segment, nor the two next to it on each side (whose
+       * points face the same way as the face, or nearly), and only the
+       * segments that come later along the chain, so that two stretches of
+       * the boundary that face each other are held once, by the earlier
+       * stretch's faces (as node-to-segment holds them:
+       * CurveSurface::project_facing). Held twice, each node-on-node pair
+       * would be constrained twice and the condensed problem singular.
+       */
+      bool
+      sees_in_self_contact(unsigned int f, unsigned int i) const;
+
       std::vector<NodeState> state;
       /** The current positions of the slave and master points. */
       std::vector<Point<2>> slave_positions, master_positions;
@@ -312,6 +336,56 @@ namespace glissade
               std::to_string(slave_points[j].reference[1]) + ") joins " +
               std::to_string(faces_of_point[j].size()) + " faces");
       state.resize(slave_points.size());
+
+      // Self-contact: each face's place on the chain.
+      self_contact = master == &slave;
+      if (self_contact)
+        {
+          std::map<unsigned int, int> chain_place;
+          for (unsigned int k = 0; k < chain->vertices.size(); ++k)
+            chain_place[chain->vertices[k]] = k;
+          std::vector<int> place_of_point(slave_points.size(), -1);
+          for (const auto &[vertex, point] : point_of_vertex)
+            if (const auto at = chain_place.find(vertex);
+                at != chain_place.end())
+              place_of_point[point] = at->second;
+          double length = 0.;
+          for (const auto &[a, b] : faces)
+            length +=
+              slave_points[a].reference.distance(slave_points[b].reference);
+          penetration_limit =
+            0.5 * length / std::max<std::size_t>(1, faces.size());
+          const int n = chain->vertices.size();
+          segment_of_face.assign(faces.size(), -1);
+          for (unsigned int f = 0; f < faces.size(); ++f)
+            {
+              const int pa = place_of_point[faces[f][0]],
+                        pb = place_of_point[faces[f][1]];
+              if (pa < 0 || pb < 0)
+                continue;
+              const auto next = [&](const int k) {
+                return chain->closed ? (k + 1) % n : k + 1;
+              };
+              if (pb == next(pa))
+                segment_of_face[f] = pa;
+              else if (pa == next(pb))
+                segment_of_face[f] = pb;
+            }
+        }
+    }
+
+
+
+    bool
+    Mortar::sees_in_self_contact(const unsigned int f,
+                                 const unsigned int i) const
+    {
+      const int own = segment_of_face[f];
+      if (own < 0)
+        return true;
+      const int n_segments = chain->vertices.size() - (chain->closed ? 0 : 1);
+      return int(i) >= own + 3 &&
+             (!chain->closed || int(i) + 3 <= own + n_segments);
     }
 
 
@@ -507,6 +581,20 @@ namespace glissade
       const Tensor<1, 2> master_out({-(yd - yc)[1], (yd - yc)[0]});
       if (slave_out * master_out >= 0.)
         return false;
+      if (self_contact)
+        {
+          // Not the face's neighbours, nor an earlier stretch; nor a
+          // segment behind the face by more than half the face: that is
+          // the body's other side, seen through it.
+          if (!sees_in_self_contact(f, i))
+            return false;
+          const double face_length = (xb - xa).norm();
+          const double in_front =
+            std::max((yc - xa) * slave_out, (yd - xa) * slave_out) /
+            face_length;
+          if (in_front < -0.5 * face_length)
+            return false;
+        }
       const double reach =
         search_distance + (xb - xa).norm() + (yd - yc).norm();
       const Point<2> slave_mid = 0.5 * (xa + xb), master_mid = 0.5 * (yc + yd);
@@ -836,6 +924,14 @@ namespace glissade
       ContactLinearization l;
       l.gap  = n * x_minus_y;
       l.slip = t * d;
+      // In self-contact, no deeper behind than half a face: deeper, the
+      // mortar point is the wall's other side seen through the body (at a
+      // fold tighter than a face the slave normals turn by a quarter turn
+      // over a face, and their lines meet the facing stretch far along it),
+      // as node-to-segment's self-contact refuses it
+      // (ContactPair, FacingView::penetration_limit).
+      if (self_contact && l.gap < -penetration_limit)
+        return false;
 
       add_unit_reaction(s, node, n, l.normal_force);
       add_unit_reaction(s, node, t, l.tangential_force);
