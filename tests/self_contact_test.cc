@@ -31,6 +31,19 @@ namespace
   }
 
   /**
+   * The same, with Newton to 1e-9: at t = 1 the folded ring's residual
+   * stalls at 1.5-4.5e-10 under OpenBLAS's Haswell kernel (B-spline
+   * mortar), a verdict round-off would decide at the scene's 1e-10.
+   */
+  std::vector<std::string>
+  own_directory_newton_1e9(const std::string &label)
+  {
+    std::vector<std::string> overrides = own_directory(label);
+    overrides.push_back("Newton/Residual tolerance=1e-9");
+    return overrides;
+  }
+
+  /**
    * A ring (r in [0.7, 1], 96 x 4 Q4 cells) pinched between two rigid
    * plates that close by 0.8 each, until its inner wall is pressed onto
    * itself over a flat stretch: the pair 'inner' is the inner boundary on
@@ -226,7 +239,8 @@ namespace
         runs[found] = std::make_unique<Simulation>(SceneReader::read_string(
           pinched_ring("bspline", found, "inner", "inner", discretisation),
           "ring",
-          own_directory((found ? "found " : "written ") + discretisation)));
+          own_directory_newton_1e9((found ? "found " : "written ") +
+                                   discretisation)));
         for (unsigned int k = 1; k <= 80; ++k)
           runs[found]->advance_to(k / 80., "increment " + std::to_string(k));
       }
@@ -343,7 +357,8 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar)
           Simulation          simulation(SceneReader::read_string(
             pinched_ring(surface, false, "inner", "inner", discretisation),
             "pinched ring",
-            own_directory("pinched " + surface + " " + discretisation)));
+            own_directory_newton_1e9("pinched " + surface + " " +
+                                     discretisation)));
           const auto         &pairs = simulation.contact().contact_pairs();
           std::vector<double> plate_force;
           double              first_contact = -1.;
@@ -409,7 +424,7 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar)
               Simulation halves(SceneReader::read_string(
                 pinched_ring(surface, false, slave, master, "mortar"),
                 "pinched ring",
-                own_directory("pinched mortar " + slave)));
+                own_directory_newton_1e9("pinched mortar " + slave)));
               double     apart = 0.;
               for (unsigned int k = 1; k <= 80; ++k)
                 {
