@@ -595,13 +595,13 @@ GLISSADE_TEST(self_contact_pinched_ring_under_newmark)
 }
 
 // Mortar self-contact under Newmark, as the node-to-segment pair above, to
-// t = 9.25 (the plates closed by 0.74 each, 37 steps after the wall first
-// meets itself): no step whose contact works positively, the forces on
-// the ring summing to zero, no weighted gap below zero, and the plates'
-// force within 5 % of the quasi-static run's at the same squeeze. (Past
-// t = 9.4 Newton converges linearly at the folded wall's tips, where the
-// forces over a step differ most from the end's gradient, as with
-// node-to-segment on the faceted master; doc/contact.md.)
+// t = 10 (the plates closed by 0.8 each): no step whose contact works
+// positively, the forces on the ring summing to zero, no weighted gap
+// below zero, and the plates' force within 3 % of the quasi-static run's
+// at the same squeeze. (Its forces over a step are discrete gradients of
+// the weighted gap's own gradient, which carries the turn of the nodal
+// normals and the change of the mortar weights: with mortar's normal
+// force in their place the run stalled at t = 9.425.)
 GLISSADE_TEST(self_contact_pinched_ring_mortar_under_newmark)
 {
   // (faceted: on the B-spline master the same run takes 100 s, 91 % of it
@@ -616,8 +616,8 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar_under_newmark)
            (at = prm.find("0.8*t")) != std::string::npos;)
         prm.replace(at, 5, "0.08*t");
       prm += "subsection Time integration\n set Scheme = newmark\nend\n"
-             "subsection Load program\n set Stage end times = 9.25\n"
-             " set Stage increments = 370\nend\n";
+             "subsection Load program\n set Stage end times = 10\n"
+             " set Stage increments = 400\nend\n";
       std::vector<std::string> overrides =
         own_directory("pinched mortar newmark " + surface);
       overrides.push_back("Body ring/Material/Density=1");
@@ -633,7 +633,7 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar_under_newmark)
         quasi_static_prm,
         "ring.prm",
         own_directory("pinched mortar newmark reference " + surface)));
-      for (unsigned int k = 1; k <= 74; ++k)
+      for (unsigned int k = 1; k <= 80; ++k)
         quasi_static.advance_to(k / 80., "increment " + std::to_string(k));
       const double reference =
         -quasi_static.contact().contact_pairs()[0]->total_force()[1];
@@ -653,7 +653,7 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar_under_newmark)
             surface + ": the self-contact's forces do not sum to zero");
       check(figures.deepest >= -1e-8 * 0.7,
             surface + ": a weighted gap below zero");
-      check(std::abs(plates - reference) <= 0.05 * reference,
+      check(std::abs(plates - reference) <= 0.03 * reference,
             surface + ": the plates' force is not the quasi-static one");
     }
 }

@@ -365,7 +365,7 @@ namespace glissade
         node.active    = node.projected &&
                       node.gap <= description.alert_distance && can_react(node);
         if (node.projected && slave_body.inertia() != nullptr)
-          node.start_normal_force = node.linearization.normal_force;
+          node.start_normal_force = node.linearization.gap_row;
         if (!node.active)
           {
             node.reaction = {{0., 0.}};

@@ -86,6 +86,13 @@ namespace glissade
                                  const double          slip,
                                  const StepMotion     &motion)
   {
+    // The gradient is the gap's own (its row): node-to-segment's normal
+    // force is that row, mortar's is not (its weighted gap also moves with
+    // the turn of the nodal normal and the change of the mortar weights,
+    // where the gap vector x - y is not along the normal), and forces
+    // that are not the gap's gradient leave the linearised gap wrong by
+    // as much whatever the step (a Newmark run stalled at 7e-4).
+    linearization.normal_force = linearization.gap_row;
     if (!start_normal_force.empty())
       {
         for (DofCoefficient &e : linearization.normal_force)

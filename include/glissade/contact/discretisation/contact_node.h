@@ -102,8 +102,8 @@ namespace glissade
      * the gap over that change (discrete_gradient.h).
      */
     double start_gap_in_dofs = std::numeric_limits<double>::quiet_NaN();
-    /** Under a dynamic scheme, the forces of a unit normal reaction at the
-     *  step's start (the gap's gradient there); empty without one. */
+    /** Under a dynamic scheme, the gap's gradient at the step's start (its
+     *  row there: mortar's normal force is not it); empty without one. */
     DofVector start_normal_force;
 
     /**
