@@ -267,6 +267,39 @@ namespace
     check(difference <= 1e-10 * scale,
           "automatic self-contact differs from the pair written");
   }
+
+
+  /**
+   * The pinched ring run to t = 1 in 80 increments: the plates' force at
+   * each (as a positive load), checked equal and opposite on the two
+   * plates at every increment, and when the inner wall first met itself
+   * (-1 if never).
+   */
+  struct PinchedRingRun
+  {
+    std::vector<double> plate_force;
+    double              first_contact = -1.;
+  };
+
+  PinchedRingRun
+  pinch(Simulation &simulation, const std::string &label)
+  {
+    const auto    &pairs = simulation.contact().contact_pairs();
+    PinchedRingRun run;
+    for (unsigned int k = 1; k <= 80; ++k)
+      {
+        simulation.advance_to(k / 80., "increment " + std::to_string(k));
+        run.plate_force.push_back(-pairs[0]->total_force()[1]);
+        if (run.first_contact < 0. && pairs[2]->n_active() > 0)
+          run.first_contact = k / 80.;
+        const double top    = pairs[0]->total_force()[1];
+        const double bottom = pairs[1]->total_force()[1];
+        check(std::abs(top + bottom) <= 1e-9 * std::abs(top),
+              label + ": the plates' forces differ at increment " +
+                std::to_string(k));
+      }
+    return run;
+  }
 } // namespace
 
 // The pinched ring: its inner wall meets itself at t = 0.87-0.89 and is
@@ -284,22 +317,11 @@ GLISSADE_TEST(self_contact_pinched_ring)
         SceneReader::read_string(pinched_ring(surface),
                                  "pinched ring",
                                  own_directory("pinched " + surface)));
-      const auto         &pairs = simulation.contact().contact_pairs();
-      std::vector<double> plate_force;
-      double              first_contact = -1.;
-      for (unsigned int k = 1; k <= 80; ++k)
-        {
-          simulation.advance_to(k / 80., "increment " + std::to_string(k));
-          plate_force.push_back(pairs[0]->total_force()[1]);
-          if (first_contact < 0. && pairs[2]->n_active() > 0)
-            first_contact = k / 80.;
-          const double top    = pairs[0]->total_force()[1];
-          const double bottom = pairs[1]->total_force()[1];
-          check(std::abs(top + bottom) <= 1e-9 * std::abs(top),
-                surface + ": the plates' forces differ at increment " +
-                  std::to_string(k));
-        }
-      const ContactPair       &inner = *pairs[2];
+      const auto              &pairs = simulation.contact().contact_pairs();
+      const auto               run   = pinch(simulation, surface);
+      const auto              &plate_force   = run.plate_force;
+      const double             first_contact = run.first_contact;
+      const ContactPair       &inner         = *pairs[2];
       const SelfContactFigures figures(inner);
       const Tensor<1, 2>      &sum     = figures.sum;
       const double             carried = figures.carried;
@@ -310,12 +332,12 @@ GLISSADE_TEST(self_contact_pinched_ring)
       const unsigned int first = std::lround(first_contact * 80.) - 1;
       double             after = 0.;
       for (unsigned int k = first + 1; k <= first + 3 && k < 80; ++k)
-        after = std::max(after, plate_force[k - 1] - plate_force[k]);
-      const double jump = plate_force[first - 1] - plate_force[first];
+        after = std::max(after, plate_force[k] - plate_force[k - 1]);
+      const double jump = plate_force[first] - plate_force[first - 1];
       std::cout << "  " << surface
                 << ": first self-contact at t = " << first_contact << ", "
                 << inner.n_active() << " nodes active at the end carrying "
-                << carried << "; plates " << -plate_force.back()
+                << carried << "; plates " << plate_force.back()
                 << "; the self-contact's forces on the ring sum to (" << sum
                 << "); deepest slave gap " << deepest
                 << "; deepest node behind a facing face " << behind
@@ -354,26 +376,15 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar)
       double reference = 0.;
       for (const std::string discretisation : {"node-to-segment", "mortar"})
         {
-          Simulation          simulation(SceneReader::read_string(
+          Simulation   simulation(SceneReader::read_string(
             pinched_ring(surface, false, "inner", "inner", discretisation),
             "pinched ring",
             own_directory_newton_1e9("pinched " + surface + " " +
                                      discretisation)));
-          const auto         &pairs = simulation.contact().contact_pairs();
-          std::vector<double> plate_force;
-          double              first_contact = -1.;
-          for (unsigned int k = 1; k <= 80; ++k)
-            {
-              simulation.advance_to(k / 80., "increment " + std::to_string(k));
-              plate_force.push_back(-pairs[0]->total_force()[1]);
-              if (first_contact < 0. && pairs[2]->n_active() > 0)
-                first_contact = k / 80.;
-              const double top    = pairs[0]->total_force()[1];
-              const double bottom = pairs[1]->total_force()[1];
-              check(std::abs(top + bottom) <= 1e-9 * std::abs(top),
-                    surface + ": the plates' forces differ at increment " +
-                      std::to_string(k));
-            }
+          const auto  &pairs = simulation.contact().contact_pairs();
+          const auto   run = pinch(simulation, surface + " " + discretisation);
+          const auto  &plate_force   = run.plate_force;
+          const double first_contact = run.first_contact;
           if (discretisation != "mortar")
             {
               reference = plate_force.back();
