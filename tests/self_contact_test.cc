@@ -279,6 +279,25 @@ namespace
   {
     std::vector<double> plate_force;
     double              first_contact = -1.;
+
+    /** The plates' force's change in the first self-contact step. */
+    double
+    jump_at_first_contact() const
+    {
+      const unsigned int first = std::lround(first_contact * 80.) - 1;
+      return plate_force[first] - plate_force[first - 1];
+    }
+
+    /** The largest change of the three steps after it. */
+    double
+    largest_change_after() const
+    {
+      const unsigned int first = std::lround(first_contact * 80.) - 1;
+      double             after = 0.;
+      for (unsigned int k = first + 1; k <= first + 3 && k < 80; ++k)
+        after = std::max(after, plate_force[k] - plate_force[k - 1]);
+      return after;
+    }
   };
 
   PinchedRingRun
@@ -300,6 +319,72 @@ namespace
       }
     return run;
   }
+
+
+  /**
+   * What every quasi-static pinched ring shows, printed and checked: the
+   * wall meets itself between t = 0.8 and 0.95, at least 20 nodes hold
+   * it, the self-contact's forces on the ring sum to zero (its action and
+   * reaction are both on it), no active node's gap is below zero, no node
+   * of the wall is behind a face of it that faces it beyond a fraction of
+   * a face (read from the deformed positions alone), and the plates' force
+   * grows on through the first self-contact without a jump larger than
+   * the steps after it make.
+   */
+  void
+  check_pinched_ring(const PinchedRingRun &run,
+                     const ContactPair    &inner,
+                     const std::string    &label)
+  {
+    const SelfContactFigures figures(inner);
+    const double             behind = deepest_node_behind_facing_faces(inner);
+    const double             jump   = run.jump_at_first_contact();
+    const double             after  = run.largest_change_after();
+    std::cout << "  " << label
+              << ": first self-contact at t = " << run.first_contact << ", "
+              << inner.n_active() << " nodes active at the end carrying "
+              << figures.carried << "; plates " << run.plate_force.back()
+              << "; the self-contact's forces on the ring sum to ("
+              << figures.sum << "); deepest active gap " << figures.deepest
+              << "; deepest node behind a facing face " << behind
+              << "; the plates' force changes by " << jump
+              << " at first contact, by at most " << after
+              << " in the three steps after" << std::endl;
+    check(run.first_contact > 0.8 && run.first_contact < 0.95,
+          label + ": the inner wall met itself at t = " +
+            std::to_string(run.first_contact));
+    check(inner.n_active() >= 20, label + ": too few nodes in contact");
+    check(figures.sum.norm() <= 1e-10 * figures.carried,
+          label + ": the self-contact's forces do not sum to zero");
+    check(figures.deepest >= -1e-8 * 0.7,
+          label + ": an active node's gap below zero");
+    // One pass: the nodes (faces) of the earlier stretch hold the contact,
+    // and where the wall folds tighter than a face (the two tips of the
+    // flattened hole) a node of the later stretch may pass a face of the
+    // earlier one by a fraction of the face (measured 1.1e-3 with a
+    // B-spline master and node-to-segment: a fortieth of a face, 0.046).
+    check(behind >= -0.05 * 0.046,
+          label + ": the inner wall passes through itself");
+    check(jump > 0. && jump <= after,
+          label + ": the plates' force jumps at first self-contact");
+  }
+
+
+  /**
+   * The pinched ring's scene under Newmark: the plates at a tenth of the
+   * quasi-static speed (0.08 t, where the ring's waves run at 31), 400
+   * steps to t = 10, so that the end is the quasi-static run's t = 1.
+   */
+  std::string
+  under_newmark(std::string prm)
+  {
+    for (std::string::size_type at;
+         (at = prm.find("0.8*t")) != std::string::npos;)
+      prm.replace(at, 5, "0.08*t");
+    return prm + "subsection Time integration\n set Scheme = newmark\nend\n"
+                 "subsection Load program\n set Stage end times = 10\n"
+                 " set Stage increments = 400\nend\n";
+  }
 } // namespace
 
 // The pinched ring: its inner wall meets itself at t = 0.87-0.89 and is
@@ -317,50 +402,10 @@ GLISSADE_TEST(self_contact_pinched_ring)
         SceneReader::read_string(pinched_ring(surface),
                                  "pinched ring",
                                  own_directory("pinched " + surface)));
-      const auto              &pairs = simulation.contact().contact_pairs();
-      const auto               run   = pinch(simulation, surface);
-      const auto              &plate_force   = run.plate_force;
-      const double             first_contact = run.first_contact;
-      const ContactPair       &inner         = *pairs[2];
-      const SelfContactFigures figures(inner);
-      const Tensor<1, 2>      &sum     = figures.sum;
-      const double             carried = figures.carried;
-      const double             deepest = figures.deepest;
-      const double             behind = deepest_node_behind_facing_faces(inner);
-      // The first self-contact step's change of the plates' force against
-      // the largest change of the three steps after it.
-      const unsigned int first = std::lround(first_contact * 80.) - 1;
-      double             after = 0.;
-      for (unsigned int k = first + 1; k <= first + 3 && k < 80; ++k)
-        after = std::max(after, plate_force[k] - plate_force[k - 1]);
-      const double jump = plate_force[first] - plate_force[first - 1];
-      std::cout << "  " << surface
-                << ": first self-contact at t = " << first_contact << ", "
-                << inner.n_active() << " nodes active at the end carrying "
-                << carried << "; plates " << plate_force.back()
-                << "; the self-contact's forces on the ring sum to (" << sum
-                << "); deepest slave gap " << deepest
-                << "; deepest node behind a facing face " << behind
-                << "; the plates' force changes by " << jump
-                << " at first contact, by at most " << after
-                << " in the three steps after" << std::endl;
-      check(first_contact > 0.8 && first_contact < 0.95,
-            surface + ": the inner wall met itself at t = " +
-              std::to_string(first_contact));
-      check(inner.n_active() >= 20, surface + ": too few nodes in contact");
-      check(sum.norm() <= 1e-10 * carried,
-            surface + ": the self-contact's forces do not sum to zero");
-      check(deepest >= -1e-8 * 0.7,
-            surface + ": a slave node behind its master");
-      // One pass: the nodes of the earlier stretch hold the contact, and
-      // where the wall folds tighter than a face (the two tips of the
-      // flattened hole) a node of the later stretch may pass a face of the
-      // earlier one by a fraction of the face (measured 1.1e-3 with a
-      // B-spline master: a fortieth of a face, 0.046).
-      check(behind >= -0.05 * 0.046,
-            surface + ": the inner wall passes through itself");
-      check(jump > 0. && jump <= after,
-            surface + ": the plates' force jumps at first self-contact");
+      const PinchedRingRun run = pinch(simulation, surface);
+      check_pinched_ring(run,
+                         *simulation.contact().contact_pairs()[2],
+                         surface);
     }
 }
 
@@ -376,51 +421,24 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar)
       double reference = 0.;
       for (const std::string discretisation : {"node-to-segment", "mortar"})
         {
-          Simulation   simulation(SceneReader::read_string(
+          Simulation           simulation(SceneReader::read_string(
             pinched_ring(surface, false, "inner", "inner", discretisation),
             "pinched ring",
             own_directory_newton_1e9("pinched " + surface + " " +
                                      discretisation)));
-          const auto  &pairs = simulation.contact().contact_pairs();
-          const auto   run = pinch(simulation, surface + " " + discretisation);
-          const auto  &plate_force   = run.plate_force;
-          const double first_contact = run.first_contact;
+          const PinchedRingRun run =
+            pinch(simulation, surface + " " + discretisation);
+          const std::vector<double> &plate_force = run.plate_force;
           if (discretisation != "mortar")
             {
               reference = plate_force.back();
               continue;
             }
-          const ContactPair       &inner = *pairs[2];
-          const SelfContactFigures figures(inner);
-          const double       behind = deepest_node_behind_facing_faces(inner);
-          const unsigned int first  = std::lround(first_contact * 80.) - 1;
-          double             after  = 0.;
-          for (unsigned int k = first + 1; k <= first + 3 && k < 80; ++k)
-            after = std::max(after, plate_force[k] - plate_force[k - 1]);
-          const double jump = plate_force[first] - plate_force[first - 1];
-          std::cout << "  mortar, " << surface
-                    << ": first self-contact at t = " << first_contact << ", "
-                    << inner.n_active() << " nodes active carrying "
-                    << figures.carried << "; plates " << plate_force.back()
-                    << " (node-to-segment " << reference
-                    << "); the forces on the ring sum to (" << figures.sum
-                    << "); deepest weighted gap " << figures.deepest
-                    << "; deepest node behind a facing face " << behind
-                    << "; the plates' force changes by " << jump
-                    << " at first contact, by at most " << after
-                    << " in the three steps after" << std::endl;
-          check(first_contact > 0.8 && first_contact < 0.95,
-                surface + ": the inner wall met itself at t = " +
-                  std::to_string(first_contact));
-          check(inner.n_active() >= 20, surface + ": too few nodes in contact");
-          check(figures.sum.norm() <= 1e-10 * figures.carried,
-                surface + ": the self-contact's forces do not sum to zero");
-          check(figures.deepest >= -1e-8 * 0.7,
-                surface + ": a weighted gap below zero");
-          check(behind >= -0.05 * 0.046,
-                surface + ": the inner wall passes through itself");
-          check(jump > 0. && jump <= after,
-                surface + ": the plates' force jumps at first self-contact");
+          check_pinched_ring(run,
+                             *simulation.contact().contact_pairs()[2],
+                             "mortar, " + surface);
+          std::cout << "  mortar, " << surface << ": node-to-segment's plates "
+                    << reference << std::endl;
           check(std::abs(plate_force.back() - reference) <= 0.01 * reference,
                 surface + ": the plates' force is not node-to-segment's");
           if (surface != "faceted")
@@ -561,13 +579,7 @@ GLISSADE_TEST(self_contact_inner_wall_as_two_halves)
 // squeeze (the plates move at 0.08 where the ring's waves run at 31).
 GLISSADE_TEST(self_contact_pinched_ring_under_newmark)
 {
-  std::string prm = pinched_ring("bspline");
-  for (std::string::size_type at;
-       (at = prm.find("0.8*t")) != std::string::npos;)
-    prm.replace(at, 5, "0.08*t");
-  prm += "subsection Time integration\n set Scheme = newmark\nend\n"
-         "subsection Load program\n set Stage end times = 10\n"
-         " set Stage increments = 400\nend\n";
+  const std::string        prm       = under_newmark(pinched_ring("bspline"));
   std::vector<std::string> overrides = own_directory("pinched newmark");
   overrides.push_back("Body ring/Material/Density=1");
   Simulation simulation(SceneReader::read_string(prm, "ring.prm", overrides));
@@ -620,15 +632,9 @@ GLISSADE_TEST(self_contact_pinched_ring_mortar_under_newmark)
   // whose points moves with every node of the wall)
   for (const std::string surface : {"faceted"})
     {
-      std::string prm =
+      const std::string quasi_static_prm =
         pinched_ring(surface, false, "inner", "inner", "mortar");
-      const std::string quasi_static_prm = prm;
-      for (std::string::size_type at;
-           (at = prm.find("0.8*t")) != std::string::npos;)
-        prm.replace(at, 5, "0.08*t");
-      prm += "subsection Time integration\n set Scheme = newmark\nend\n"
-             "subsection Load program\n set Stage end times = 10\n"
-             " set Stage increments = 400\nend\n";
+      const std::string        prm = under_newmark(quasi_static_prm);
       std::vector<std::string> overrides =
         own_directory("pinched mortar newmark " + surface);
       overrides.push_back("Body ring/Material/Density=1");
