@@ -129,13 +129,11 @@ namespace glissade
     master_surface = SurfaceRegistry::create({description, master_body});
     if (master_surface->is_rigid())
       check_obstacle_faces_slave();
-    discretisation = ContactDiscretisation::create(
-      description.discretisation,
-      {description, slave, master, *master_surface, slave_nodes, slave_ids});
     if (self_contact)
       {
         // A node may see the surface no deeper behind than half a slave
-        // face: deeper, it would see through the body to its back.
+        // face: deeper, it would see through the body to its back. (Set
+        // before the discretisation is made: mortar reads these views.)
         double length = 0.;
         for (const auto &[a, b] : faces)
           length += slave_nodes[a].reference_position.distance(
@@ -154,6 +152,9 @@ namespace glissade
               on_master == master_node_of_vertex.end() ? -1 : on_master->second;
           }
       }
+    discretisation = ContactDiscretisation::create(
+      description.discretisation,
+      {description, slave, master, *master_surface, slave_nodes, slave_ids});
     if (master_surface->coating() != nullptr &&
         description.discretisation != "node-to-segment")
       throw InputError(entry + "/Discretisation",

@@ -238,8 +238,6 @@ namespace glissade
        */
       bool             self_contact = false;
       std::vector<int> segment_of_face;
-      /** Half the slave faces' mean length (in the reference state). */
-      double penetration_limit = 0.;
 
       /**
        * In self-contact, whether slave face f may meet master segment i:
@@ -337,30 +335,18 @@ namespace glissade
               std::to_string(faces_of_point[j].size()) + " faces");
       state.resize(slave_points.size());
 
-      // Self-contact: each face's place on the chain.
+      // Self-contact: each face's place on the chain, from its nodes'
+      // (ContactPair's facing views).
       self_contact = master == &slave;
       if (self_contact)
         {
-          std::map<unsigned int, int> chain_place;
-          for (unsigned int k = 0; k < chain->vertices.size(); ++k)
-            chain_place[chain->vertices[k]] = k;
-          std::vector<int> place_of_point(slave_points.size(), -1);
-          for (const auto &[vertex, point] : point_of_vertex)
-            if (const auto at = chain_place.find(vertex);
-                at != chain_place.end())
-              place_of_point[point] = at->second;
-          double length = 0.;
-          for (const auto &[a, b] : faces)
-            length +=
-              slave_points[a].reference.distance(slave_points[b].reference);
-          penetration_limit =
-            0.5 * length / std::max<std::size_t>(1, faces.size());
           const int n = chain->vertices.size();
           segment_of_face.assign(faces.size(), -1);
           for (unsigned int f = 0; f < faces.size(); ++f)
             {
-              const int pa = place_of_point[faces[f][0]],
-                        pb = place_of_point[faces[f][1]];
+              // (slave point j is context.nodes[j])
+              const int pa = context.nodes[faces[f][0]].facing_view.master_node,
+                        pb = context.nodes[faces[f][1]].facing_view.master_node;
               if (pa < 0 || pb < 0)
                 continue;
               const auto next = [&](const int k) {
@@ -928,9 +914,9 @@ namespace glissade
       // mortar point is the wall's other side seen through the body (at a
       // fold tighter than a face the slave normals turn by a quarter turn
       // over a face, and their lines meet the facing stretch far along it),
-      // as node-to-segment's self-contact refuses it
-      // (ContactPair, FacingView::penetration_limit).
-      if (self_contact && l.gap < -penetration_limit)
+      // as node-to-segment's self-contact refuses it (the node's
+      // FacingView, set by ContactPair).
+      if (node.facing && l.gap < -node.facing_view.penetration_limit)
         return false;
 
       add_unit_reaction(s, node, n, l.normal_force);
