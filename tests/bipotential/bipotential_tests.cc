@@ -643,6 +643,50 @@ namespace
           }
       }
   }
+
+  // Two closed nodes whose gaps are one gap (a node on a node, each the
+  // other's counterpart, as two passes of a pair make them): W = [[1, 1],
+  // [1, 1]] in the normal direction, g_free = -1 at both. Only the sum of
+  // the reactions is fixed, r_0 + r_1 = 1; the linear law of the closed
+  // statuses is singular, and the active-set iteration, which solves it at
+  // every update, used to find nothing. Its answer of least norm, r = (0.5,
+  // 0.5), closes both gaps; Gauss-Seidel's (any split) closes them too.
+  void
+  test_redundant_constraints()
+  {
+    std::printf("\n== Redundant constraints: a node on a node, both ways\n");
+    ComplianceMatrix W(2);
+    for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int l = 0; l < 2; ++l)
+        W.set_block(k, l, {{{{k == l ? 1. : 0., 0.}}, {{0., 1.}}}});
+    const std::vector<Vector2>  u_free = {{{0., -1.}}, {{0., -1.}}};
+    BiPotentialSolver::Settings settings;
+    settings.max_sweeps = 1000;
+    const BiPotentialSolver solver(settings);
+    for (const bool active_set : {true, false})
+      {
+        std::vector<Vector2> r;
+        const auto           result =
+          active_set ? solver.solve_by_active_set(W, u_free, {0., 0.}, r) :
+                                 solver.solve(W, u_free, {0., 0.}, r);
+        const double gap = -1. + r[0][1] + r[1][1];
+        std::printf("  %s: %s after %u %s, r_n = (%.12g, %.12g), gap %.3g\n",
+                    active_set ? "active set" : "Gauss-Seidel",
+                    result.converged ? "converged" : "not converged",
+                    result.sweeps,
+                    active_set ? "updates" : "sweeps",
+                    r[0][1],
+                    r[1][1],
+                    gap);
+        check(result.converged, "the redundant law is solved");
+        check(std::abs(gap) <= 1e-12 && r[0][1] >= 0. && r[1][1] >= 0.,
+              "the shared gap is closed by reactions that push");
+        if (active_set)
+          check(std::abs(r[0][1] - 0.5) <= 1e-12 &&
+                  std::abs(r[1][1] - 0.5) <= 1e-12,
+                "the least-norm answer shares the force equally");
+      }
+  }
 } // namespace
 
 // Each group is a ctest test of its own ("contact_local_<group>"); the
@@ -824,6 +868,7 @@ static const glissade_tests::Registrations tests = {
    {"degenerate_input", test_degenerate_input},
    {"block_sparse_storage", test_block_sparse_storage},
    {"ill_conditioned_polish", test_ill_conditioned_polish},
+   {"redundant_constraints", test_redundant_constraints},
    {"capped_normal_law", test_capped_normal_law}}};
 static const glissade_tests::Registrations benchmarks =
   {{{"hertz_and_timing", test_hertz_and_timing}}, false};

@@ -31,6 +31,21 @@ dgemm_(const char   *transa,
        const int    *ldc);
 
 extern "C" void
+dgelsy_(const int    *m,
+        const int    *n,
+        const int    *nrhs,
+        double       *a,
+        const int    *lda,
+        double       *b,
+        const int    *ldb,
+        int          *jpvt,
+        const double *rcond,
+        int          *rank,
+        double       *work,
+        const int    *lwork,
+        int          *info);
+
+extern "C" void
 dgesv_(const int *n,
        const int *nrhs,
        double    *a,

@@ -127,19 +127,90 @@ namespace glissade
       return result;
     }
 
-    // Solves the dense system A x = b (A column major, m x m) in place by
-    // LAPACK's LU with partial pivoting; false if A is singular to working
-    // precision.
+    // Below this estimate of the reciprocal condition number (LAPACK's
+    // dgecon, 1-norm) the closed nodes' law is taken as redundant.
+    constexpr double redundant_below_rcond = 1e-10;
+
+    // Solves the dense system A x = b (A column major, m x m) in place;
+    // false if LAPACK fails or the answer is not finite. By LU with partial
+    // pivoting, unless A is singular or nearly so: then some closed
+    // constraints are one constraint twice (a node on a node, each the
+    // other's counterpart: two passes of a contact pair), only the sum of
+    // their reactions is fixed, and LU's answer would be two huge reactions
+    // of opposite signs, which no status check accepts. The answer of least
+    // norm (LAPACK's dgelsy: QR with column pivoting, the directions below
+    // redundant_below_rcond left out) shares such a sum equally; where b is
+    // not in A's range its residual is what the caller's law check sees.
     bool
     solve_dense(std::vector<double> &A,
                 std::vector<double> &b,
                 const std::size_t    m)
     {
-      const int        size = m, one = 1;
-      int              info = 0;
-      std::vector<int> pivots(m);
-      dgesv_(
-        &size, &one, A.data(), &size, pivots.data(), b.data(), &size, &info);
+      const int                 size = m, one = 1;
+      int                       info    = 0;
+      const std::vector<double> A_given = A;
+      std::vector<int>          pivots(m);
+      std::vector<double>       work(4 * m);
+      std::vector<int>          iwork(m);
+      const double              a_norm =
+        dlange_("1", &size, &size, A.data(), &size, work.data());
+      dgetrf_(&size, &size, A.data(), &size, pivots.data(), &info);
+      double rcond = 0.;
+      if (info == 0)
+        dgecon_("1",
+                &size,
+                A.data(),
+                &size,
+                &a_norm,
+                &rcond,
+                work.data(),
+                iwork.data(),
+                &info);
+      if (info == 0 && rcond >= redundant_below_rcond)
+        dgetrs_("N",
+                &size,
+                &one,
+                A.data(),
+                &size,
+                pivots.data(),
+                b.data(),
+                &size,
+                &info);
+      else
+        {
+          A = A_given;
+          std::vector<int> column_pivots(m, 0);
+          int              rank = 0, lwork = -1;
+          double           best_lwork = 0.;
+          dgelsy_(&size,
+                  &size,
+                  &one,
+                  A.data(),
+                  &size,
+                  b.data(),
+                  &size,
+                  column_pivots.data(),
+                  &redundant_below_rcond,
+                  &rank,
+                  &best_lwork,
+                  &lwork,
+                  &info);
+          lwork = std::max(1, int(best_lwork));
+          work.resize(lwork);
+          dgelsy_(&size,
+                  &size,
+                  &one,
+                  A.data(),
+                  &size,
+                  b.data(),
+                  &size,
+                  column_pivots.data(),
+                  &redundant_below_rcond,
+                  &rank,
+                  work.data(),
+                  &lwork,
+                  &info);
+        }
       if (info != 0)
         return false;
       for (std::size_t c = 0; c < m; ++c)
@@ -153,7 +224,8 @@ namespace glissade
     // iterate's r_t), the contact law is a linear system in the closed
     // nodes' reactions. Its solution is the exact answer if the statuses
     // were right, which the caller checks with the residuals of the law.
-    // Returns false if nothing is closed or the system is singular.
+    // Returns false if nothing is closed (solve_dense: a redundant law
+    // gets its answer of least norm).
     bool
     polish(const ComplianceMatrix     &W,
            const std::vector<Vector2> &u_free,
