@@ -53,7 +53,13 @@ namespace
     // faceted_vertex: slave nodes above the master's nodes (both blocks
     // 4 x 2), met as vertices with their cone (Faceted vertex rule =
     // vertex normal).
-    const bool  vertex = master == "faceted_vertex";
+    const bool vertex = master == "faceted_vertex";
+    // hermite_corner: a Hermite master whose boundary turns a corner (its
+    // top and right sides, one curve), the slave block beyond the corner,
+    // every slave node in the corner's normal cone: met at the corner
+    // node, the gap along the mean of the two sides' normals, which turns
+    // with the node's tangent dofs.
+    const bool  corner = master == "hermite_corner";
     std::string text   = "subsection Output\n set Progress = false\nend\n";
     // nurbs_slave, nurbs_on_nurbs: the slave a NURBS body (p = 2, its
     // boundary's Greville points the slave points, held so that no rigid
@@ -69,7 +75,8 @@ namespace
     text +=
       nurbs_slave ?
         block("upper", "0, 0.5", "1, 1", "6, 2", "nurbs", "left: x; top: y") :
-        block("upper", "0, 0.5", "1, 1", vertex ? "4, 2" : "6, 2", "q1");
+      corner ? block("upper", "1.05, 0.55", "1.55, 1.05", "6, 2", "q1") :
+               block("upper", "0, 0.5", "1, 1", vertex ? "4, 2" : "6, 2", "q1");
     std::string contact =
       "subsection Contact interface\n"
       " set Slave body = upper\n set Slave boundary = bottom\n"
@@ -117,7 +124,7 @@ namespace
       }
     else
       {
-        const bool hermite = kind == "hermite";
+        const bool hermite = kind == "hermite" || corner;
         // nurbs, nurbs3: the master a NURBS body of degree 2 or 3, its
         // exact boundary the surface.
         const bool nurbs =
@@ -134,7 +141,8 @@ namespace
                                 std::string(kind == "nurbs3" ? "3" : "2") :
                               "q1",
                       "left: x; bottom: y");
-        contact += " set Master body = lower\n set Master boundary = top\n";
+        contact += " set Master body = lower\n set Master boundary = " +
+                   std::string(corner ? "top, right" : "top") + "\n";
         // bspline_segment and bspline_spline: the B-spline master with
         // each force transfer; any other name is a Surface of its own.
         if (vertex)
@@ -149,7 +157,7 @@ namespace
           contact += " set Surface = bspline\n";
         else if (master == "mortar_bspline_spline")
           contact += " set Surface = bspline\n set Force transfer = spline\n";
-        else if (master == "mortar_hermite")
+        else if (master == "mortar_hermite" || corner)
           contact += " set Surface = hermite\n";
         else if (master == "mortar")
           contact += " set Surface = faceted\n set Discretisation = mortar\n";
@@ -246,6 +254,15 @@ namespace
         std::cout << "  " << at_vertex << " nodes at a vertex with its cone"
                   << std::endl;
         check(at_vertex >= 2, "at least two nodes at a vertex");
+      }
+    if (master == "hermite_corner")
+      {
+        unsigned int at_corner = 0;
+        for (const auto &node : pair.nodes())
+          at_corner += node.active && node.s == 0.;
+        std::cout << "  " << at_corner << " nodes met at the corner"
+                  << std::endl;
+        check(at_corner >= 3, "at least three nodes met at the corner");
       }
 
     // The dofs the contact touches, and the assembled tangent over them.
@@ -389,6 +406,8 @@ CONTACT_TANGENT_TEST(bspline_spline, slip)
 CONTACT_TANGENT_TEST(hermite, frictionless)
 CONTACT_TANGENT_TEST(hermite, stick)
 CONTACT_TANGENT_TEST(hermite, slip)
+CONTACT_TANGENT_TEST(hermite_corner, frictionless)
+CONTACT_TANGENT_TEST(hermite_corner, slip)
 CONTACT_TANGENT_TEST(nurbs, frictionless)
 CONTACT_TANGENT_TEST(nurbs, stick)
 CONTACT_TANGENT_TEST(nurbs, slip)

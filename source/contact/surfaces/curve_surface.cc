@@ -204,7 +204,10 @@ namespace glissade
   {
     // The normal bisects the corner, so it turns by the mean of the turns
     // of the two segments' normals at the node: theta_i = n_i . delta c'_i
-    // / |c'_i| with delta c'_i = sum_j phi_j' delta x_j at the node's end.
+    // / |c'_i| with delta c'_i = sum_j phi_j' delta u_j at the node's end,
+    // over every dof the curve's point moves with (kinematics_at: a
+    // Hermite edge's tangent at its node is its tangent dofs alone, the
+    // position weights' derivatives vanishing there).
     const unsigned int outgoing = point.segment;
     const unsigned int incoming =
       outgoing == 0 ? curve->n_segments() - 1 : outgoing - 1;
@@ -217,15 +220,12 @@ namespace glissade
         if (!(length > 0.))
           continue;
         const Tensor<1, 2> n({-dc[1] / length, dc[0] / length});
-        MasterCurve::NodeWeightsAndDerivatives weights;
-        curve->weights_and_derivatives(segment, s, weights);
-        for (const auto &w : weights)
-          for (unsigned int comp = 0; comp < 2; ++comp)
-            point.vertex_rotation.push_back(
-              {curve_data_dofs(w.node)[comp],
-               comp,
-               0.5 * w.derivative * n[comp] / length,
-               0.});
+        for (const SurfaceWeight &w : kinematics_at(segment, s))
+          point.vertex_rotation.push_back(
+            {w.dof,
+             w.component,
+             0.5 * w.derivative * n[w.component] / length,
+             0.});
       }
   }
 
