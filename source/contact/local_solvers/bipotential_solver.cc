@@ -180,36 +180,27 @@ namespace glissade
         {
           A = A_given;
           std::vector<int> column_pivots(m, 0);
-          int              rank = 0, lwork = -1;
-          double           best_lwork = 0.;
-          dgelsy_(&size,
-                  &size,
-                  &one,
-                  A.data(),
-                  &size,
-                  b.data(),
-                  &size,
-                  column_pivots.data(),
-                  &redundant_below_rcond,
-                  &rank,
-                  &best_lwork,
-                  &lwork,
-                  &info);
-          lwork = std::max(1, int(best_lwork));
-          work.resize(lwork);
-          dgelsy_(&size,
-                  &size,
-                  &one,
-                  A.data(),
-                  &size,
-                  b.data(),
-                  &size,
-                  column_pivots.data(),
-                  &redundant_below_rcond,
-                  &rank,
-                  work.data(),
-                  &lwork,
-                  &info);
+          int              rank = 0;
+          // (called twice: first for the size of its work array)
+          const auto least_norm = [&](double *work_array, const int lwork) {
+            dgelsy_(&size,
+                    &size,
+                    &one,
+                    A.data(),
+                    &size,
+                    b.data(),
+                    &size,
+                    column_pivots.data(),
+                    &redundant_below_rcond,
+                    &rank,
+                    work_array,
+                    &lwork,
+                    &info);
+          };
+          double best_lwork = 0.;
+          least_norm(&best_lwork, -1);
+          work.resize(std::max(1, int(best_lwork)));
+          least_norm(work.data(), work.size());
         }
       if (info != 0)
         return false;
