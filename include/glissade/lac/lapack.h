@@ -46,16 +46,6 @@ dgelsy_(const int    *m,
         int          *info);
 
 extern "C" void
-dgesv_(const int *n,
-       const int *nrhs,
-       double    *a,
-       const int *lda,
-       int       *ipiv,
-       double    *b,
-       const int *ldb,
-       int       *info);
-
-extern "C" void
 dgetrf_(const int *m,
         const int *n,
         double    *a,
