@@ -187,3 +187,36 @@ GLISSADE_TEST(automatic_contact_input_errors)
             "'" + listed + "': expected '" + expected + "'");
     }
 }
+
+// Scene/Contact bodies set from the command line (--set), as any entry:
+// the first pass over the scene, which reads the bodies' and pairs' names
+// alone, took every Scene/ override and refused this one as undeclared.
+// The override replaces the file's list, and a wrong one is refused with
+// the entry named, as in the file.
+GLISSADE_TEST(automatic_contact_listed_from_the_command_line)
+{
+  const std::string      scene = source_path("prm/rings_in_a_row.prm");
+  const SceneDescription listed =
+    SceneReader::read_file(scene,
+                           {"Scene/Contact bodies=left: outer, middle: outer"});
+  std::string sides;
+  for (const auto &side : listed.automatic_contact.sides)
+    sides += (sides.empty() ? "" : ", ") + side.body + ": " + side.boundary;
+  std::cout << "  overridden: " << sides << std::endl;
+  check(sides == "left: outer, middle: outer",
+        "the override did not replace the file's list");
+  std::string refused = "accepted";
+  try
+    {
+      SceneReader::read_file(scene,
+                             {"Scene/Contact bodies=left: outer, left: inner"});
+    }
+  catch (const InputError &e)
+    {
+      refused = e.what();
+    }
+  std::cout << "  refused: " << refused << std::endl;
+  check(refused.find("Contact bodies") != std::string::npos &&
+          refused.find("listed twice") != std::string::npos,
+        "a wrong override is not refused with its entry named");
+}

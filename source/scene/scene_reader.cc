@@ -28,6 +28,15 @@ namespace glissade
 
   namespace
   {
+    /** The path an "A/B/Entry=value" override sets: {"A", "B", "Entry"}
+     *  (each trimmed). */
+    std::vector<std::string>
+    override_path(const std::string &assignment)
+    {
+      return Utilities::split_string_list(
+        assignment.substr(0, assignment.find('=')), '/');
+    }
+
     /** Applies one "A/B/Entry=value" override. */
     void
     apply_override(ParameterHandler &prm, const std::string &assignment)
@@ -36,8 +45,7 @@ namespace glissade
       if (equal == std::string::npos)
         throw InputError("--set " + assignment,
                          "expected 'Subsection/Entry=value'");
-      const auto path =
-        Utilities::split_string_list(assignment.substr(0, equal), '/');
+      const auto        path  = override_path(assignment);
       const std::string value = text::trim(assignment.substr(equal + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.enter_subsection(path[i]);
@@ -203,9 +211,13 @@ namespace glissade
       prm.declare_entry("Bodies", "body", Patterns::Anything());
       prm.declare_entry("Contact pairs", "", Patterns::Anything());
       prm.leave_subsection();
+      // (only the overrides of these two: the other entries of Scene, as
+      // Contact bodies, are declared by the pass that reads everything)
       parse_with_overrides(
         prm, text_value, source, true, overrides, [](const std::string &o) {
-          return o.rfind("Scene/", 0) == 0;
+          const auto path = override_path(o);
+          return path.size() == 2 && path[0] == "Scene" &&
+                 (path[1] == "Bodies" || path[1] == "Contact pairs");
         });
       prm.enter_subsection("Scene");
       body_names = read_body_names(prm.get("Bodies"), source);
@@ -240,7 +252,9 @@ namespace glissade
         }
       parse_with_overrides(
         prm, text_value, source, true, overrides, [](const std::string &o) {
-          return o.find("/Material/Regions=") != std::string::npos;
+          const auto path = override_path(o);
+          return path.size() == 3 && path[1] == "Material" &&
+                 path[2] == "Regions";
         });
       std::map<std::string, std::vector<std::string>> regions;
       for (const auto &name : body_names)
