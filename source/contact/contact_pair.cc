@@ -465,26 +465,39 @@ namespace glissade
         node.reaction = {{0., 0.}};
         node.status   = BiPotentialSolver::NodeStatus::open;
       }
-    const double size = master_body ?
-                          std::min(slave_body.size(), master_body->size()) :
-                          slave_body.size();
+    const double       size = master_body ?
+                                std::min(slave_body.size(), master_body->size()) :
+                                slave_body.size();
+    std::ostringstream found;
+    found << "at t = 0, " << behind << " slave nodes of '"
+          << description.slave_body << "/" << description.slave_boundary
+          << "' lie up to " << -deepest << " behind the master "
+          << (master_body ? "surface '" + description.master_body + "/" +
+                              description.master_boundary + "'" :
+                            std::string("obstacle"));
     // Interference fits and the sagitta of a faceted circle stay well
     // below this; a master that faces away puts the slave a whole
-    // thickness behind it.
+    // thickness behind it, and bodies placed into each other by mistake
+    // mostly more than this.
     if (deepest < -0.05 * size)
       {
-        std::ostringstream message;
-        message << "at t = 0, " << behind << " slave nodes of '"
-                << description.slave_body << "/" << description.slave_boundary
-                << "' lie up to " << -deepest << " behind the master "
-                << (master_body ? "surface '" + description.master_body + "/" +
-                                    description.master_boundary + "'" :
-                                  std::string("obstacle"))
-                << ", more than 5 % of the bodies' size (" << size
-                << "): the master must face the slave";
+        found << ", more than 5 % of the bodies' size (" << size
+              << "): the bodies overlap at the start, or the master faces "
+                 "away from the slave";
         throw InputError(description.entry +
                            (master_body ? "/Master boundary" : "/Obstacle"),
-                         message.str());
+                         found.str());
+      }
+    // Less deep, it is said: the first increment pushes them out.
+    overlap_at_start.clear();
+    if (deepest < -description.alert_distance)
+      {
+        found << ", deeper than the alert distance ("
+              << description.alert_distance
+              << "): the first increment pushes them out, and that overlap "
+                 "is a load (an interference fit's; if it is not meant, the "
+                 "bodies overlap)";
+        overlap_at_start = found.str();
       }
   }
 

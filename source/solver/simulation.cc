@@ -101,6 +101,14 @@ namespace glissade
     contact_problem =
       std::make_unique<ContactProblem>(scene, all_bodies, timer);
     integrator->attach(*contact_problem);
+    // Slave nodes behind their master at the start, deeper than the
+    // alert distance but not so deep as to refuse the scene: said before
+    // anything is computed (an interference fit's load, or a mistake).
+    if (writes_files)
+      for (const auto &pair : contact_problem->contact_pairs())
+        if (!pair->initial_overlap().empty())
+          std::cout << "warning: contact pair '" << pair->name()
+                    << "': " << pair->initial_overlap() << std::endl;
     newton_loop = std::make_unique<NewtonLoop>(scene.newton,
                                                all_bodies,
                                                *contact_problem,

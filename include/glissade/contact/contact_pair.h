@@ -84,12 +84,26 @@ namespace glissade
 
     /**
      * A pair that cannot make sense: at t = 0, slave nodes lie deeper behind
-     * the master surface than 5 % of the bodies' size (the master boundary
-     * faces away from the slave, or the obstacle is on the wrong side).
-     * Throws an InputError naming the entry; the state is left as before.
+     * the master surface than 5 % of the bodies' size (the bodies overlap,
+     * the master boundary faces away from the slave, or the obstacle is on
+     * the wrong side). Throws an InputError naming the entry; the state is
+     * left as before.
      */
     void
     check_initial_state();
+
+    /**
+     * What check_initial_state() found behind the master that it let
+     * through, deeper than the alert distance: "" if none, else what to
+     * tell the user (an interference fit's overlap is its load, which the
+     * first increment pushes out; bodies placed into each other by mistake
+     * look the same).
+     */
+    const std::string &
+    initial_overlap() const
+    {
+      return overlap_at_start;
+    }
 
     /**
      * A slave node within the alert distance at t = 0, and the frame of the
@@ -274,6 +288,9 @@ namespace glissade
     }
 
   private:
+    /** See initial_overlap(). */
+    std::string overlap_at_start;
+
     double reported_force_scale = 1.;
     /** The slave faces, as indices into the nodes. */
     std::vector<std::array<unsigned int, 2>> faces;
