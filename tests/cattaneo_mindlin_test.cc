@@ -25,6 +25,7 @@
 #include <map>
 #include <sstream>
 
+#include "line_contact_points.h"
 #include "test_tools.h"
 
 using namespace glissade;
@@ -38,14 +39,6 @@ namespace
   constexpr double reduced_modulus = young / (2. * (1. - poisson * poisson));
   // The slave nodes' spacing at the contact (make_cattaneo_meshes.py).
   constexpr double node_spacing = 0.0025;
-
-  /** A closed slave node: where it is along the contact, its tractions. */
-  struct ContactPoint
-  {
-    unsigned int node;
-    double       x, normal_reaction, pressure, shear;
-    bool         sticks;
-  };
 
   /**
    * Cattaneo's shear of a contact of half-width a whose middle |x| < c
@@ -85,9 +78,9 @@ namespace
     double stick_shear_error = 0.;
     /** Largest |shear -+ mu pressure| / (mu p0) over the slipping nodes,
      *  their shear against the motion (against the pull, then with it). */
-    double                    slip_law_error = 0.;
-    unsigned int              sticking = 0, slipping = 0;
-    std::vector<ContactPoint> points;
+    double                        slip_law_error = 0.;
+    unsigned int                  sticking = 0, slipping = 0;
+    std::vector<LineContactPoint> points;
   };
 
   /**
@@ -101,72 +94,33 @@ namespace
   PartialSlip
   measure(const ContactPair &pair, const PartialSlip *turned = nullptr)
   {
-    const auto &u    = pair.slave().displacement();
-    const auto  area = pair.tributary_areas();
     PartialSlip m;
     // The loads the contact carries (on the cylinder: up, and against the
     // pull).
     const Tensor<1, 2> force = pair.total_force();
     m.P                      = force[1];
     m.Q                      = -force[0];
-    double moment = 0., sum_r = 0.;
-    for (unsigned int k = 0; k < pair.nodes().size(); ++k)
-      {
-        const ContactNode &node = pair.nodes()[k];
-        using Status            = BiPotentialSolver::NodeStatus;
-        if (!node.active || node.status == Status::open || area[k] <= 0.)
-          continue;
-        const double x = node.reference_position[0] + node.displacement(u)[0];
-        // The reactions in the node's (t, n) frame: r_t along the tangent,
-        // which may point either way along x; the shear is counted
-        // positive against the pull (+x on the cylinder).
-        const double along = node.tangent[0] >= 0. ? 1. : -1.;
-        m.points.push_back({k,
-                            x,
-                            node.reaction[1],
-                            node.reaction[1] / area[k],
-                            -along * node.reaction[0] / area[k],
-                            node.status == Status::stick});
-        sum_r += node.reaction[1];
-        moment += node.reaction[1] * x;
-      }
-    std::sort(m.points.begin(),
-              m.points.end(),
-              [](const auto &p, const auto &q) { return p.x < q.x; });
-    // Along the contact from its centre (the pulled cylinder's contact
-    // moves with it).
-    const double centre   = moment / sum_r;
-    double       sum_r_x2 = 0.;
-    for (ContactPoint &point : m.points)
-      {
-        point.x -= centre;
-        sum_r_x2 += point.normal_reaction * point.x * point.x;
-        if (std::abs(point.x) < std::abs(m.peak_x))
-          {
-            m.peak_x        = point.x;
-            m.peak_pressure = point.pressure;
-          }
-      }
-    // The half-width from the second moment of the normal reactions:
-    // sum r x^2 / sum r = a^2 / 4 for Hertz's profile.
-    m.half_width = 2. * std::sqrt(sum_r_x2 / sum_r);
+    const LineContact contact(pair);
+    m.points        = contact.points;
+    m.half_width    = contact.half_width;
+    m.peak_pressure = contact.peak_pressure;
+    m.peak_x        = contact.peak_x;
     // Hertz's a and p0 at the load P, Cattaneo's c at Q (or c').
-    m.a  = std::sqrt(4. * m.P / (M_PI * reduced_modulus));
-    m.p0 = 2. * m.P / (M_PI * m.a);
-    m.c  = m.a *
+    std::tie(m.a, m.p0) = hertz_cylinders(m.P, 1., reduced_modulus);
+    m.c                 = m.a *
           std::sqrt(std::max(0.,
                              turned ? 1. - (turned->Q - m.Q) / (2. * mu * m.P) :
                                       1. - m.Q / (mu * m.P)));
 
     std::map<unsigned int, double> shear_at_turn;
     if (turned)
-      for (const ContactPoint &point : turned->points)
+      for (const LineContactPoint &point : turned->points)
         shear_at_turn[point.node] = point.shear;
     const double scale       = mu * m.p0;
     const double slip_sign   = turned ? -1. : 1.;
     double       first_stick = 0., last_stick = 0.;
     bool         any_stick = false;
-    for (const ContactPoint &point : m.points)
+    for (const LineContactPoint &point : m.points)
       if (point.sticks)
         {
           first_stick = any_stick ? first_stick : point.x;
@@ -175,7 +129,7 @@ namespace
         }
     check(any_stick, "no node sticks");
     double slip_before = -m.a, slip_after = m.a;
-    for (const ContactPoint &point : m.points)
+    for (const LineContactPoint &point : m.points)
       {
         const double x = point.x;
         if (point.sticks)

@@ -11,7 +11,11 @@ cylinder, 0.0021 on the block, so that their nodes do not match).
   from (-1, 1) through (0, 0) to (1, 1)), top (its diameter, y = 1),
   cylinder;
 - cattaneo_block.msh: the block [-1, 1] x [-1, 0]; physical groups top,
-  bottom, left, right, block.
+  bottom, left, right, block;
+- hertz_lower_cylinder_r2.msh: the upper half of the disk of radius 2
+  and centre (0, -2), touching y = 0 at the origin, graded as the block
+  (prm/hertz_two_cylinders.prm: the cylinder above on it); physical
+  groups arc, bottom (its diameter, y = -2), cylinder.
 
 Needs Gmsh's Python module (Debian: python3-gmsh, in /usr/bin/python3).
 Run from prm/meshes: /usr/bin/python3 make_cattaneo_meshes.py
@@ -73,6 +77,24 @@ def write_block(path):
     mesh_and_write(contact, path, 0.0021)
 
 
+def write_lower_cylinder(path, radius):
+    """The upper half disk of centre (0, -radius), counter-clockwise."""
+    geo = start("cylinder")
+    contact = geo.addPoint(0, 0, 0)
+    centre = geo.addPoint(0, -radius, 0)
+    left = geo.addPoint(-radius, -radius, 0)
+    right = geo.addPoint(radius, -radius, 0)
+    right_arc = geo.addCircleArc(right, centre, contact)
+    left_arc = geo.addCircleArc(contact, centre, left)
+    bottom = geo.addLine(left, right)
+    cylinder = geo.addPlaneSurface(
+        [geo.addCurveLoop([right_arc, left_arc, bottom])])
+    name_groups([(1, [right_arc, left_arc], "arc"), (1, [bottom], "bottom"),
+                 (2, [cylinder], "cylinder")])
+    mesh_and_write(contact, path, 0.0021)
+
+
 if __name__ == "__main__":
     write_cylinder("cattaneo_cylinder.msh")
     write_block("cattaneo_block.msh")
+    write_lower_cylinder("hertz_lower_cylinder_r2.msh", 2.0)
