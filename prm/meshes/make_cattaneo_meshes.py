@@ -39,21 +39,24 @@ def name_groups(groups):
         gmsh.model.setPhysicalName(dim, number, name)
 
 
-def write_cylinder(path):
-    """The lower half disk of centre (0, 1), counter-clockwise."""
+def write_half_disk(path, radius, side, flat, h_contact):
+    """A half disk touching y = 0 at the origin, counter-clockwise: the
+    lower half of the disk of centre (0, radius) for side = 1, the upper
+    half of the disk of centre (0, -radius) for side = -1; its diameter
+    named `flat`."""
     geo = start("cylinder")
     contact = geo.addPoint(0, 0, 0)
-    centre = geo.addPoint(0, 1, 0)
-    left = geo.addPoint(-1, 1, 0)
-    right = geo.addPoint(1, 1, 0)
-    left_arc = geo.addCircleArc(left, centre, contact)
-    right_arc = geo.addCircleArc(contact, centre, right)
-    top = geo.addLine(right, left)
-    cylinder = geo.addPlaneSurface(
-        [geo.addCurveLoop([left_arc, right_arc, top])])
-    name_groups([(1, [left_arc, right_arc], "arc"), (1, [top], "top"),
+    centre = geo.addPoint(0, side * radius, 0)
+    left = geo.addPoint(-radius, side * radius, 0)
+    right = geo.addPoint(radius, side * radius, 0)
+    first, last = (left, right) if side > 0 else (right, left)
+    arcs = [geo.addCircleArc(first, centre, contact),
+            geo.addCircleArc(contact, centre, last)]
+    diameter = geo.addLine(last, first)
+    cylinder = geo.addPlaneSurface([geo.addCurveLoop(arcs + [diameter])])
+    name_groups([(1, arcs, "arc"), (1, [diameter], flat),
                  (2, [cylinder], "cylinder")])
-    mesh_and_write(contact, path)
+    mesh_and_write(contact, path, h_contact)
 
 
 def write_block(path):
@@ -77,24 +80,7 @@ def write_block(path):
     mesh_and_write(contact, path, 0.0021)
 
 
-def write_lower_cylinder(path, radius):
-    """The upper half disk of centre (0, -radius), counter-clockwise."""
-    geo = start("cylinder")
-    contact = geo.addPoint(0, 0, 0)
-    centre = geo.addPoint(0, -radius, 0)
-    left = geo.addPoint(-radius, -radius, 0)
-    right = geo.addPoint(radius, -radius, 0)
-    right_arc = geo.addCircleArc(right, centre, contact)
-    left_arc = geo.addCircleArc(contact, centre, left)
-    bottom = geo.addLine(left, right)
-    cylinder = geo.addPlaneSurface(
-        [geo.addCurveLoop([right_arc, left_arc, bottom])])
-    name_groups([(1, [right_arc, left_arc], "arc"), (1, [bottom], "bottom"),
-                 (2, [cylinder], "cylinder")])
-    mesh_and_write(contact, path, 0.0021)
-
-
 if __name__ == "__main__":
-    write_cylinder("cattaneo_cylinder.msh")
+    write_half_disk("cattaneo_cylinder.msh", 1.0, 1, "top", 0.0025)
     write_block("cattaneo_block.msh")
-    write_lower_cylinder("hertz_lower_cylinder_r2.msh", 2.0)
+    write_half_disk("hertz_lower_cylinder_r2.msh", 2.0, -1, "bottom", 0.0021)
