@@ -40,6 +40,7 @@ GLISSADE_TEST(contact_hertz_two_cylinders)
         own_output_directory("hertz_two_cylinders_", label);
       overrides.push_back("Output/Progress=false");
       overrides.push_back("Output/Contact table interval=0");
+      overrides.push_back("Load program/Stage increments=2");
       overrides.push_back("Contact touch/Surface=" + surface);
       overrides.push_back("Contact touch/Discretisation=" + discretisation);
       Simulation simulation(
