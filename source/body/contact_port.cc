@@ -56,11 +56,10 @@ namespace glissade
 
 
   void
-  ContactPort::prepare_compliance(
+  ContactPort::ask_for_compliance(
     const std::vector<types::global_dof_index> &rows,
     const std::vector<types::global_dof_index> &columns,
-    DirectSolver                               &factorization,
-    const HomogeneousSolve                     &solve)
+    DirectSolver                               &factorization)
   {
     // The declared contact dofs' entries from the factor; a dof that was
     // not declared (a node activated or slid onto another segment since
@@ -68,12 +67,13 @@ namespace glissade
     // its column, which by symmetry is also its row. Only those dofs pay
     // a solve: at 390,000 dofs, 4 undeclared dofs among 546 made every
     // column a solve (156 s for W; 0.76 s so).
-    std::vector<unsigned long> lacking;
-    const auto                 ask = [&](const types::global_dof_index dof) {
+    lacking_columns.clear();
+    const auto ask = [&](const types::global_dof_index dof) {
       if (compliance_columns.find(dof) == compliance_columns.end())
-        lacking.push_back(dof);
+        lacking_columns.push_back(dof);
     };
-    if (reads_factor(factorization))
+    asked_of_factor = reads_factor(factorization);
+    if (asked_of_factor)
       {
         std::vector<types::global_dof_index> declared_columns;
         for (const auto dof : columns)
@@ -84,20 +84,50 @@ namespace glissade
         for (const auto dof : rows)
           if (!declared(dof))
             ask(dof);
-        factorization.inverse_block().compute_inverse_columns(
+        factorization.inverse_block().ask_for_inverse_columns(
           factor_positions(declared_columns, factorization.inverse_block()));
       }
     else
       for (const auto dof : columns)
         ask(dof);
+    compliance_asked = true;
+  }
+
+
+
+  void
+  ContactPort::form_asked_compliance(DirectSolver &factorization)
+  {
+    if (compliance_asked && asked_of_factor)
+      factorization.inverse_block().form_asked_inverse_columns();
+  }
+
+
+
+  void
+  ContactPort::prepare_compliance(
+    const std::vector<types::global_dof_index> &rows,
+    const std::vector<types::global_dof_index> &columns,
+    DirectSolver                               &factorization,
+    const HomogeneousSolve                     &solve)
+  {
+    if (!compliance_asked)
+      {
+        ask_for_compliance(rows, columns, factorization);
+        form_asked_compliance(factorization);
+      }
+    compliance_asked = false;
+    if (asked_of_factor)
+      factorization.inverse_block().receive_inverse_columns();
     // (A solve is collective on several processes: each makes those of the
     // columns that any of them lacks, in the same order.)
-    for (const auto dof : processes::union_of(lacking))
+    for (const auto dof : processes::union_of(lacking_columns))
       {
         Vector<double> unit(n_dofs);
         unit(dof) = 1.;
         solve(unit, compliance_columns[dof]);
       }
+    lacking_columns.clear();
   }
 
 

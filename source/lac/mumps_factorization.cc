@@ -2,6 +2,7 @@
 // (include/glissade/lac/mumps_factorization.h).
 
 #include <glissade/base/input_error.h>
+#include <glissade/base/timing_sections.h>
 #include <glissade/lac/lapack.h>
 #include <glissade/lac/mumps_factorization.h>
 
@@ -27,17 +28,13 @@ namespace glissade
 {
   namespace
   {
-    double
-    seconds_since(const std::chrono::steady_clock::time_point start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                           start)
-        .count();
-    }
-
     /** Where the factorisations made from now on write their factors
      *  (keep_factors_out_of_core(); empty: in memory). */
     std::string out_of_core_directory;
+
+    /** The tag of the columns of C the host sends (not one of MUMPS's
+     *  own, in the factorisation's communicator). */
+    constexpr int inverse_columns_tag = 31001;
   } // namespace
 
 
@@ -114,9 +111,6 @@ namespace glissade
                            std::to_string(factorizations_made);
     const int host = factorizations_made++ % size;
     MPI_Comm_split(comm, 0, (rank - host + size) % size, &communicator);
-    // (each process forms its share of the columns of C: the whole block
-    // on every process would be 82 MB per body at 3,200 contact dofs)
-    keep_only_asked_columns = true;
   }
 
 
@@ -292,14 +286,20 @@ namespace glissade
         for (long k = 0; k < n_last; ++k)
           position[kept_out[k]] = k;
         analysed = true;
-        analysis_seconds += seconds_since(start);
+        analysis_seconds += timing::seconds_since(start);
       }
     const auto numeric_start = std::chrono::steady_clock::now();
+    // (the last factorisation's inverse block let go; S's array made again
+    // where that block had taken its place)
+    forget_inverse_columns();
+    if (rank == 0 && n_last > 0)
+      {
+        schur.resize(std::size_t(n_last) * n_last);
+        id.schur = schur.data();
+      }
     call(2, "factorisation");
     factorize_schur_complement();
-    factorization_seconds += seconds_since(numeric_start);
-    forget_inverse_columns();
-    std::vector<double>().swap(received_cholesky);
+    factorization_seconds += timing::seconds_since(numeric_start);
   }
 
 
@@ -373,47 +373,145 @@ namespace glissade
 
 
   void
-  MumpsFactorization::share_trailing_factor() const
+  MumpsFactorization::take_request(const std::vector<long> &wanted)
   {
-    int rank = 0;
+    int rank = 0, size = 1;
     MPI_Comm_rank(communicator, &rank);
-    int lacking = rank != 0 && received_cholesky.empty() ? 1 : 0;
-    MPI_Allreduce(MPI_IN_PLACE, &lacking, 1, MPI_INT, MPI_MAX, communicator);
-    if (lacking == 0)
-      return;
-    // (those that hold it already receive the same bits again)
-    if (rank != 0)
-      received_cholesky.resize(std::size_t(n_last) * n_last);
-    MPI_Bcast(rank == 0 ? const_cast<double *>(schur.data()) :
-                          received_cholesky.data(),
-              std::size_t(n_last) * n_last,
-              MPI_DOUBLE,
-              0,
-              communicator);
+    MPI_Comm_size(communicator, &size);
+    const int n_wanted = wanted.size();
+    asked_counts.assign(size, 0);
+    asked_offsets.assign(size + 1, 0);
+    MPI_Gather(
+      &n_wanted, 1, MPI_INT, asked_counts.data(), 1, MPI_INT, 0, communicator);
+    for (int p = 0; p < size; ++p)
+      asked_offsets[p + 1] = asked_offsets[p] + asked_counts[p];
+    asked_by_all.resize(rank == 0 ? asked_offsets[size] : 0);
+    MPI_Gatherv(wanted.data(),
+                n_wanted,
+                MPI_LONG,
+                asked_by_all.data(),
+                asked_counts.data(),
+                asked_offsets.data(),
+                MPI_LONG,
+                0,
+                communicator);
+    if (rank != 0 && n_wanted > 0)
+      {
+        columns_on_the_way.resize(std::size_t(n_last) * n_wanted);
+        MPI_Irecv(columns_on_the_way.data(),
+                  static_cast<int>(columns_on_the_way.size()),
+                  MPI_DOUBLE,
+                  0,
+                  inverse_columns_tag,
+                  communicator,
+                  &receipt);
+      }
   }
 
 
 
   void
-  MumpsFactorization::trailing_factor(std::vector<double> &factor,
-                                      const bool           last_use) const
+  MumpsFactorization::form_requested_columns()
   {
     int rank = 0;
     MPI_Comm_rank(communicator, &rank);
-    if (rank == 0)
+    if (rank != 0)
+      return; // (the host forms every process's columns)
+    formed_positions = asked_by_all;
+    std::sort(formed_positions.begin(), formed_positions.end());
+    formed_positions.erase(std::unique(formed_positions.begin(),
+                                       formed_positions.end()),
+                           formed_positions.end());
+    forming_failed = false;
+    if (formed_positions.empty() || whole_inverse_block() != nullptr)
+      return; // (none asked for, or all formed already: sent from there)
+    // (the whole block is formed in S's array, in place of L_S: a copy
+    // would be a second m x m array on the host)
+    try
       {
-        factor = schur;
+        columns_of_inverse(
+          schur, n_last, formed_positions, true, formed_columns);
+      }
+    catch (const std::runtime_error &)
+      {
+        forming_failed = true;
+      }
+  }
+
+
+
+  void
+  MumpsFactorization::hand_over_columns(std::vector<long>   &wanted,
+                                        std::vector<double> &columns)
+  {
+    int rank = 0, size = 1;
+    MPI_Comm_rank(communicator, &rank);
+    MPI_Comm_size(communicator, &size);
+    // (every process stops alike where LAPACK failed on the host)
+    int failed = forming_failed ? 1 : 0;
+    MPI_Bcast(&failed, 1, MPI_INT, 0, communicator);
+    if (failed != 0 && receipt != MPI_REQUEST_NULL)
+      {
+        MPI_Cancel(&receipt);
+        MPI_Request_free(&receipt);
+      }
+    if (failed != 0)
+      throw std::runtime_error("LAPACK could not form the inverse of the "
+                               "Schur complement on the contact dofs");
+    if (rank != 0)
+      {
+        if (!wanted.empty())
+          {
+            MPI_Wait(&receipt, MPI_STATUS_IGNORE);
+            columns.swap(columns_on_the_way);
+          }
+        std::vector<double>().swap(columns_on_the_way);
         return;
       }
-    if (received_cholesky.empty())
-      throw std::logic_error("MumpsFactorization: the factor of the Schur "
-                             "complement was asked for before it was shared");
-    // (at the whole block: handed over, not copied; the host keeps its
-    // own for the solves)
-    if (last_use)
-      factor.swap(received_cholesky);
-    else
-      factor = received_cholesky;
+
+    // The host: sent from the whole block it holds already, or from the
+    // columns just formed.
+    const double     *kept_block = whole_inverse_block();
+    const double     *source = kept_block ? kept_block : formed_columns.data();
+    std::vector<long> column_in_source(n_last, -1);
+    for (std::size_t c = 0; c < formed_positions.size(); ++c)
+      column_in_source[formed_positions[c]] =
+        kept_block ? formed_positions[c] : long(c);
+    for (int p = 1; p < size; ++p)
+      if (asked_counts[p] > 0)
+        {
+          // (p's columns sent straight from where they are: a datatype
+          // that picks them, no copy)
+          std::vector<MPI_Aint> picked_bytes(asked_counts[p]);
+          for (int c = 0; c < asked_counts[p]; ++c)
+            picked_bytes[c] =
+              column_in_source[asked_by_all[asked_offsets[p] + c]] * n_last *
+              MPI_Aint(sizeof(double));
+          MPI_Datatype picked;
+          MPI_Type_create_hindexed_block(
+            asked_counts[p], n_last, picked_bytes.data(), MPI_DOUBLE, &picked);
+          MPI_Type_commit(&picked);
+          MPI_Send(source, 1, picked, p, inverse_columns_tag, communicator);
+          MPI_Type_free(&picked);
+        }
+    if (!kept_block && formed_positions.size() == std::size_t(n_last))
+      {
+        // (the whole block, formed in place of L_S, is kept whole: the
+        // host's solves read it from now on)
+        wanted = formed_positions;
+        columns.swap(formed_columns);
+      }
+    else if (!kept_block)
+      {
+        columns.resize(std::size_t(n_last) * wanted.size());
+        for (std::size_t c = 0; c < wanted.size(); ++c)
+          std::copy_n(
+            &formed_columns[std::size_t(column_in_source[wanted[c]]) * n_last],
+            n_last,
+            &columns[c * n_last]);
+      }
+    std::vector<double>().swap(formed_columns);
+    std::vector<long>().swap(asked_by_all);
   }
 
 
@@ -440,7 +538,24 @@ namespace glissade
           {
             const int size = n_last, one = 1;
             int       info = 0;
-            if (schur_lu.empty())
+            if (schur_lu.empty() && schur.empty())
+              {
+                // (the whole inverse formed in place of L_S: C b)
+                const double        all = 1., none = 0.;
+                std::vector<double> b(reduced_rhs);
+                dgemv_("N",
+                       &size,
+                       &size,
+                       &all,
+                       whole_inverse_block(),
+                       &size,
+                       b.data(),
+                       &one,
+                       &none,
+                       reduced_rhs.data(),
+                       &one);
+              }
+            else if (schur_lu.empty())
               dpotrs_("L",
                       &size,
                       &one,

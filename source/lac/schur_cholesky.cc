@@ -191,8 +191,37 @@ namespace glissade
 
 
   void
-  SchurCholesky::trailing_factor(std::vector<double> &trailing,
-                                 const bool) const
+  SchurCholesky::take_request(const std::vector<long> &wanted)
+  {
+    asked_positions = wanted;
+  }
+
+
+
+  void
+  SchurCholesky::form_requested_columns()
+  {
+    std::vector<double> factor;
+    trailing_factor(factor);
+    columns_of_inverse(factor, n_last, asked_positions, true, formed_columns);
+  }
+
+
+
+  void
+  SchurCholesky::hand_over_columns(std::vector<long>   &wanted,
+                                   std::vector<double> &columns)
+  {
+    wanted.swap(asked_positions);
+    columns.swap(formed_columns);
+    asked_positions.clear();
+    std::vector<double>().swap(formed_columns);
+  }
+
+
+
+  void
+  SchurCholesky::trailing_factor(std::vector<double> &trailing) const
   {
     const cholmod_factor &L     = *cholmod->factor;
     const long            n     = L.n;

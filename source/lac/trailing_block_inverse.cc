@@ -1,6 +1,7 @@
 // The block of A^-1 on the unknowns eliminated last
 // (include/glissade/lac/trailing_block_inverse.h).
 
+#include <glissade/base/timing_sections.h>
 #include <glissade/lac/lapack.h>
 #include <glissade/lac/trailing_block_inverse.h>
 
@@ -12,11 +13,12 @@
 namespace glissade
 {
   void
-  TrailingBlockInverse::compute_inverse_columns(
+  TrailingBlockInverse::ask_for_inverse_columns(
     const std::vector<long> &positions)
   {
     if (n_last == 0)
       return;
+    const auto start = std::chrono::steady_clock::now();
     // The columns wanted: those asked for and those already formed.
     std::vector<long> wanted;
     if (column_of.size() != std::size_t(n_last))
@@ -32,65 +34,108 @@ namespace glissade
           wanted.push_back(j);
         }
     const bool needed = wanted.size() != formed;
-    if (!on_any_process(needed))
+    request_pending   = on_any_process(needed);
+    if (!request_pending)
       return; // every column is there already
-    share_trailing_factor();
-    if (!needed)
-      return;
-    std::sort(wanted.begin(), wanted.end());
-    const bool              whole_block = 3 * long(wanted.size()) >= n_last;
-    const std::vector<long> asked       = wanted;
-    if (whole_block)
+    // (a process that needs no new column asks for none and keeps those
+    // it has; one that does lets go of the old ones, formed again with
+    // the new: both at once would double the room they take)
+    if (needed)
       {
-        wanted.resize(n_last);
-        for (long j = 0; j < n_last; ++j)
-          wanted[j] = j;
+        std::sort(wanted.begin(), wanted.end());
+        std::vector<double>().swap(inverse_block);
+        std::fill(column_of.begin(), column_of.end(), -1);
       }
+    else
+      wanted.clear();
+    requested = wanted;
+    take_request(requested);
+    inverse_seconds += timing::seconds_since(start);
+  }
 
-    const auto          start = std::chrono::steady_clock::now();
-    std::vector<double> factor;
-    trailing_factor(factor, whole_block);
-    const int m    = n_last;
+
+
+  void
+  TrailingBlockInverse::form_asked_inverse_columns()
+  {
+    if (!request_pending)
+      return;
+    const auto start = std::chrono::steady_clock::now();
+    form_requested_columns();
+    inverse_seconds += timing::seconds_since(start);
+  }
+
+
+
+  void
+  TrailingBlockInverse::receive_inverse_columns()
+  {
+    if (!request_pending)
+      return;
+    const auto start           = std::chrono::steady_clock::now();
+    request_pending            = false;
+    const bool          needed = !requested.empty();
+    std::vector<double> columns;
+    hand_over_columns(requested, columns);
+    if (needed)
+      {
+        inverse_block.swap(columns);
+        for (std::size_t c = 0; c < requested.size(); ++c)
+          column_of[requested[c]] = c;
+      }
+    std::vector<long>().swap(requested);
+    inverse_seconds += timing::seconds_since(start);
+  }
+
+
+
+  void
+  TrailingBlockInverse::columns_of_inverse(std::vector<double> &factor,
+                                           const long           m,
+                                           std::vector<long>   &wanted,
+                                           const bool keep_whole_block,
+                                           std::vector<double> &columns)
+  {
+    const int size = m;
     int       info = 0;
-    if (whole_block)
+    if (wanted.empty())
+      columns.clear();
+    else if (3 * long(wanted.size()) >= m)
       {
         // (L_S L_S^T)^-1 in the lower triangle, then mirrored.
-        dpotri_("L", &m, factor.data(), &m, &info);
-        for (long j = 0; j < n_last && info == 0; ++j)
-          for (long i = j + 1; i < n_last; ++i)
-            factor[j + i * n_last] = factor[i + j * n_last];
-        inverse_block.swap(factor);
-        if (keep_only_asked_columns && info == 0 &&
-            asked.size() < std::size_t(n_last))
+        dpotri_("L", &size, factor.data(), &size, &info);
+        for (long j = 0; j < m && info == 0; ++j)
+          for (long i = j + 1; i < m; ++i)
+            factor[j + i * m] = factor[i + j * m];
+        if (keep_whole_block || wanted.size() == std::size_t(m))
           {
-            // (the columns asked for, copied out of the whole block)
-            std::vector<double> kept(std::size_t(n_last) * asked.size());
-            for (std::size_t c = 0; c < asked.size(); ++c)
-              std::copy_n(&inverse_block[std::size_t(asked[c]) * n_last],
-                          n_last,
-                          &kept[c * n_last]);
-            inverse_block.swap(kept);
-            wanted = asked;
+            columns.swap(factor);
+            wanted.resize(m);
+            for (long j = 0; j < m; ++j)
+              wanted[j] = j;
+          }
+        else
+          {
+            // (the columns wanted, copied out of the whole block)
+            columns.resize(std::size_t(m) * wanted.size());
+            for (std::size_t c = 0; c < wanted.size(); ++c)
+              std::copy_n(&factor[std::size_t(wanted[c]) * m],
+                          m,
+                          &columns[c * m]);
           }
       }
     else
       {
         // C e_j = (L_S L_S^T)^-1 e_j for each wanted column j.
         const int k = wanted.size();
-        inverse_block.assign(std::size_t(n_last) * k, 0.);
+        columns.assign(std::size_t(m) * k, 0.);
         for (int c = 0; c < k; ++c)
-          inverse_block[wanted[c] + std::size_t(c) * n_last] = 1.;
+          columns[wanted[c] + std::size_t(c) * m] = 1.;
         dpotrs_(
-          "L", &m, &k, factor.data(), &m, inverse_block.data(), &m, &info);
+          "L", &size, &k, factor.data(), &size, columns.data(), &size, &info);
       }
     if (info != 0)
       throw std::runtime_error("LAPACK dpotri/dpotrs failed with info " +
                                std::to_string(info));
-    std::fill(column_of.begin(), column_of.end(), -1);
-    for (std::size_t c = 0; c < wanted.size(); ++c)
-      column_of[wanted[c]] = c;
-    inverse_seconds +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-        .count();
   }
 } // namespace glissade

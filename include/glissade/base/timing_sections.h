@@ -1,5 +1,7 @@
 #pragma once
 
+#include <chrono>
+
 namespace glissade
 {
   /**
@@ -19,5 +21,14 @@ namespace glissade
     inline constexpr const char *local_solve = "local bi-potential solve";
     inline constexpr const char *output      = "output (VTU, PVD, CSV)";
     inline constexpr const char *checkpoints = "checkpoints";
+
+    /** The seconds since `start` (the timers kept beside TimerOutput's). */
+    inline double
+    seconds_since(const std::chrono::steady_clock::time_point start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+        .count();
+    }
   } // namespace timing
 } // namespace glissade

@@ -169,12 +169,26 @@ namespace glissade
 
     /**
      * What compliance_block() reads, formed and kept without reading it:
-     * ContactPort::prepare_compliance().
+     * ContactPort::prepare_compliance(), and its first two steps.
      */
     void
     prepare_compliance(
       const std::vector<dealii::types::global_dof_index> &rows,
       const std::vector<dealii::types::global_dof_index> &columns);
+
+    void
+    ask_for_compliance(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns)
+    {
+      port.ask_for_compliance(rows, columns, factorization);
+    }
+
+    void
+    form_asked_compliance()
+    {
+      port.form_asked_compliance(factorization);
+    }
 
     /** The contact block of K^-1: ContactPort::compliance_block(). */
     void

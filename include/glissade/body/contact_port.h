@@ -70,6 +70,10 @@ namespace glissade
      * `columns` reads (the factor's inverse columns, or the solves),
      * without reading it: where every body's columns are formed before
      * any is used (CondensedProblem). Collective as compliance_block().
+     * Where ask_for_compliance() and form_asked_compliance() were called
+     * for the same `rows` and `columns` (every body's in turn, so that the
+     * hosts of several bodies' factorisations form their columns at once),
+     * it completes what they began.
      */
     void
     prepare_compliance(
@@ -78,12 +82,26 @@ namespace glissade
       DirectSolver                                       &factorization,
       const HomogeneousSolve                             &solve);
 
+    /** The first step of prepare_compliance(): what is wanted, asked for
+     *  (collective). */
+    void
+    ask_for_compliance(
+      const std::vector<dealii::types::global_dof_index> &rows,
+      const std::vector<dealii::types::global_dof_index> &columns,
+      DirectSolver                                       &factorization);
+
+    /** The second: the columns of the factor's inverse asked for, formed
+     *  where this process forms them (alone, not collective). */
+    void
+    form_asked_compliance(DirectSolver &factorization);
+
     /** The factorisation changed: the compliance kept is stale. */
     void
     forget_compliance()
     {
       contact_rows_resolved.clear();
       compliance_columns.clear();
+      compliance_asked = false;
     }
 
   private:
@@ -130,5 +148,13 @@ namespace glissade
     /** solve(e_dof) of the current factorisation, by dof. */
     std::map<dealii::types::global_dof_index, dealii::Vector<double>>
       compliance_columns;
+    /**
+     * Between ask_for_compliance() and prepare_compliance(): the dofs
+     * whose columns take a solve, and whether the declared ones' were
+     * asked of the factor.
+     */
+    std::vector<unsigned long> lacking_columns;
+    bool                       compliance_asked = false;
+    bool                       asked_of_factor  = false;
   };
 } // namespace glissade

@@ -31,6 +31,19 @@ dgemm_(const char   *transa,
        const int    *ldc);
 
 extern "C" void
+dgemv_(const char   *trans,
+       const int    *m,
+       const int    *n,
+       const double *alpha,
+       const double *a,
+       const int    *lda,
+       const double *x,
+       const int    *incx,
+       const double *beta,
+       double       *y,
+       const int    *incy);
+
+extern "C" void
 dgelsy_(const int    *m,
         const int    *n,
         const int    *nrhs,

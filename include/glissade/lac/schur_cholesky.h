@@ -65,14 +65,31 @@ namespace glissade
     double factorization_seconds = 0.;
 
   private:
+    /**
+     * The columns of C asked for, from L_cc (trailing_factor): on one
+     * process, formed and handed over as they are (the whole block kept
+     * when it is formed).
+     */
+    void
+    take_request(const std::vector<long> &wanted) override;
+
+    void
+    form_requested_columns() override;
+
+    void
+    hand_over_columns(std::vector<long>   &wanted,
+                      std::vector<double> &columns) override;
+
     /** L_cc, copied out of the supernodes that hold it. */
     void
-    trailing_factor(std::vector<double> &factor,
-                    const bool           last_use) const override;
+    trailing_factor(std::vector<double> &factor) const;
 
     struct Cholmod;
     std::unique_ptr<Cholmod> cholmod;
     std::vector<long>        last_unknowns;
     bool                     analysed = false;
+    /** The positions asked for, and their columns once formed. */
+    std::vector<long>   asked_positions;
+    std::vector<double> formed_columns;
   };
 } // namespace glissade

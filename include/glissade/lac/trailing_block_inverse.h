@@ -10,16 +10,18 @@ namespace glissade
    * C = S^-1 = (L_S L_S^T)^-1. Both factorisations that eliminate the
    * contact dofs last provide L_S: CHOLMOD's trailing block of the whole
    * factor (SchurCholesky, one process) and MUMPS's Schur complement,
-   * factorised densely (MumpsFactorization, several processes); the
-   * columns of C are formed here alike.
+   * factorised densely on MUMPS's host (MumpsFactorization, several
+   * processes); the columns of C are formed from it alike
+   * (columns_of_inverse).
    *
    * Columns are formed on demand: each costs two triangular solves (LAPACK
    * dpotrs, 2 m^2 flops); from a third of the m columns on, the whole
    * block by dpotri ((2/3) m^3) is cheaper and is formed instead. Columns
    * already formed for the current factorisation are kept: all of the
-   * whole block, or only those asked for where `keep_only_asked_columns`
-   * (on several processes each asks for its share of the columns, and
-   * keeping the whole block would hold it on every process).
+   * whole block on one process; on several, each process keeps the
+   * columns it asked for (its share of the contact's columns), which the
+   * host forms and sends it (holding the whole block, or L_S, on every
+   * process would be 82 MB per body at 3,200 contact dofs).
    */
   class TrailingBlockInverse
   {
@@ -28,10 +30,37 @@ namespace glissade
 
     /**
      * Makes the columns of C at the given positions (among the m
-     * unknowns) available.
+     * unknowns) available: the three steps below at once. Collective
+     * where several processes share the factorisation.
      */
     void
-    compute_inverse_columns(const std::vector<long> &positions);
+    compute_inverse_columns(const std::vector<long> &positions)
+    {
+      ask_for_inverse_columns(positions);
+      form_asked_inverse_columns();
+      receive_inverse_columns();
+    }
+
+    /**
+     * The steps of compute_inverse_columns(), taken for every body's
+     * factorisation in turn, so that the hosts of several factorisations
+     * form their columns at once: the columns at `positions` asked for
+     * (collective), ...
+     */
+    void
+    ask_for_inverse_columns(const std::vector<long> &positions);
+
+    /**
+     * ... formed, by this process alone (on several processes, by the
+     * host of the factorisation, for all of them; the others do nothing
+     * here), ...
+     */
+    void
+    form_asked_inverse_columns();
+
+    /** ... and received (collective), readable then by inverse_entry(). */
+    void
+    receive_inverse_columns();
 
     /** Position of an unknown among the last unknowns, or -1. */
     long
@@ -59,13 +88,27 @@ namespace glissade
 
   protected:
     /**
-     * L_S, lower triangle, column major, m x m (the strict upper triangle
-     * is not read). `last_use`: the whole block is being formed, so that a
-     * copy kept only for the columns may be handed over instead of copied
-     * (a later call must then make it again).
+     * The three steps of forming columns of C, as the factorisation takes
+     * them. take_request(): the positions `wanted` (sorted, each once; none
+     * on a process that needs no new column) that this process asks for
+     * (collective where several processes share the factorisation).
      */
     virtual void
-    trailing_factor(std::vector<double> &factor, const bool last_use) const = 0;
+    take_request(const std::vector<long> &wanted) = 0;
+
+    /** form_requested_columns(): the work of forming them (local). */
+    virtual void
+    form_requested_columns() = 0;
+
+    /**
+     * hand_over_columns(): this process's columns, column major, n_last
+     * rows, in the order of `wanted` (collective). A factorisation that
+     * forms the whole block may keep all of it: it then widens `wanted` to
+     * every position.
+     */
+    virtual void
+    hand_over_columns(std::vector<long>   &wanted,
+                      std::vector<double> &columns) = 0;
 
     /**
      * Whether `value` holds on any of the processes that share the
@@ -78,14 +121,32 @@ namespace glissade
     }
 
     /**
-     * Collective where several processes share the factorisation, before
-     * trailing_factor() on any of them: each is made to hold L_S. (Each
-     * asks for its own columns of C, so not every process that takes part
-     * forms any.)
+     * The columns at `wanted` of (L_S L_S^T)^-1, L_S in the lower triangle
+     * of `factor` (m x m, column major; overwritten): by two triangular
+     * solves per column, or from a third of the m columns on by the whole
+     * block (dpotri), all of whose columns are then returned where
+     * `keep_whole_block` (and `wanted` widened to all of them). Throws if
+     * LAPACK fails.
      */
-    virtual void
-    share_trailing_factor() const
-    {}
+    static void
+    columns_of_inverse(std::vector<double> &factor,
+                       const long           m,
+                       std::vector<long>   &wanted,
+                       const bool           keep_whole_block,
+                       std::vector<double> &columns);
+
+    /**
+     * The whole of C, column major, where this process holds every column
+     * (nullptr otherwise): MUMPS's host solves with it once it has formed
+     * the whole block in place of the factor of S.
+     */
+    const double *
+    whole_inverse_block() const
+    {
+      return n_last > 0 && n_inverse_columns() == n_last ?
+               inverse_block.data() :
+               nullptr;
+    }
 
     /** A new factorisation: the columns formed are stale. */
     void
@@ -94,19 +155,22 @@ namespace glissade
       // (released, not only emptied: the next factorisation needs the room)
       std::vector<double>().swap(inverse_block);
       column_of.clear();
+      requested.clear();
+      request_pending = false;
     }
 
     /** Per unknown of A, its position among the m last ones, or -1. */
     std::vector<long> position;
     long              n_last = 0;
 
-    /** Keep only the columns asked for when the whole block is formed. */
-    bool keep_only_asked_columns = false;
-
   private:
     /** Formed columns of C, column major, n_last rows. */
     std::vector<double> inverse_block;
     /** Column of inverse_block holding C's column j, or -1. */
     std::vector<long> column_of;
+    /** The positions asked for and not yet received (this process's). */
+    std::vector<long> requested;
+    /** Whether any process asked for a column not yet received. */
+    bool request_pending = false;
   };
 } // namespace glissade

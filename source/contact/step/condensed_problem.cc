@@ -565,11 +565,20 @@ namespace glissade
       }
 
     // C's columns formed for every body first, and only then read and the
-    // products made: forming them passes through copies of the Schur
-    // complement's factor and the whole inverse block, which then never
-    // sit beside the products (82 MB each at 3,200 contact dofs).
+    // products made: forming them passes through the whole inverse block,
+    // which then never sits beside the products (82 MB at 3,200 contact
+    // dofs). On several processes each body's factorisation has its host
+    // form every process's columns: all bodies' asked for first, so that
+    // the hosts of different bodies form theirs at once, then received.
     // (Collective on several processes: called by each, even one whose
     // loads do not reach the body.)
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!per_body[b].row_dofs.empty())
+        bodies[b]->system().ask_for_compliance(per_body[b].row_dofs,
+                                               per_body[b].column_dofs);
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      if (!per_body[b].row_dofs.empty())
+        bodies[b]->system().form_asked_compliance();
     for (unsigned int b = 0; b < bodies.size(); ++b)
       if (!per_body[b].row_dofs.empty())
         bodies[b]->system().prepare_compliance(per_body[b].row_dofs,
