@@ -11,6 +11,11 @@
 # the run on N processes alone: --set "Linear solver/Factors out of
 # core=true" for MUMPS's factors in files.
 #
+# ONE_THREAD=1 before the command holds every process to one thread
+# (OMP_NUM_THREADS, OPENBLAS_NUM_THREADS, DEAL_II_NUM_THREADS): the
+# speed-up printed is then core for core, N processes against one on one
+# core (on a machine of two cores, one process otherwise uses both).
+#
 # Also printed: each process's resident memory after the phases of a
 # Newton iteration (GLISSADE_DEBUG's memory lines, the largest over the
 # iterations; the model of doc/parallel.md is checked against them), and
@@ -28,6 +33,11 @@ n=${4:-2}
 shift $(($# < 4 ? $# : 4))
 here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
+threads=()
+if [ "${ONE_THREAD:-0}" = 1 ]; then
+  export OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 DEAL_II_NUM_THREADS=1
+  threads=(-x OMP_NUM_THREADS -x OPENBLAS_NUM_THREADS -x DEAL_II_NUM_THREADS)
+fi
 trap 'rm -rf "$work"' EXIT
 scene=(
   "$here/peers/glissade_rings.prm"
@@ -60,7 +70,7 @@ monitored() {
   local label=$1
   shift
   mpirun --allow-run-as-root --oversubscribe -np "$n" -x GLISSADE_DEBUG=1 \
-    "${monitoring[@]}" \
+    "${threads[@]}" "${monitoring[@]}" \
     ${monitoring:+--mca pml_monitoring_filename "$work/sent.$label"} "$@"
 }
 run one env GLISSADE_DEBUG=1 "$work/timed.sh" "$program" "${scene[@]}" \
