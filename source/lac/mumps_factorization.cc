@@ -429,8 +429,7 @@ namespace glissade
     // would be a second m x m array on the host)
     try
       {
-        columns_of_inverse(
-          schur, n_last, formed_positions, true, formed_columns);
+        columns_of_inverse(schur, n_last, formed_positions, formed_columns);
       }
     catch (const std::runtime_error &)
       {

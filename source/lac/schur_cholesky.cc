@@ -203,7 +203,7 @@ namespace glissade
   {
     std::vector<double> factor;
     trailing_factor(factor);
-    columns_of_inverse(factor, n_last, asked_positions, true, formed_columns);
+    columns_of_inverse(factor, n_last, asked_positions, formed_columns);
   }
 
 

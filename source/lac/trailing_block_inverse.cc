@@ -93,7 +93,6 @@ namespace glissade
   TrailingBlockInverse::columns_of_inverse(std::vector<double> &factor,
                                            const long           m,
                                            std::vector<long>   &wanted,
-                                           const bool keep_whole_block,
                                            std::vector<double> &columns)
   {
     const int size = m;
@@ -102,27 +101,16 @@ namespace glissade
       columns.clear();
     else if (3 * long(wanted.size()) >= m)
       {
-        // (L_S L_S^T)^-1 in the lower triangle, then mirrored.
+        // (L_S L_S^T)^-1 in the lower triangle, then mirrored, in place:
+        // every column is then there.
         dpotri_("L", &size, factor.data(), &size, &info);
         for (long j = 0; j < m && info == 0; ++j)
           for (long i = j + 1; i < m; ++i)
             factor[j + i * m] = factor[i + j * m];
-        if (keep_whole_block || wanted.size() == std::size_t(m))
-          {
-            columns.swap(factor);
-            wanted.resize(m);
-            for (long j = 0; j < m; ++j)
-              wanted[j] = j;
-          }
-        else
-          {
-            // (the columns wanted, copied out of the whole block)
-            columns.resize(std::size_t(m) * wanted.size());
-            for (std::size_t c = 0; c < wanted.size(); ++c)
-              std::copy_n(&factor[std::size_t(wanted[c]) * m],
-                          m,
-                          &columns[c * m]);
-          }
+        columns.swap(factor);
+        wanted.resize(m);
+        for (long j = 0; j < m; ++j)
+          wanted[j] = j;
       }
     else
       {

@@ -122,17 +122,16 @@ namespace glissade
 
     /**
      * The columns at `wanted` of (L_S L_S^T)^-1, L_S in the lower triangle
-     * of `factor` (m x m, column major; overwritten): by two triangular
-     * solves per column, or from a third of the m columns on by the whole
-     * block (dpotri), all of whose columns are then returned where
-     * `keep_whole_block` (and `wanted` widened to all of them). Throws if
-     * LAPACK fails.
+     * of `factor` (m x m, column major): by two triangular solves per
+     * column (`factor` only read), or from a third of the m columns on by
+     * the whole block (dpotri), formed in `factor`'s array and handed over
+     * whole (`factor` left empty, `wanted` widened to every position).
+     * Throws if LAPACK fails.
      */
     static void
     columns_of_inverse(std::vector<double> &factor,
                        const long           m,
                        std::vector<long>   &wanted,
-                       const bool           keep_whole_block,
                        std::vector<double> &columns);
 
     /**
