@@ -92,21 +92,27 @@ namespace
                                unprefixed;
     if (on_obstacle_mortar)
       contact += " set Discretisation = mortar\n";
+    // nurbs_curve_end: the wavy floor ending at x = 0.6, under the block
+    // (an open end between two slave nodes).
+    const bool curve_obstacle =
+      kind == "nurbs_curve" || kind == "nurbs_curve_end";
     if (kind == "line" || kind == "disk" || kind == "hole" ||
-        kind == "casing" || kind == "nurbs_curve")
+        kind == "casing" || curve_obstacle)
       {
         text += "subsection Scene\n set Bodies = upper\n"
                 " set Contact pairs = interface\nend\n";
         contact += " subsection Obstacle\n  set Type = " +
-                   (kind == "nurbs_curve" ? std::string("nurbs curve") : kind) +
+                   (curve_obstacle ? std::string("nurbs curve") : kind) +
                    "\n  set Motion = 0.013*t, -0.004*t\n";
-        if (kind == "nurbs_curve")
+        if (curve_obstacle)
           // A wavy rational cubic under the block, turning about a point
           // below it: its curvature changes along the block.
-          contact +=
-            "  set Curve file = " + source_path("prm/meshes/wavy_floor.nurbs") +
-            "\n  set Point = 0.5, 0.3\n"
-            "  set Rotation = 0.004 + 0.004*t\n";
+          contact += "  set Curve file = " +
+                     source_path(kind == "nurbs_curve" ?
+                                   "prm/meshes/wavy_floor.nurbs" :
+                                   "prm/meshes/wavy_floor_end.nurbs") +
+                     "\n  set Point = 0.5, 0.3\n"
+                     "  set Rotation = 0.004 + 0.004*t\n";
         else if (kind == "line")
           contact += "  set Point = 0, 0.49\n  set Normal = 0.1, 1\n";
         else if (kind == "disk")
@@ -246,6 +252,16 @@ namespace
         }
     pair.update_geometry();
     check(n_active >= 3, "at least three active nodes");
+    if (master.size() > 4 && master.compare(master.size() - 4, 4, "_end") == 0)
+      {
+        std::cout << "  " << n_active << " of " << pair.nodes().size()
+                  << " slave points before the obstacle's end" << std::endl;
+        // (the three slave points past x = 0.6 out, and every point
+        // before it in, the last one's face crossing the end)
+        check(n_active + 3 == pair.nodes().size(),
+              "the points before the obstacle's end in contact, those past "
+              "it out");
+      }
     if (master == "faceted_vertex")
       {
         unsigned int at_vertex = 0;
@@ -454,6 +470,10 @@ CONTACT_TANGENT_TEST(nurbs_curve, stick)
 CONTACT_TANGENT_TEST(nurbs_curve, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs_curve, slip)
 CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_nurbs_curve, slip)
+CONTACT_TANGENT_TEST(nurbs_curve_end, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_curve_end, frictionless)
+CONTACT_TANGENT_TEST(mortar_nurbs_curve_end, slip)
+CONTACT_TANGENT_TEST(mortar_nurbs_slave_on_nurbs_curve_end, slip)
 CONTACT_TANGENT_TEST(casing, frictionless)
 CONTACT_TANGENT_TEST(casing, stick)
 CONTACT_TANGENT_TEST(casing, slip)

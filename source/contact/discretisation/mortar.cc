@@ -52,6 +52,12 @@ namespace glissade
       std::array<Accumulated, 2> Y, moved;
       /** A face point had no counterpart on the obstacle. */
       bool uncovered = false;
+      /**
+       * A point of one of its faces was past an open obstacle's end (and
+       * integrated against the end's tangent line): the node counts only
+       * if it is not past the end itself.
+       */
+      bool next_to_open_end = false;
     };
 
 
@@ -683,12 +689,15 @@ namespace glissade
           const DualPoint    x = X[0] + MortarDual(s) * dX;
           const SurfacePoint point =
             surface.project(Point<2>(x.x.value, x.y.value));
-          if (!point.valid)
+          if (point.beyond_open_end)
+            state[a].next_to_open_end = state[b].next_to_open_end = true;
+          else if (!point.valid)
             {
               state[a].uncovered = state[b].uncovered = true;
               return;
             }
-          // The closest point and its material's motion, moving with x.
+          // The closest point (or past an open end, the point on the end's
+          // tangent line) and its material's motion, moving with x.
           const mortar::CurvePoint on_obstacle =
             mortar::obstacle_point(point, x);
           const auto      &y    = on_obstacle.y;
@@ -763,6 +772,16 @@ namespace glissade
                i + (chain->closed ? 0 : 1) < master_points.size();
                ++i)
             integrate(f, i);
+      // Next to an open obstacle's end, a node counts as a node-to-segment
+      // node does: if it is not past the end itself (its faces' parts past
+      // the end were integrated against the end's tangent line, so that
+      // the node at the end carries its whole support, and its neighbour
+      // past the end none).
+      if (chain == nullptr)
+        for (unsigned int j = 0; j < slave_points.size(); ++j)
+          if (state[j].next_to_open_end && !state[j].uncovered &&
+              !surface.project(slave_positions[j]).valid)
+            state[j].uncovered = true;
 
       // A node counts when the master covers enough of its support that
       // its weights m_jk = M_jk / D_j stay bounded: at the master's ends,

@@ -46,6 +46,10 @@ namespace glissade
       double coverage = 0.;
       /** Against an obstacle: a point of its spans had no counterpart. */
       bool uncovered = false;
+      /** A point of its spans was past an open obstacle's end (integrated
+       *  against the end's tangent line): it counts only if its Greville
+       *  point is not past the end itself. */
+      bool next_to_open_end = false;
       /** int psi_A n (the point's mean normal, for its frame). */
       Tensor<1, 2> mean_normal;
       /** D_A = int R_A: the point's share of the covered slave curve. */
@@ -725,13 +729,17 @@ namespace glissade
           const DualPoint    n{dx.y / speed, -dx.x / speed};
           const SurfacePoint point =
             surface.project(Point<2>(x.x.value, x.y.value));
-          if (!point.valid)
+          if (point.beyond_open_end)
+            for (const unsigned int k : controls)
+              state[point_of_control[k]].next_to_open_end = true;
+          else if (!point.valid)
             {
               for (const unsigned int k : controls)
                 state[point_of_control[k]].uncovered = true;
               return;
             }
-          // The closest point and its material's motion, moving with x.
+          // The closest point (or past an open end, the point on the end's
+          // tangent line) and its material's motion, moving with x.
           const mortar::CurvePoint on_obstacle =
             mortar::obstacle_point(point, x);
           const auto      &y      = on_obstacle.y;
@@ -854,8 +862,23 @@ namespace glissade
         s = PointState();
       std::vector<bool> carried(control_dofs.size(), true);
       if (chain == nullptr)
-        for (unsigned int f = 0; f < spans.size(); ++f)
-          integrate_on_obstacle(f);
+        {
+          for (unsigned int f = 0; f < spans.size(); ++f)
+            integrate_on_obstacle(f);
+          // Next to an open obstacle's end, a point counts as a
+          // node-to-segment node does: if its Greville point is not past
+          // the end.
+          for (unsigned int j = 0; j < state.size(); ++j)
+            if (state[j].next_to_open_end && !state[j].uncovered)
+              {
+                const Greville    &g = greville_of_point[j];
+                MasterCurve::Point c0{}, c1{}, c2{};
+                slave_curves[g.curve].curve->evaluate(
+                  g.segment, g.s, c0, c1, c2);
+                if (!surface.project(Point<2>(c0[0], c0[1])).valid)
+                  state[j].uncovered = true;
+              }
+        }
       else
         {
           const std::vector<double> reach = reach_of_spans(carried);

@@ -283,21 +283,35 @@ namespace glissade
         const CurveSample  c     = curve_at(curve, best_span, best_u);
         const double       speed = c.first.norm();
         const Tensor<1, 2> t     = c.first / speed;
+        const Tensor<1, 2> n({-t[1], t[0]});
         // Beyond an open end the nearest point is the end, where x does not
-        // lie on its normal: no counterpart there.
+        // lie on its normal: no counterpart there (the end's tangent line
+        // continued to x's foot is what mortar may integrate against).
         const auto &knots = curve.basis.knots();
         if (!curve.closed &&
             (best_u == knots.front() || best_u == knots.back()) &&
             std::abs((X - c.point) * t) > 1e-10 * std::max(size, 1.))
-          return SurfacePoint();
-        const Tensor<1, 2> n({-t[1], t[0]});
-        SurfacePoint       p = point(x,
+          {
+            const Point<2> foot = c.point + ((X - c.point) * t) * t;
+            SurfacePoint   p =
+              point(x,
+                    position + rotated(foot - reference(), angle),
+                    rotated(n, angle),
+                    speed,
+                    Tensor<1, 2>());
+            p.valid           = false;
+            p.beyond_open_end = true;
+            p.segment         = best_span;
+            p.s               = best_u;
+            return p;
+          }
+        SurfacePoint p = point(x,
                                position + rotated(c.point - reference(), angle),
                                rotated(n, angle),
                                speed,
                                rotated(c.second, angle));
-        p.segment            = best_span;
-        p.s                  = best_u;
+        p.segment      = best_span;
+        p.s            = best_u;
         return p;
       }
 

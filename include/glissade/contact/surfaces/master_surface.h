@@ -36,6 +36,17 @@ namespace glissade
     /** False if the node has no counterpart (beyond an open end). */
     bool valid = false;
 
+    /**
+     * Not valid, and beyond a rigid obstacle's open end: the point is then
+     * the foot of x on the end's tangent line (the obstacle continued
+     * straight past its end), with the end's normal and c'' = 0. Mortar
+     * integrates the part of a slave face that passes the end against it,
+     * so that a node at the end sees the obstacle over its whole support
+     * (as node-to-segment sees it at the node); whether a node counts is
+     * its own point's validity.
+     */
+    bool beyond_open_end = false;
+
     /** Segment and local coordinate s (in [0, 1], or a faceted extension). */
     int    segment = -1;
     double s       = 0.;
