@@ -2,8 +2,9 @@
 // issue 52): a circle written as a NURBS curve is exactly the analytic
 // hole and disk (the same answers to round-off, knot-to-segment and
 // mortar, a moving and turning disk with friction), and a curve file that
-// is wrong is refused with the file and what is wrong. The tangents on a
-// wavy NURBS floor are in contact_tangent_test.cc.
+// is wrong is refused with the file and what is wrong; a block pushed off
+// the end of an open curve runs through. The tangents on a wavy NURBS floor
+// are in contact_tangent_test.cc.
 
 #include <glissade/body/body_measures.h>
 
@@ -202,6 +203,127 @@ GLISSADE_TEST(nurbs_curve_obstacle_is_the_circle)
       std::cout << std::endl;
       check(force[1] > 1. && std::abs(force[0]) > 0.01 * force[1],
             "the block presses on the disk and rubs it");
+    }
+}
+
+
+
+// A block pushed off a rigid table's edge (an open NURBS curve's end),
+// frictionless, its top pressed down by 0.01 and dragged by its whole width:
+// the nodes at the edge, whose equilibrium is at the end, slid off and came
+// back behind the table at every Newton iteration, and both discretisations
+// stopped at t = 0.625 (six cut-backs). Each now runs to t = 1, and:
+// - while the block is wholly on the table (t in [0.1, 0.5]) the table's
+//   force does not change (a frictionless rigid translation),
+// - at every increment's end every node before the edge (x <= 1.5) is in
+//   contact, and past it at most the one node that held contact at the
+//   edge within the increment (kept to the increment's end, as at a
+//   deformable master's end), no farther past than the increment's drag,
+// - the table's force falls as the nodes leave it,
+// - the table's force is the top's reaction (both components).
+GLISSADE_TEST(nurbs_curve_obstacle_block_pushed_off_its_end)
+{
+  std::filesystem::create_directories("output/nurbs_obstacle_edge");
+  const std::string table = "output/nurbs_obstacle_edge/table.nurbs";
+  std::ofstream(table)
+    << "degree 1\nknots 0 0 1 1\ncontrol points 2\n-1 0 1\n1.5 0 1\n";
+  const double edge = 1.5;
+  for (const std::string discretisation : {"node-to-segment", "mortar"})
+    {
+      const std::string scene =
+        "subsection Scene\n set Bodies = block\n"
+        " set Contact pairs = table\nend\n"
+        "subsection Body block\n subsection Mesh\n  set Type = rectangle\n"
+        "  set Corner 1 = 0, 0\n  set Corner 2 = 1, 0.5\n"
+        "  set Subdivisions = 20, 10\n end\n"
+        " subsection Material\n  set Young modulus = 1000\n"
+        "  set Poisson ratio = 0.3\n end\n"
+        " subsection Boundary conditions\n"
+        "  set Prescribed displacement = top: x: t; top: y: "
+        "-0.01*min(1, 10*t)\n end\nend\n"
+        "subsection Contact table\n set Slave body = block\n"
+        " set Slave boundary = bottom\n set Alert distance = 0.05\n"
+        " set Discretisation = " +
+        discretisation +
+        "\n subsection Obstacle\n  set Type = nurbs curve\n"
+        "  set Curve file = " +
+        std::filesystem::absolute(table).string() +
+        "\n end\nend\n"
+        "subsection Load program\n set Stage end times = 1\n"
+        " set Stage increments = 40\nend\n"
+        "subsection Output\n set Directory = output/nurbs_obstacle_edge/" +
+        discretisation +
+        "\n set Progress = false\n set VTU interval = 0\nend\n";
+      Simulation         simulation(SceneReader::read_string(scene, "edge"));
+      const ContactPair &pair     = *simulation.contact().contact_pairs()[0];
+      const Body        &block    = simulation.body("block");
+      double             on_table = 0., last = 0., off_by = 0., rise = 0.;
+      double             imbalance     = 0.;
+      double             farthest_held = 0.;
+      unsigned int       missing = 0, most_held = 0, with_held = 0;
+      unsigned int       increments = 0;
+      simulation.on_increment       = [&](unsigned int, double t) {
+        ++increments;
+        const Tensor<1, 2> force   = pair.total_force();
+        const Tensor<1, 2> support = support_reaction(block, "top");
+        imbalance =
+          std::max(imbalance, (force + support).norm() / force.norm());
+        unsigned int held_here = 0;
+        for (const ContactNode &node : pair.nodes())
+          {
+            const double x = node.reference_position[0] +
+                             node.displacement(block.displacement())[0];
+            if (x <= edge + 1e-9)
+              missing += !node.active;
+            else if (node.active)
+              {
+                ++held_here;
+                farthest_held = std::max(farthest_held, x - edge);
+              }
+          }
+        most_held = std::max(most_held, held_here);
+        with_held += held_here > 0;
+        const double carried = std::abs(force[1]);
+        if (t >= 0.1 - 1e-12 && t <= 0.5 + 1e-12)
+          {
+            if (on_table == 0.)
+              on_table = carried;
+            off_by = std::max(off_by, std::abs(carried - on_table) / on_table);
+          }
+        if (t > 0.5 + 1e-12)
+          rise = std::max(rise, (carried - last) / on_table);
+        last = carried;
+      };
+      simulation.run();
+      std::cout << "  " << discretisation << ": " << increments
+                << " increments to t = 1; the table's force on the table "
+                << on_table << " (changed by " << off_by << "), at t = 1 "
+                << last << " (largest rise " << rise
+                << "); nodes before the edge out of contact: " << missing
+                << "; increments that end with a node past the edge held: "
+                << with_held << " (at most " << most_held << " at once, "
+                << farthest_held
+                << " past the edge); the force against the "
+                   "top's reaction "
+                << imbalance << std::endl;
+      check(increments == 40, discretisation + ": not every increment ran");
+      check(off_by <= 1e-9,
+            discretisation + ": the force changed while the block slid on "
+                             "the table");
+      check(rise <= 1e-9 && last < 0.7 * on_table,
+            discretisation + ": the force does not fall as the block leaves "
+                             "the table");
+      check(missing == 0,
+            discretisation + ": a node before the edge is out of contact");
+      // A node that held contact at the edge keeps it to the increment's
+      // end (the obstacle's end continued along its tangent), as at a
+      // deformable master's end: one node at most, no farther past the
+      // edge than the increment's drag (1 / 40) and the block's own
+      // lateral strain.
+      check(most_held <= 1 && farthest_held <= 1. / 40. + 0.002,
+            discretisation + ": nodes past the edge kept in contact");
+      check(imbalance <= 1e-8,
+            discretisation + ": the table's force is not the top's reaction");
     }
 }
 

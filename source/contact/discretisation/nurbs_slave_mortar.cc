@@ -50,6 +50,11 @@ namespace glissade
        *  against the end's tangent line): it counts only if its Greville
        *  point is not past the end itself. */
       bool next_to_open_end = false;
+      /** Its Greville point is past an open obstacle's end: it counts only
+       *  if held there within the increment (project()). */
+      bool past_open_end = false;
+      /** ...and near enough to it to be held there. */
+      bool may_be_held = false;
       /** int psi_A n (the point's mean normal, for its frame). */
       Tensor<1, 2> mean_normal;
       /** D_A = int R_A: the point's share of the covered slave curve. */
@@ -875,8 +880,9 @@ namespace glissade
                 MasterCurve::Point c0{}, c1{}, c2{};
                 slave_curves[g.curve].curve->evaluate(
                   g.segment, g.s, c0, c1, c2);
-                if (!surface.project(Point<2>(c0[0], c0[1])).valid)
-                  state[j].uncovered = true;
+                const Point<2> x(c0[0], c0[1]);
+                state[j].past_open_end = !surface.project(x).valid;
+                state[j].may_be_held = surface.project(x, {-1, 0., true}).valid;
               }
         }
       else
@@ -950,6 +956,10 @@ namespace glissade
       // slaves, mortar.cc).
       const PointState &s = state[at->second];
       if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
+        return false;
+      // (past an open obstacle's end: only if held there, as in mortar.cc)
+      if (s.past_open_end && !(s.may_be_held && keep_segment && node.active &&
+                               node.segment_switches >= 2))
         return false;
       const double D = s.D.value;
 

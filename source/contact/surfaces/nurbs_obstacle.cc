@@ -235,7 +235,7 @@ namespace glissade
       }
 
       SurfacePoint
-      project(const Point<2> &x, const SegmentHint &) const override
+      project(const Point<2> &x, const SegmentHint &keep) const override
       {
         // (in the curve's own frame, where the file has it)
         const Point<2>     X    = reference() + rotated(x - position, -angle);
@@ -286,11 +286,20 @@ namespace glissade
         const Tensor<1, 2> n({-t[1], t[0]});
         // Beyond an open end the nearest point is the end, where x does not
         // lie on its normal: no counterpart there (the end's tangent line
-        // continued to x's foot is what mortar may integrate against).
-        const auto &knots = curve.basis.knots();
+        // continued to x's foot is what mortar may integrate against). A
+        // node that slid past the end within the increment after holding
+        // contact there (`held`: ContactPair::update_geometry) keeps the
+        // tangent line, up to half the end span's chord past the end, until
+        // the increment ends: else a node whose equilibrium is at the end
+        // (the edge of a table a block is pushed off) slides off, comes
+        // back behind the obstacle and slides off again at every Newton
+        // iteration. A deformable master's end segments are kept the same
+        // way.
+        const auto  &knots = curve.basis.knots();
+        const double past  = std::abs((X - c.point) * t);
         if (!curve.closed &&
             (best_u == knots.front() || best_u == knots.back()) &&
-            std::abs((X - c.point) * t) > 1e-10 * std::max(size, 1.))
+            past > 1e-10 * std::max(size, 1.))
           {
             const Point<2> foot = c.point + ((X - c.point) * t) * t;
             SurfacePoint   p =
@@ -299,8 +308,13 @@ namespace glissade
                     rotated(n, angle),
                     speed,
                     Tensor<1, 2>());
-            p.valid           = false;
-            p.beyond_open_end = true;
+            const auto   span = curve.basis.span_range(best_span);
+            const double half_chord =
+              0.5 * (curve_at(curve, best_span, span[1]).point -
+                     curve_at(curve, best_span, span[0]).point)
+                      .norm();
+            p.valid           = keep.held && past <= half_chord;
+            p.beyond_open_end = !p.valid;
             p.segment         = best_span;
             p.s               = best_u;
             return p;

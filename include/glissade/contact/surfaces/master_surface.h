@@ -43,7 +43,8 @@ namespace glissade
      * integrates the part of a slave face that passes the end against it,
      * so that a node at the end sees the obstacle over its whole support
      * (as node-to-segment sees it at the node); whether a node counts is
-     * its own point's validity.
+     * its own point's validity. (A node held there within the increment,
+     * SegmentHint::held, gets the same point, valid.)
      */
     bool beyond_open_end = false;
 
