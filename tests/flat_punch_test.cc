@@ -286,9 +286,9 @@ GLISSADE_TEST(contact_flat_punch_boussinesq)
 // every node slips, and the pressure under a sliding flat punch is
 // p(x) ~ (a + x)^(-1/2 - gamma) (a - x)^(-1/2 + gamma) about the punch's
 // centre, x along its motion, with tan(pi gamma) = mu (1 - 2 nu) /
-// (2 (1 - nu)) (Johnson, Contact Mechanics, 5.7: the friction's
-// tangential traction lifts the surface behind it, so the trailing edge
-// carries more). 2 gamma is fitted to the nodes within 0.6 a as the slope
+// (2 (1 - nu)) (Johnson, Contact Mechanics, the sliding flat punch: the
+// friction's tangential traction lifts the surface behind it, so the trailing
+// edge carries more). 2 gamma is fitted to the nodes within 0.6 a as the slope
 // of ln p + ln(a^2 - x^2) / 2 against ln((a + x) / (a - x)), on blocks of
 // half-width and depth D = 8 a, 16 a and 32 a (h = a / 20 along the top,
 // the depth graded fiftyfold towards it: the finite block holds the
