@@ -229,6 +229,7 @@ namespace glissade
         : RigidObstacle(context.description)
         , curve(*std::any_cast<std::shared_ptr<const NurbsCurveShape>>(
             context.description.surface_settings))
+        , alert_distance(context.description.alert_distance)
       {
         for (const auto &P : curve.points)
           size = std::max(size, P.norm());
@@ -289,8 +290,9 @@ namespace glissade
         // continued to x's foot is what mortar may integrate against). A
         // node that slid past the end within the increment after holding
         // contact there (`held`: ContactPair::update_geometry) keeps the
-        // tangent line, up to half the end span's chord past the end, until
-        // the increment ends: else a node whose equilibrium is at the end
+        // tangent line, up to the alert distance or half the end span's
+        // chord past the end, whichever is shorter, until the increment
+        // ends: else a node whose equilibrium is at the end
         // (the edge of a table a block is pushed off) slides off, comes
         // back behind the obstacle and slides off again at every Newton
         // iteration. A deformable master's end segments are kept the same
@@ -313,7 +315,7 @@ namespace glissade
               0.5 * (curve_at(curve, best_span, span[1]).point -
                      curve_at(curve, best_span, span[0]).point)
                       .norm();
-            p.valid           = keep.held && past <= half_chord;
+            p.valid = keep.held && past <= std::min(half_chord, alert_distance);
             p.beyond_open_end = !p.valid;
             p.segment         = best_span;
             p.s               = best_u;
@@ -350,7 +352,9 @@ namespace glissade
 
     private:
       const NurbsCurveShape &curve;
-      double                 size = 0.;
+      /** How far past an open end a held node keeps the end's tangent. */
+      const double alert_distance;
+      double       size = 0.;
     };
   } // namespace
 
