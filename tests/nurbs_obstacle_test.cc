@@ -8,6 +8,7 @@
 
 #include <glissade/body/body_measures.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -220,7 +221,10 @@ GLISSADE_TEST(nurbs_curve_obstacle_is_the_circle)
 //   edge within the increment (kept to the increment's end, as at a
 //   deformable master's end), no farther past than the increment's drag,
 // - the table's force falls as the nodes leave it,
-// - the table's force is the top's reaction (both components).
+// - the table's force is the top's reaction (both components),
+// - the summary says how far the table's edge went into the block's
+//   faces (which neither discretisation sees), as deep as the block's
+//   boundary sags under the edge.
 GLISSADE_TEST(nurbs_curve_obstacle_block_pushed_off_its_end)
 {
   std::filesystem::create_directories("output/nurbs_obstacle_edge");
@@ -259,7 +263,7 @@ GLISSADE_TEST(nurbs_curve_obstacle_block_pushed_off_its_end)
       const Body        &block    = simulation.body("block");
       double             on_table = 0., last = 0., off_by = 0., rise = 0.;
       double             imbalance     = 0.;
-      double             farthest_held = 0.;
+      double             farthest_held = 0., sag = 0.;
       unsigned int       missing = 0, most_held = 0, with_held = 0;
       unsigned int       increments = 0;
       simulation.on_increment       = [&](unsigned int, double t) {
@@ -282,6 +286,22 @@ GLISSADE_TEST(nurbs_curve_obstacle_block_pushed_off_its_end)
               }
           }
         most_held = std::max(most_held, held_here);
+        // The slave's boundary below the table's edge, read off its nodes
+        // along x: how far the edge went into the sagging face.
+        std::vector<std::pair<double, double>> bottom;
+        for (const ContactNode &node : pair.nodes())
+          bottom.emplace_back(node.reference_position[0] +
+                                node.displacement(block.displacement())[0],
+                              node.reference_position[1] +
+                                node.displacement(block.displacement())[1]);
+        std::sort(bottom.begin(), bottom.end());
+        for (unsigned int k = 0; k + 1 < bottom.size(); ++k)
+          if (bottom[k].first <= edge && edge < bottom[k + 1].first)
+            sag = std::max(sag,
+                           -(bottom[k].second +
+                             (bottom[k + 1].second - bottom[k].second) *
+                               (edge - bottom[k].first) /
+                               (bottom[k + 1].first - bottom[k].first)));
         with_held += held_here > 0;
         const double carried = std::abs(force[1]);
         if (t >= 0.1 - 1e-12 && t <= 0.5 + 1e-12)
@@ -324,6 +344,21 @@ GLISSADE_TEST(nurbs_curve_obstacle_block_pushed_off_its_end)
             discretisation + ": nodes past the edge kept in contact");
       check(imbalance <= 1e-8,
             discretisation + ": the table's force is not the top's reaction");
+      // Neither discretisation holds the table's edge off the block's
+      // faces: it goes into the face that sags over it, and the run says
+      // how far (the normal depth; the sag read along y here differs by
+      // the face's slope squared).
+      const double deepest = pair.deepest_corner_inside();
+      std::cout << "  the edge went " << deepest
+                << " into the block's faces (the sag under it " << sag << ")"
+                << std::endl;
+      check(sag > 0. && std::abs(deepest - sag) <= 0.02 * sag,
+            discretisation + ": the edge's depth in the faces is not the "
+                             "sag under it");
+      check(simulation.summary().find("open ends went at most") !=
+              std::string::npos,
+            discretisation + ": the summary does not say how far the edge "
+                             "went in");
     }
 }
 

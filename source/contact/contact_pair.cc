@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <map>
 #include <set>
@@ -187,6 +188,74 @@ namespace glissade
       if (slave_nodes[k].collocation_area != 0.)
         area[k] = slave_nodes[k].collocation_area;
     return area;
+  }
+
+
+
+  void
+  ContactPair::measure_corners(const double time)
+  {
+    const std::vector<Point<2>> ends = master_surface->open_ends();
+    if (ends.empty())
+      return;
+    for (const ContactNode &node : slave_nodes)
+      if (node.collocation_area != 0.)
+        return;
+    deepest_corner = std::max(deepest_corner, 0.);
+    for (const auto &[a, b] : faces)
+      {
+        const ContactNode &A = slave_nodes[a], &B = slave_nodes[b];
+        const Point<2>     xa = position(A), xb = position(B);
+        const Tensor<1, 2> along  = xb - xa;
+        const double       length = along.norm();
+        if (length == 0.)
+          continue;
+        // Outward: the side of the face that the nodes' outward normals
+        // took in the reference configuration (a face keeps its sides).
+        const Tensor<1, 2> reference_along =
+          B.reference_position - A.reference_position;
+        const Tensor<1, 2> reference_outward =
+          A.reference_outward_normal + B.reference_outward_normal;
+        const double       side = reference_along[0] * reference_outward[1] -
+                                  reference_along[1] * reference_outward[0] >
+                                0. ?
+                                    1. :
+                                    -1.;
+        const Tensor<1, 2> outward =
+          side / length * Tensor<1, 2>({-along[1], along[0]});
+        for (const Point<2> &c : ends)
+          {
+            const double s     = (c - xa) * along / (length * length);
+            const double depth = -((c - xa) * outward);
+            if (s >= 0. && s <= 1. && depth > deepest_corner &&
+                depth < 0.5 * length)
+              {
+                deepest_corner      = depth;
+                deepest_corner_time = time;
+                deepest_corner_face = length;
+              }
+          }
+      }
+  }
+
+
+
+  std::string
+  ContactPair::corner_report() const
+  {
+    if (deepest_corner < 0.)
+      return {};
+    std::ostringstream out;
+    out << std::setprecision(3) << "contact pair '" << name()
+        << "': the obstacle's open ends went at most " << deepest_corner
+        << " inside the slave's faces";
+    if (deepest_corner > 0.)
+      out << " (" << 100. * deepest_corner / deepest_corner_face
+          << " % of the face there, t = " << deepest_corner_time << ")";
+    out << ": the contact holds the slave's points off the obstacle, not the "
+           "obstacle's corners off the slave's faces (a finer slave there "
+           "makes it smaller)";
+    return out.str();
   }
 
 

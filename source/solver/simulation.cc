@@ -328,6 +328,8 @@ namespace glissade
                 throw;
               }
             ++stats.increments;
+            for (auto &pair : contact_problem->contact_pairs())
+              pair->measure_corners(t);
             if (shows_progress())
               report_increment(increment,
                                n_total,

@@ -122,6 +122,9 @@ namespace glissade
       run_summary(statistics(), n_dofs(), !contact_problem->empty());
     if (const EnergyAccount *energies = integrator->energies())
       text += "\n" + energy_report(*energies);
+    for (const auto &pair : contact_problem->contact_pairs())
+      if (const std::string corners = pair->corner_report(); !corners.empty())
+        text += "\n" + corners;
     return text;
   }
 

@@ -254,6 +254,28 @@ namespace glissade
     tributary_areas() const;
 
     /**
+     * After a converged increment: how far the master's open ends
+     * (MasterSurface::open_ends, a rigid obstacle's) stand inside the
+     * slave's faces, the deepest of the run kept with its time and the
+     * face's length. Nothing for a NURBS slave, whose points are not a
+     * polygon on its boundary.
+     */
+    void
+    measure_corners(double time);
+
+    /** What measure_corners() found, as a sentence; empty where the master
+     *  has no open end. */
+    std::string
+    corner_report() const;
+
+    /** The deepest that measure_corners() found (-1: nothing measured). */
+    double
+    deepest_corner_inside() const
+    {
+      return deepest_corner;
+    }
+
+    /**
      * The cap on each slave node's normal reaction in the local problem:
      * its tributary area times an abradable coating's yield pressure (over
      * the reported scale); infinity without a coating.
@@ -340,6 +362,10 @@ namespace glissade
     double step_start = 0., step_end = 0.;
     /** The master is the slave's own body (self-contact). */
     bool self_contact = false;
+    /** measure_corners(): the deepest so far (-1: not measured), when,
+     *  and the face's length. */
+    double deepest_corner = -1., deepest_corner_time = 0.,
+           deepest_corner_face = 0.;
     /** search_only_within(). */
     dealii::BoundingBox<2> search_box;
     bool                   has_search_box = false;

@@ -332,6 +332,22 @@ namespace glissade
       }
 
       std::vector<Point<2>>
+      open_ends() const override
+      {
+        if (curve.closed)
+          return {};
+        const unsigned int    last = curve.basis.n_spans() - 1;
+        std::vector<Point<2>> ends;
+        for (const auto &[span, u] :
+             {std::make_pair(0u, curve.basis.span_range(0)[0]),
+              std::make_pair(last, curve.basis.span_range(last)[1])})
+          ends.push_back(
+            position +
+            rotated(curve_at(curve, span, u).point - reference(), angle));
+        return ends;
+      }
+
+      std::vector<Point<2>>
       outline(const Point<2> &, const double) const override
       {
         std::vector<Point<2>> points;

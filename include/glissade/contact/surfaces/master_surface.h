@@ -246,6 +246,19 @@ namespace glissade
       return {};
     }
 
+    /**
+     * A rigid obstacle's convex corners as they stand now: the ends of an
+     * open curve. A slave face can wrap around one, which neither
+     * discretisation sees (they hold the slave's points off the obstacle,
+     * not the obstacle's corners off the slave's faces):
+     * ContactPair::measure_corners() says how far one went in.
+     */
+    virtual std::vector<dealii::Point<2>>
+    open_ends() const
+    {
+      return {};
+    }
+
     /** The surface's abradable coating, if it has one (a casing's). */
     virtual AbradableCoating *
     coating()
