@@ -58,12 +58,8 @@ namespace glissade
        * if it is not past the end itself.
        */
       bool next_to_open_end = false;
-      /** Its own point is past an open obstacle's end: it counts only if
-       *  held there within the increment (project()). */
-      bool past_open_end = false;
-      /** ...and near enough to it to be held there (MasterSurface::project
-       *  with SegmentHint::held). */
-      bool may_be_held = false;
+      /** Where its own point stands against that end (project()). */
+      mortar::OpenEndPlace open_end;
     };
 
 
@@ -786,12 +782,8 @@ namespace glissade
       if (chain == nullptr)
         for (unsigned int j = 0; j < slave_points.size(); ++j)
           if (state[j].next_to_open_end && !state[j].uncovered)
-            {
-              state[j].past_open_end =
-                !surface.project(slave_positions[j]).valid;
-              state[j].may_be_held =
-                surface.project(slave_positions[j], {-1, 0., true}).valid;
-            }
+            state[j].open_end =
+              mortar::open_end_place(surface, slave_positions[j]);
 
       // A node counts when the master covers enough of its support that
       // its weights m_jk = M_jk / D_j stay bounded: at the master's ends,
@@ -911,11 +903,8 @@ namespace glissade
       const NodeState &s = state[point_of_vertex.at(node.vertex)];
       if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
         return false;
-      // Past an open obstacle's end, a node that held contact there within
-      // the increment keeps it until the increment ends, as node-to-segment
-      // keeps it (ContactPair::update_geometry, the obstacle's project()).
-      if (s.past_open_end && !(s.may_be_held && keep_segment && node.active &&
-                               node.segment_switches >= 2))
+      // Past an open obstacle's end, only a node held there.
+      if (!s.open_end.counts(keep_segment, node.active, node.segment_switches))
         return false;
       const Tensor<1, 2> &n = s.normal, &t = s.tangent;
       const double        D = s.D.value;

@@ -134,6 +134,17 @@ namespace glissade::mortar
 
 
 
+  OpenEndPlace
+  open_end_place(const MasterSurface &surface, const dealii::Point<2> &x)
+  {
+    OpenEndPlace place;
+    place.past        = !surface.project(x).valid;
+    place.may_be_held = place.past && surface.project(x, {-1, 0., true}).valid;
+    return place;
+  }
+
+
+
   void
   add_curve_variables(const MortarDual                              &v,
                       const std::vector<std::vector<SurfaceWeight>> &kinematics,

@@ -50,11 +50,8 @@ namespace glissade
        *  against the end's tangent line): it counts only if its Greville
        *  point is not past the end itself. */
       bool next_to_open_end = false;
-      /** Its Greville point is past an open obstacle's end: it counts only
-       *  if held there within the increment (project()). */
-      bool past_open_end = false;
-      /** ...and near enough to it to be held there. */
-      bool may_be_held = false;
+      /** Where its Greville point stands against that end (project()). */
+      mortar::OpenEndPlace open_end;
       /** int psi_A n (the point's mean normal, for its frame). */
       Tensor<1, 2> mean_normal;
       /** D_A = int R_A: the point's share of the covered slave curve. */
@@ -880,9 +877,8 @@ namespace glissade
                 MasterCurve::Point c0{}, c1{}, c2{};
                 slave_curves[g.curve].curve->evaluate(
                   g.segment, g.s, c0, c1, c2);
-                const Point<2> x(c0[0], c0[1]);
-                state[j].past_open_end = !surface.project(x).valid;
-                state[j].may_be_held = surface.project(x, {-1, 0., true}).valid;
+                state[j].open_end =
+                  mortar::open_end_place(surface, Point<2>(c0[0], c0[1]));
               }
         }
       else
@@ -957,9 +953,8 @@ namespace glissade
       const PointState &s = state[at->second];
       if (s.coverage <= (keep_segment && node.active ? 0.05 : 0.5))
         return false;
-      // (past an open obstacle's end: only if held there, as in mortar.cc)
-      if (s.past_open_end && !(s.may_be_held && keep_segment && node.active &&
-                               node.segment_switches >= 2))
+      // (past an open obstacle's end: only a point held there)
+      if (!s.open_end.counts(keep_segment, node.active, node.segment_switches))
         return false;
       const double D = s.D.value;
 

@@ -82,6 +82,34 @@ namespace glissade::mortar
   obstacle_point(const SurfacePoint &point, const DualPoint &x);
 
   /**
+   * Where a slave point next to a rigid obstacle's open end stands: past
+   * the end (no counterpart there), and if so whether near enough to be
+   * held there (MasterSurface::project with SegmentHint::held).
+   */
+  struct OpenEndPlace
+  {
+    bool past        = false;
+    bool may_be_held = false;
+
+    /**
+     * The point counts if it is not past the end, or if it held contact
+     * there within the increment and is kept until the increment ends, as
+     * node-to-segment keeps it (ContactPair::update_geometry).
+     */
+    bool
+    counts(const bool         keep_segment,
+           const bool         active,
+           const unsigned int segment_switches) const
+    {
+      return !past ||
+             (may_be_held && keep_segment && active && segment_switches >= 2);
+    }
+  };
+
+  OpenEndPlace
+  open_end_place(const MasterSurface &surface, const dealii::Point<2> &x);
+
+  /**
    * The derivatives of v in the curve points' variables (`first_variable`
    * + 2q + component for the Gauss point q whose kinematics are
    * kinematics[q]) as master dofs, appended to `to`'s gradient.
